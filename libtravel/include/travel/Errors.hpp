@@ -1,0 +1,20 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace travel {
+
+/// A configuration problem: unknown key, bad value, out-of-range parameter. The message names
+/// the source (file:line) and the key.
+struct ConfigError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// A malformed input file (wrong size, wrong count). The message names the file.
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace travel

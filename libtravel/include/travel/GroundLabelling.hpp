@@ -1,0 +1,22 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Per-point labels (paper eq. 5) from the refitted planes of the terrain model.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "travel/Params.hpp"
+#include "travel/Preprocessing.hpp"
+#include "travel/TerrainModel.hpp"
+#include "travel/TriGridField.hpp"
+
+namespace travel {
+
+/// labels.size() == cloud size afterwards; every point gets exactly one class.
+/// Returns the number of points per class (indexed by PointClass value).
+std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
+                                       const Params& params, const TerrainModel& model,
+                                       std::vector<PointClass>& labels);
+
+}  // namespace travel

@@ -1,0 +1,66 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// KITTI / SemanticKITTI / nuScenes binary files. All formats are little-endian; on a big-endian
+// host the values are byte-swapped. Read errors throw InputError naming the file; write errors
+// throw std::runtime_error naming the file.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "travel/PointCloud.hpp"
+
+namespace travel {
+
+/// Reads a KITTI .bin: float32 records (x, y, z, intensity). Reuses the capacity of `cloud`'s
+/// vectors; ring and time are cleared. An empty file is a valid empty cloud. Throws InputError
+/// when the file cannot be read or its size is not a multiple of 16 bytes.
+void readKittiBin(const std::string& path, PointCloud& cloud);
+
+/// Reads nuScenes-style float32 records (x, y, z, intensity, ring) and fills cloud.ring; time is
+/// cleared. Throws InputError when the size is not a multiple of 20 bytes or a ring value is not
+/// an integer in [0, 65535].
+void readBinXYZIR(const std::string& path, PointCloud& cloud);
+
+/// Writes `cloud` as a KITTI .bin. A missing intensity field is written as 0. Throws
+/// std::invalid_argument if x, y, z (or a non-empty intensity) differ in size.
+void writeKittiBin(const std::string& path, const PointCloud& cloud);
+
+/// Pass as expected_count to readLabelFile() to accept any number of labels.
+constexpr std::size_t kAnyLabelCount = std::numeric_limits<std::size_t>::max();
+
+/// Reads a SemanticKITTI .label: one uint32 per point. Throws InputError when the size is not a
+/// multiple of 4 bytes, or when the count differs from expected_count (unless kAnyLabelCount).
+std::vector<uint32_t> readLabelFile(const std::string& path, std::size_t expected_count);
+
+/// Writes one uint32 per label.
+void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels);
+
+/// travel-kitti's .label encoding: the PointClass in the lower 16 bits, the cluster id in the
+/// upper 16 bits (0 = no cluster). Ids above 0xFFFF wrap to ((id - 1) % 0xFFFF) + 1, so they
+/// stay in [1, 0xFFFF] and never read back as "no cluster"; ids up to 0xFFFF are kept as is.
+inline uint32_t encodeLabel(PointClass c, uint32_t cluster_id) {
+    const uint32_t cluster = cluster_id == 0 ? 0 : ((cluster_id - 1) % 0xFFFFu) + 1;
+    return (cluster << 16) | static_cast<uint32_t>(c);
+}
+
+/// The lower 16 bits: a PointClass value in travel-kitti output, the semantic class in
+/// SemanticKITTI ground truth.
+inline uint32_t labelClassBits(uint32_t label) {
+    return label & 0xFFFFu;
+}
+
+/// The upper 16 bits: the cluster (instance) id, 0 = none.
+inline uint32_t labelClusterId(uint32_t label) {
+    return label >> 16;
+}
+
+/// Regular files in `dir` whose extension is `extension` ("bin" or ".bin"; empty = all), as
+/// full paths sorted by name (KITTI names are zero-padded, so this is frame order). Throws
+/// InputError if `dir` is not a directory.
+std::vector<std::string> listFiles(const std::string& dir, const std::string& extension);
+
+}  // namespace travel

@@ -1,0 +1,53 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Pre-processing (paper Sec. III-A): validity, range window, attitude alignment and deskew.
+// Output is a structure-of-arrays working copy in the aligned frame (origin at the sensor,
+// z up against gravity, x along the vehicle heading) plus a validity flag per point.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+#include "travel/Params.hpp"
+#include "travel/PointCloud.hpp"
+
+namespace travel {
+
+/// Per-frame information the caller may know about the platform. Everything is optional.
+struct FrameInput {
+    /// Vehicle attitude: rotation from the vehicle frame to a gravity-aligned frame (only roll
+    /// and pitch matter; yaw is removed). Typically from an IMU or the robot pose.
+    std::optional<Eigen::Matrix3d> vehicle_attitude;
+    /// Alternative to vehicle_attitude: the gravity direction measured in the sensor frame
+    /// (e.g. an accelerometer at rest reads -gravity). Any length > 0.
+    std::optional<Eigen::Vector3d> gravity_in_sensor;
+    /// Constant velocity of the sensor during the sweep, in the sensor frame at the reference
+    /// time: linear [m/s] and angular [rad/s]. Used with per-point times for deskew.
+    std::optional<Eigen::Vector3d> linear_velocity;
+    std::optional<Eigen::Vector3d> angular_velocity;
+    /// Time [s] (same clock as PointCloud::time) to which the sweep is deskewed.
+    double reference_time = 0.0;
+};
+
+/// Working buffers, reused across frames (no per-frame allocation once warmed up).
+struct AlignedCloud {
+    std::vector<float> x, y, z;
+    std::vector<uint8_t> valid;  ///< 1 = valid point, 0 = invalid (label Invalid)
+    std::size_t num_valid = 0;
+    Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();  ///< applied sensor->aligned
+};
+
+/// Rotation from the sensor frame to the aligned frame for this frame's parameters and input:
+/// R = R_level * R_mount, where R_mount comes from mount_{roll,pitch,yaw}_deg and R_level
+/// removes the vehicle's roll and pitch (or the measured gravity tilt).
+Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input);
+
+/// Fill 'out' from 'cloud': invalid points (non-finite, exactly zero, outside
+/// [min_range, max_range] in 3-D range) are flagged and never read again; valid points are
+/// deskewed (if params.deskew and times + velocity are given) then rotated.
+void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
+                AlignedCloud& out);
+
+}  // namespace travel

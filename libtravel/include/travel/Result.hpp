@@ -1,0 +1,39 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "travel/PointCloud.hpp"
+#include "travel/TerrainModel.hpp"
+
+namespace travel {
+
+/// Wall-clock milliseconds spent in each stage of the last frame.
+struct StageTimings {
+    double preprocess = 0;   ///< validity, alignment, deskew
+    double embedding = 0;    ///< tri-grid field: points to nodes
+    double node_fitting = 0; ///< node-wise PCA terrain model
+    double graph_search = 0; ///< B-TGS
+    double ttmf = 0;         ///< corner fitting
+    double labelling = 0;    ///< per-point labels (eq. 5)
+    double ground_total = 0; ///< sum of the above
+};
+
+/// The result of one frame. Vectors are indexed like the input cloud: every input point has
+/// exactly one label, nothing is dropped.
+struct Result {
+    std::vector<PointClass> labels;
+    /// Cluster id per point, 0 = no cluster (filled by object segmentation).
+    std::vector<uint32_t> cluster_id;
+    TerrainModel terrain;
+    StageTimings timings;
+
+    /// Number of points per class, indexed by PointClass value.
+    std::array<std::size_t, 4> class_counts{};
+
+    std::size_t count(PointClass c) const { return class_counts[static_cast<int>(c)]; }
+};
+
+}  // namespace travel

@@ -1,0 +1,43 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Ready-made test scenes. Each spans about 100 m x 100 m around the origin (the terrain itself
+// is unbounded) and expects the sensor at (0, 0), kSensorHeight above the terrain there;
+// the road runs along +x.
+#pragma once
+
+#include "travel/sim/Scene.hpp"
+
+#include <Eigen/Geometry>
+
+namespace travel::sim {
+
+/// Sensor height above the ground the scenes are designed for (KITTI's HDL-64E) [m].
+constexpr double kSensorHeight = 1.73;
+
+/// Level ground at z = 0, nothing else.
+Scene flatGround();
+
+/// Flat ground, then a ramp of `slope_deg` from x = 6 m, 15 m long, 20 m wide (|y| <= 10),
+/// leading up to a plateau that extends to infinity along +x.
+Scene slope(double slope_deg);
+
+/// A road |y| < 4.5 (left) / 5.5 (right) between 0.15 m kerbs topped by raised sidewalks, and a
+/// staircase of 3 steps of 0.15 m (0.4 m deep) across the road from x = 8 m up to a landing.
+Scene kerbsAndSteps();
+
+/// Gaussian bumps (0.2-0.5 m high, sigma 2-4 m) with 0.02 m sinusoidal roughness everywhere.
+Scene bumpyTerrain();
+
+/// Flat ground with three 4.5 x 1.8 x 1.5 m cars (ids 1-3; 1 and 2 side by side 1 m apart),
+/// poles (ids 4-6), a 1 m wall (id 7) and a 3 m wall (id 8) partly hidden behind pole 6.
+Scene urbanObjects();
+
+/// A 10 deg ramp, a kerb and sidewalk, bumps, a car (id 1), a pole (id 2), a wall (id 3).
+Scene mixed();
+
+/// Sensor pose in the world: `height` above the terrain at (x, y), attitude
+/// R = Rz(yaw) * Ry(pitch) * Rx(roll) (angles in degrees).
+Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,
+                               double roll_deg, double pitch_deg, double yaw_deg);
+
+}  // namespace travel::sim

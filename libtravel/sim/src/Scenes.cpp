@@ -1,0 +1,134 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/sim/Scenes.hpp"
+
+namespace travel::sim {
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+Step halfPlane(const Eigen::Vector2d& start, const Eigen::Vector2d& towards_raised_side,
+               double height) {
+    Step step;
+    step.start = start;
+    step.direction = towards_raised_side;
+    step.height = height;
+    return step;
+}
+
+Box car(uint32_t id, double x, double y, double yaw_deg) {
+    Box box;
+    box.id = id;
+    box.centre = {x, y};
+    box.yaw_deg = yaw_deg;
+    box.length = 4.5;
+    box.width = 1.8;
+    box.height = 1.5;
+    return box;
+}
+
+Pole pole(uint32_t id, double x, double y, double radius, double height) {
+    Pole p;
+    p.id = id;
+    p.centre = {x, y};
+    p.radius = radius;
+    p.height = height;
+    return p;
+}
+
+Wall wall(uint32_t id, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double thickness,
+          double height) {
+    Wall w;
+    w.id = id;
+    w.a = a;
+    w.b = b;
+    w.thickness = thickness;
+    w.height = height;
+    return w;
+}
+
+}  // namespace
+
+Scene flatGround() {
+    return Scene{};
+}
+
+Scene slope(double slope_deg) {
+    Scene scene;
+    Ramp ramp;
+    ramp.start = {6.0, 0.0};
+    ramp.direction = {1.0, 0.0};
+    ramp.length = 15.0;
+    ramp.width = 20.0;
+    ramp.slope_deg = slope_deg;
+    scene.ramps.push_back(ramp);
+    return scene;
+}
+
+Scene kerbsAndSteps() {
+    Scene scene;
+    constexpr double kKerbHeight = 0.15;
+    // Kerbs with raised sidewalks beyond them on both sides of the road.
+    scene.steps.push_back(halfPlane({0.0, 4.5}, {0.0, 1.0}, kKerbHeight));
+    scene.steps.push_back(halfPlane({0.0, -5.5}, {0.0, -1.0}, kKerbHeight));
+    // Stairs across the road: the raised regions add up to 1, 2, 3 steps, then a landing.
+    constexpr double kTread = 0.4;
+    for (int i = 0; i < 3; ++i) {
+        Step step = halfPlane({8.0 + kTread * i, -0.5}, {1.0, 0.0}, 0.15);
+        step.width = 10.0;  // the road, y in [-5.5, 4.5]
+        scene.steps.push_back(step);
+    }
+    return scene;
+}
+
+Scene bumpyTerrain() {
+    Scene scene;
+    scene.bumps = {
+        {{10.0, 5.0}, 0.3, 3.0},   {{-8.0, 12.0}, 0.5, 4.0},   {{15.0, -10.0}, 0.2, 2.0},
+        {{-12.0, -9.0}, 0.4, 3.0}, {{25.0, 20.0}, 0.5, 4.0},   {{0.0, -22.0}, 0.35, 2.5},
+        {{-25.0, 3.0}, 0.25, 3.5}, {{30.0, -25.0}, 0.45, 3.0},
+    };
+    scene.roughness.amplitude = 0.02;
+    scene.roughness.wavelength = 1.5;
+    return scene;
+}
+
+Scene urbanObjects() {
+    Scene scene;
+    scene.boxes = {car(1, 10.0, 3.0, 0.0), car(2, 10.0, 5.8, 0.0), car(3, -12.0, -6.0, 30.0)};
+    scene.poles = {pole(4, 6.0, -4.0, 0.10, 3.0), pole(5, -5.0, 7.0, 0.15, 5.0),
+                   pole(6, 12.0, -6.0, 0.12, 4.0)};
+    scene.walls = {wall(7, {-18.0, -14.0}, {-6.0, -14.0}, 0.2, 1.0),
+                   // On the line of sight through pole 6, which shadows part of it.
+                   wall(8, {24.0, -16.0}, {24.0, -4.0}, 0.3, 3.0)};
+    return scene;
+}
+
+Scene mixed() {
+    Scene scene;
+    Ramp ramp;
+    ramp.start = {12.0, 0.0};
+    ramp.direction = {1.0, 0.0};
+    ramp.length = 15.0;
+    ramp.width = 8.0;
+    ramp.slope_deg = 10.0;
+    scene.ramps.push_back(ramp);
+    scene.steps.push_back(halfPlane({0.0, 5.0}, {0.0, 1.0}, 0.15));
+    scene.bumps = {{{-15.0, -12.0}, 0.4, 3.0}, {{8.0, -16.0}, 0.3, 2.5}, {{-20.0, 15.0}, 0.5, 4.0}};
+    scene.boxes = {car(1, -8.0, -2.0, 10.0)};
+    scene.poles = {pole(2, 5.0, -4.0, 0.12, 4.0)};
+    scene.walls = {wall(3, {-10.0, 8.0}, {0.0, 8.0}, 0.2, 2.0)};
+    return scene;
+}
+
+Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,
+                               double roll_deg, double pitch_deg, double yaw_deg) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(x, y, scene.terrainHeight(x, y) + height);
+    pose.linear() = (Eigen::AngleAxisd(yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(pitch_deg * kDegToRad, Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(roll_deg * kDegToRad, Eigen::Vector3d::UnitX()))
+                        .toRotationMatrix();
+    return pose;
+}
+
+}  // namespace travel::sim

@@ -1,0 +1,45 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Point labels (paper eq. 5). With the refitted plane (s, d) of the point's node and the signed
+// distance e = s.p + d:
+//   e < -outlier_dist          -> Outlier (below-ground returns: reflections, multipath)
+//   -outlier_dist <= e < eps3  -> Ground
+//   otherwise                  -> NonGround
+// Points of non-traversable nodes are NonGround. Invalid points stay Invalid. Every point gets
+// exactly one class: nothing is dropped (the reference drops out-of-range and outlier points).
+#include "travel/GroundLabelling.hpp"
+
+namespace travel {
+
+std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
+                                       const Params& params, const TerrainModel& model,
+                                       std::vector<PointClass>& labels) {
+    const std::size_t n = cloud.valid.size();
+    labels.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        labels[i] = cloud.valid[i] ? PointClass::NonGround : PointClass::Invalid;
+
+    const float* sx = field.sx().data();
+    const float* sy = field.sy().data();
+    const float* sz = field.sz().data();
+    const uint32_t* order = field.order().data();
+    const float ground_dist = static_cast<float>(params.ground_dist);
+    const float outlier_dist = -static_cast<float>(params.outlier_dist);
+    for (const TriNode& node : model.nodes) {
+        if (!node.traversable || node.count == 0) continue;
+        const float s0 = node.refit_normal.x(), s1 = node.refit_normal.y();
+        const float s2 = node.refit_normal.z(), d = node.refit_d;
+        const uint32_t end = node.begin + node.count;
+        for (uint32_t i = node.begin; i < end; ++i) {
+            const float e = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
+            labels[order[i]] = e < outlier_dist  ? PointClass::Outlier
+                               : e < ground_dist ? PointClass::Ground
+                                                 : PointClass::NonGround;
+        }
+    }
+    std::array<std::size_t, 4> counts{};
+    for (const PointClass c : labels) ++counts[static_cast<int>(c)];
+    return counts;
+}
+
+}  // namespace travel

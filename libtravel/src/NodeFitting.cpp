@@ -1,0 +1,181 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Node-wise terrain model (paper Sec. III-B).
+//   LPR   = mean z of the lowest `lpr_num_points` points of the node.
+//   seeds = points with LPR - seed_margin_below_lpr <= z < LPR + seed_margin_above_lpr.
+//   PCA plane of the seeds (normal s = eigenvector of the smallest eigenvalue, s.z >= 0), then
+//   `plane_fit_iterations - 1` times: re-select points with s.p + d < plane_inlier_dist, refit.
+//   Weight (eq. 1): w = l2 (l1 + l2) / (l1 l3) with l1 >= l2 >= l3 (planar, cohesive nodes
+//   weigh more; a tiny l3 of a perfect plane is guarded).
+//   Class: fewer than node_min_points points -> Unknown (no plane is fitted); normal within
+//   max_slope of vertical -> Terrain; else Obstacle.
+#include "travel/NodeFitting.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace travel {
+namespace {
+
+struct Moments {
+    double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
+};
+
+// Moments of the points for which `inside(x, y, z)` holds. Branch-free with kLanes independent
+// float accumulators per moment, so the compiler vectorises the lane loop; the coordinates are
+// node-local (a few metres), where float sums keep ample precision. Lanes are summed in double.
+template <class Predicate>
+Moments accumulate(const float* x, const float* y, const float* z, uint32_t count,
+                   const float origin[3], Predicate inside) {
+    constexpr int kLanes = 8;
+    float n[kLanes] = {}, sx[kLanes] = {}, sy[kLanes] = {}, sz[kLanes] = {}, sxx[kLanes] = {},
+          sxy[kLanes] = {}, sxz[kLanes] = {}, syy[kLanes] = {}, syz[kLanes] = {}, szz[kLanes] = {};
+    float px[kLanes], py[kLanes], pz[kLanes], m[kLanes];
+    uint32_t i = 0;
+    for (; i + kLanes <= count; i += kLanes) {
+        // Simple fixed-length lane loops: each one vectorises (SLP) on its own.
+        for (int l = 0; l < kLanes; ++l) {
+            px[l] = x[i + l] - origin[0], py[l] = y[i + l] - origin[1];
+            pz[l] = z[i + l] - origin[2];
+        }
+        for (int l = 0; l < kLanes; ++l) m[l] = inside(px[l], py[l], pz[l]) ? 1.f : 0.f;
+        for (int l = 0; l < kLanes; ++l) {
+            const float mx = m[l] * px[l], my = m[l] * py[l], mz = m[l] * pz[l];
+            n[l] += m[l], sx[l] += mx, sy[l] += my, sz[l] += mz;
+            sxx[l] += mx * px[l], sxy[l] += mx * py[l], sxz[l] += mx * pz[l];
+            syy[l] += my * py[l], syz[l] += my * pz[l], szz[l] += mz * pz[l];
+        }
+    }
+    for (; i < count; ++i) {  // tail, into lane 0
+        const float qx = x[i] - origin[0], qy = y[i] - origin[1], qz = z[i] - origin[2];
+        if (!inside(qx, qy, qz)) continue;
+        n[0] += 1.f, sx[0] += qx, sy[0] += qy, sz[0] += qz;
+        sxx[0] += qx * qx, sxy[0] += qx * qy, sxz[0] += qx * qz;
+        syy[0] += qy * qy, syz[0] += qy * qz, szz[0] += qz * qz;
+    }
+    Moments mo;
+    for (int l = 0; l < kLanes; ++l) {
+        mo.n += n[l], mo.sx += sx[l], mo.sy += sy[l], mo.sz += sz[l], mo.sxx += sxx[l];
+        mo.sxy += sxy[l], mo.sxz += sxz[l], mo.syy += syy[l], mo.syz += syz[l], mo.szz += szz[l];
+    }
+    return mo;
+}
+
+struct Plane {
+    Eigen::Vector3d normal, mean_local, eigenvalues;  // eigenvalues descending (l1, l2, l3)
+    double d_local = 0;                               // s.p_local + d_local = 0
+};
+
+bool fitPlane(const Moments& m, Plane& plane) {
+    if (m.n < 3) return false;
+    const double inv = 1.0 / m.n;
+    const Eigen::Vector3d mean(m.sx * inv, m.sy * inv, m.sz * inv);
+    Eigen::Matrix3d cov;
+    cov(0, 0) = m.sxx * inv - mean.x() * mean.x();
+    cov(0, 1) = cov(1, 0) = m.sxy * inv - mean.x() * mean.y();
+    cov(0, 2) = cov(2, 0) = m.sxz * inv - mean.x() * mean.z();
+    cov(1, 1) = m.syy * inv - mean.y() * mean.y();
+    cov(1, 2) = cov(2, 1) = m.syz * inv - mean.y() * mean.z();
+    cov(2, 2) = m.szz * inv - mean.z() * mean.z();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(cov);  // closed form for 3x3: much faster than the iterative solver
+    Eigen::Vector3d s = solver.eigenvectors().col(0);
+    if (!s.allFinite()) return false;
+    if (s.z() < 0) s = -s;
+    const Eigen::Vector3d ev = solver.eigenvalues();  // ascending
+    plane.normal = s;
+    plane.mean_local = mean;
+    plane.d_local = -s.dot(mean);
+    plane.eigenvalues = {std::max(ev(2), 0.0), std::max(ev(1), 0.0), std::max(ev(0), 0.0)};
+    return true;
+}
+
+// Mean of the k lowest values, k small. A branch-free min/max network: each value sinks through
+// the k kept values. (An insertion sort degenerates here: sensors often deliver a node's points
+// in decreasing z, so every point would be inserted at the front.)
+float lowestPointRepresentative(const float* z, uint32_t count, int k) {
+    constexpr int kMax = 64;
+    float lowest[kMax];
+    k = std::min({k, static_cast<int>(count), kMax});
+    for (int j = 0; j < k; ++j) lowest[j] = std::numeric_limits<float>::infinity();
+    for (uint32_t i = 0; i < count; ++i) {
+        float v = z[i];
+        if (!(v < lowest[k - 1])) continue;  // the common case in most scan orders
+        for (int j = 0; j < k; ++j) {
+            const float lo = std::min(lowest[j], v);
+            v = std::max(lowest[j], v);
+            lowest[j] = lo;
+        }
+    }
+    double sum = 0;
+    for (int j = 0; j < k; ++j) sum += lowest[j];
+    return static_cast<float>(sum / k);
+}
+
+}  // namespace
+
+void fitNodes(const TriGridField& field, const Params& params, TerrainModel& model) {
+    const float* sx = field.sx().data();
+    const float* sy = field.sy().data();
+    const float* sz = field.sz().data();
+    const double cos_max_slope = std::cos(params.max_slope_deg * M_PI / 180.0);
+    const int num_nodes = static_cast<int>(model.nodes.size());
+    for (int id = 0; id < num_nodes; ++id) {
+        TriNode& node = model.nodes[id];
+        if (node.count == 0) continue;
+        const float* x = sx + node.begin;
+        const float* y = sy + node.begin;
+        const float* z = sz + node.begin;
+        node.lpr = lowestPointRepresentative(z, node.count, params.lpr_num_points);
+        if (node.count < static_cast<uint32_t>(params.node_min_points)) {
+            // Too few points for a reliable plane. TTMF may still give the node a plane.
+            node.node_class = NodeClass::Unknown;
+            continue;
+        }
+        // Node-local origin: cell centre in xy, LPR in z.
+        const Eigen::Vector2f c = model.cellCenter(id / 4);
+        const float origin[3] = {c.x(), c.y(), node.lpr};
+        const float seed_lo = -static_cast<float>(params.seed_margin_below_lpr);
+        const float seed_hi = static_cast<float>(params.seed_margin_above_lpr);
+        Plane plane;
+        bool ok = fitPlane(accumulate(x, y, z, node.count, origin,
+                                      [=](float, float, float pz) {
+                                          return pz >= seed_lo && pz < seed_hi;
+                                      }),
+                           plane);
+        for (int it = 1; ok && it < params.plane_fit_iterations; ++it) {
+            const float a = static_cast<float>(plane.normal.x());
+            const float b = static_cast<float>(plane.normal.y());
+            const float cz = static_cast<float>(plane.normal.z());
+            const float limit = static_cast<float>(params.plane_inlier_dist - plane.d_local);
+            Plane next;
+            if (!fitPlane(accumulate(x, y, z, node.count, origin,
+                                     [=](float px, float py, float pz) {
+                                         return a * px + b * py + cz * pz < limit;
+                                     }),
+                          next))
+                break;
+            plane = next;
+        }
+        if (!ok) {
+            node.node_class = NodeClass::Unknown;
+            continue;
+        }
+        node.normal = plane.normal.cast<float>();
+        node.mean = Eigen::Vector3f(static_cast<float>(plane.mean_local.x() + origin[0]),
+                                    static_cast<float>(plane.mean_local.y() + origin[1]),
+                                    static_cast<float>(plane.mean_local.z() + origin[2]));
+        node.d = -node.normal.dot(node.mean);
+        node.eigenvalues = plane.eigenvalues.cast<float>();
+        const double l1 = plane.eigenvalues(0), l2 = plane.eigenvalues(1);
+        const double l3 = plane.eigenvalues(2);
+        // eq. 1; the 1e-6 m^2 floor on l3 keeps noise-free planes finite and comparable.
+        node.weight = static_cast<float>(l2 * (l1 + l2) / (std::max(l1, 1e-12) * (l3 + 1e-6)));
+        node.node_class =
+            plane.normal.z() >= cos_max_slope ? NodeClass::Terrain : NodeClass::Obstacle;
+    }
+}
+
+}  // namespace travel

@@ -1,0 +1,67 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/Params.hpp"
+
+#include <cmath>
+#include <locale>
+#include <sstream>
+#include <string>
+#include <type_traits>
+
+#include "travel/Errors.hpp"
+
+namespace travel {
+
+namespace {
+
+// Messages only: the classic locale keeps '.' as the decimal point whatever the app set.
+template <class T>
+std::string formatForMessage(T value) {
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    if constexpr (std::is_same_v<T, bool>) {
+        out << (value ? "true" : "false");
+    } else {
+        out << value;
+    }
+    return out.str();
+}
+
+std::string withUnit(const std::string& text, const char* unit) {
+    return (unit && *unit) ? text + " " + unit : text;
+}
+
+}  // namespace
+
+void Params::validate() const {
+    visitParams(*this, [](const char* name, const auto& value, const char* unit, double lo,
+                          double hi, const char*) {
+        const double v = static_cast<double>(value);
+        // NaN compares false with everything, so it must be rejected explicitly.
+        if (std::isnan(v) || v < lo || v > hi) {
+            throw ConfigError("parameter '" + std::string(name) +
+                              "' = " + withUnit(formatForMessage(value), unit) +
+                              " is outside its allowed range [" + formatForMessage(lo) + ", " +
+                              withUnit(formatForMessage(hi), unit) + "]");
+        }
+    });
+
+    if (!(min_range < max_range)) {
+        throw ConfigError("min_range = " + formatForMessage(min_range) +
+                          " m must be smaller than max_range = " + formatForMessage(max_range) +
+                          " m");
+    }
+
+    // The grid covers [-max_range, max_range] in x and y; a partial cell still costs a cell.
+    const double cells_per_side = std::ceil(2.0 * max_range / tgf_resolution);
+    if (cells_per_side > static_cast<double>(max_grid_cells_per_side)) {
+        throw ConfigError("tri-grid too large: 2 * max_range / tgf_resolution = 2 * " +
+                          formatForMessage(max_range) + " / " + formatForMessage(tgf_resolution) +
+                          " needs " + formatForMessage(cells_per_side) +
+                          " cells per side, more than max_grid_cells_per_side = " +
+                          formatForMessage(max_grid_cells_per_side) +
+                          "; increase tgf_resolution, reduce max_range or raise "
+                          "max_grid_cells_per_side");
+    }
+}
+
+}  // namespace travel

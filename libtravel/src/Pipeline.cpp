@@ -1,0 +1,47 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/Pipeline.hpp"
+
+#include <chrono>
+
+#include "travel/GroundLabelling.hpp"
+#include "travel/NodeFitting.hpp"
+
+namespace travel {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point& t) {
+    const Clock::time_point now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+    t = now;
+    return ms;
+}
+
+}  // namespace
+
+Pipeline::Pipeline(const Params& params) : params_(params) {
+    params_.validate();
+    field_.configure(params_);
+}
+
+void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result& result) {
+    StageTimings& t = result.timings;
+    Clock::time_point clock = Clock::now();
+    preprocess(cloud, params_, input, aligned_);
+    t.preprocess = msSince(clock);
+    field_.embed(aligned_, result.terrain);
+    t.embedding = msSince(clock);
+    fitNodes(field_, params_, result.terrain);
+    t.node_fitting = msSince(clock);
+    graph_search_.run(field_, params_, result.terrain);
+    t.graph_search = msSince(clock);
+    terrain_fitting_.run(field_, params_, result.terrain);
+    t.ttmf = msSince(clock);
+    result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels);
+    result.cluster_id.assign(cloud.size(), 0u);
+    t.labelling = msSince(clock);
+    t.ground_total =
+        t.preprocess + t.embedding + t.node_fitting + t.graph_search + t.ttmf + t.labelling;
+}
+
+}  // namespace travel

@@ -1,0 +1,98 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Pre-processing (paper Sec. III-A). The paper assumes an upright, motion-free scan; we make it
+// so: deskew with per-point times and a constant-velocity model, then rotate by roll/pitch.
+#include "travel/Preprocessing.hpp"
+
+#include <cmath>
+
+namespace travel {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+/// Same roll and pitch, zero yaw: Rz(-yaw) * R for R = Rz(yaw) Ry(pitch) Rx(roll).
+Eigen::Matrix3d withoutYaw(const Eigen::Matrix3d& R) {
+    const double yaw = std::atan2(R(1, 0), R(0, 0));
+    return Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
+}
+
+}  // namespace
+
+Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input) {
+    const Eigen::Matrix3d R_mount =
+        (Eigen::AngleAxisd(params.mount_yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(params.mount_pitch_deg * kDegToRad, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(params.mount_roll_deg * kDegToRad, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
+    Eigen::Matrix3d R_level = Eigen::Matrix3d::Identity();
+    if (params.align_attitude) {
+        if (input.vehicle_attitude) {
+            R_level = withoutYaw(*input.vehicle_attitude);
+        } else if (input.gravity_in_sensor && input.gravity_in_sensor->norm() > 0 &&
+                   input.gravity_in_sensor->allFinite()) {
+            // The smallest rotation taking measured gravity onto -z has a horizontal axis,
+            // hence no yaw: exactly the roll/pitch correction.
+            const Eigen::Vector3d g_vehicle = R_mount * input.gravity_in_sensor->normalized();
+            R_level = Eigen::Quaterniond::FromTwoVectors(g_vehicle, -Eigen::Vector3d::UnitZ())
+                          .toRotationMatrix();
+        }
+    }
+    return R_level * R_mount;
+}
+
+void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
+                AlignedCloud& out) {
+    const std::size_t n = cloud.size();
+    out.x.resize(n), out.y.resize(n), out.z.resize(n), out.valid.resize(n);
+    out.rotation = alignmentRotation(params, input).cast<float>();
+    const Eigen::Matrix3f& R = out.rotation;
+
+    const bool deskew = params.deskew && cloud.hasTime() && input.linear_velocity &&
+                        input.angular_velocity && input.linear_velocity->allFinite() &&
+                        input.angular_velocity->allFinite();
+    const Eigen::Vector3f v = deskew ? input.linear_velocity->cast<float>() : Eigen::Vector3f{};
+    const Eigen::Vector3f w = deskew ? input.angular_velocity->cast<float>() : Eigen::Vector3f{};
+    const float w_norm = w.norm();
+    const Eigen::Vector3f w_axis = w_norm > 0 ? Eigen::Vector3f(w / w_norm) : Eigen::Vector3f::UnitZ();
+    const float t_ref = static_cast<float>(input.reference_time);
+
+    const float min_r2 = static_cast<float>(params.min_range * params.min_range);
+    const float max_r2 = static_cast<float>(params.max_range * params.max_range);
+    const bool rotate = !R.isIdentity(0.f);
+    const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
+    const float r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
+    std::size_t num_valid = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        float px = cloud.x[i], py = cloud.y[i], pz = cloud.z[i];
+        const float r2 = px * px + py * py + pz * pz;
+        // r2 is finite iff all coordinates are (NaN and inf propagate); zero = no return.
+        const bool ok = std::isfinite(r2) && r2 > 0.f && r2 >= min_r2 && r2 <= max_r2;
+        out.valid[i] = ok;
+        num_valid += ok;
+        if (!ok) {
+            out.x[i] = out.y[i] = out.z[i] = 0.f;
+            continue;
+        }
+        if (deskew) {
+            const float dt = cloud.time[i] - t_ref;
+            if (std::isfinite(dt)) {
+                // Sensor pose at the point's time relative to the reference pose, constant
+                // velocity: p_ref = R(w dt) p + v dt.
+                const Eigen::Vector3f q =
+                    Eigen::AngleAxisf(w_norm * dt, w_axis) * Eigen::Vector3f(px, py, pz) + v * dt;
+                px = q.x(), py = q.y(), pz = q.z();
+            }
+        }
+        if (rotate) {
+            out.x[i] = r00 * px + r01 * py + r02 * pz;
+            out.y[i] = r10 * px + r11 * py + r12 * pz;
+            out.z[i] = r20 * px + r21 * py + r22 * pz;
+        } else {
+            out.x[i] = px, out.y[i] = py, out.z[i] = pz;
+        }
+    }
+    out.num_valid = num_valid;
+}
+
+}  // namespace travel

@@ -1,0 +1,138 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Breadth-first traversable graph search (B-TGS, paper Sec. III-C).
+//
+// Decisions where the paper and the reference code leave room (travel-algorithm.md Sec. 3):
+// * Start node: the terrain node of highest weight within `seed_search_cells` cells of the
+//   sensor cell whose mean lies within `seed_height_tolerance` of -sensor_height. If there is
+//   none, nothing is traversable: a scan without plausible ground under the sensor (e.g. every
+//   point above it) must not produce ground.
+// * Edge test (eq. 2) is symmetric, and a node is reached if ANY reached neighbour has a
+//   traversable edge to it. A failed edge does not mark the node as rejected, so the result is
+//   the connected component of the seed in the graph of traversable edges: independent of the
+//   visiting order (the reference rejects on the first failed edge, so order matters).
+// * Epsilons (our reading of eq. 2, chosen on SemanticKITTI, see README "Design decisions"):
+//   eps1 bounds the displacement of one node's mean along the other's normal (convexity /
+//   concavity: |s_i.d| < |d| sin(eps1) and |s_j.d| < |d| sin(eps1)); eps2 bounds how fast
+//   normals may turn with distance (|s_i.s_j| > 1 - sin(|d| eps2)). With eps1 = 0.03 a
+//   15 cm kerb between node means 4 m apart (0.0375) fails, as do walls; the looser reading
+//   (eps = 0.1 on the displacement) accepts kerbs up to 0.4 m.
+// * Re-seeding: the reference accepts every unreached terrain node as a new root, untested,
+//   so the convexity test only trims the first component. We re-seed only from terrain nodes
+//   that are plausible ground: the planes of the candidate and of its nearest reached node
+//   (xy distance between means, at most reseed_max_distance) must agree within
+//   reseed_max_height_diff at the midpoint between the two means (a ramp's plane meets the
+//   flat plane at the foot of the ramp; a platform or roof is offset everywhere), and the
+//   candidate's weight must be at least reseed_min_weight_ratio of the start node's.
+//   Candidates are tried in decreasing weight (ties: lower index), repeatedly until none is
+//   accepted, so the result is deterministic. Each accepted candidate roots a new B-TGS.
+#include "travel/TraversableGraphSearch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace travel {
+
+bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params) {
+    const Eigen::Vector3f d = b.mean - a.mean;
+    const float len = d.norm();
+    if (!(len > 0.f)) return true;  // coincident means: nothing separates the nodes
+    const float normal_turn = static_cast<float>(
+        std::sin(std::min(static_cast<double>(len) * params.eps2, M_PI / 2)));
+    const float max_offset = len * static_cast<float>(std::sin(params.eps1));
+    return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn &&
+           std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset;
+}
+
+void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGridField& field,
+                                        const Params& params, TerrainModel& model) {
+    queue_.clear();
+    queue_.push_back(root);
+    model.nodes[root].reached = true;
+    model.nodes[root].component = component;
+    reached_list_.push_back(root);
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+        const int i = queue_[head];
+        const TriGridField::Neighbours& nb = field.neighbours(i);
+        for (int k = 0; k < nb.count; ++k) {
+            const int j = nb.ids[k];
+            TriNode& next = model.nodes[j];
+            if (next.reached || next.node_class != NodeClass::Terrain) continue;
+            if (!isTraversableEdge(model.nodes[i], next, params)) continue;
+            next.reached = true;
+            next.component = component;
+            reached_list_.push_back(j);
+            queue_.push_back(j);
+        }
+    }
+}
+
+void TraversableGraphSearch::run(const TriGridField& field, const Params& params,
+                                 TerrainModel& model) {
+    model.seed_node = -1;
+    model.num_components = 0;
+    reached_list_.clear();
+    const int n = field.cellsPerSide();
+    const int sensor_cell = field.nodeOf(0.f, 0.f) / 4;
+    const int sx = sensor_cell % n, sy = sensor_cell / n;
+    const int reach = params.seed_search_cells;
+
+    // Start node (see the decisions above).
+    int seed = -1;
+    for (int iy = std::max(0, sy - reach); iy <= std::min(n - 1, sy + reach); ++iy) {
+        for (int ix = std::max(0, sx - reach); ix <= std::min(n - 1, sx + reach); ++ix) {
+            for (int k = 0; k < 4; ++k) {
+                const int id = 4 * (iy * n + ix) + k;
+                const TriNode& node = model.nodes[id];
+                if (node.node_class != NodeClass::Terrain) continue;
+                if (std::fabs(node.mean.z() + params.sensor_height) > params.seed_height_tolerance)
+                    continue;
+                if (seed < 0 || node.weight > model.nodes[seed].weight) seed = id;
+            }
+        }
+    }
+    if (seed < 0) return;
+    model.seed_node = seed;
+    searchFrom(seed, 0, field, params, model);
+    int16_t component = 1;
+
+    // Re-seeding from plausible ground only.
+    candidates_.clear();
+    for (int id = 0; id < static_cast<int>(model.nodes.size()); ++id) {
+        if (model.nodes[id].node_class == NodeClass::Terrain && !model.nodes[id].reached)
+            candidates_.push_back(id);
+    }
+    std::stable_sort(candidates_.begin(), candidates_.end(), [&](int a, int b) {
+        return model.nodes[a].weight > model.nodes[b].weight;
+    });
+    const float min_weight =
+        static_cast<float>(params.reseed_min_weight_ratio) * model.nodes[seed].weight;
+    const float max_dist2 = static_cast<float>(params.reseed_max_distance * params.reseed_max_distance);
+    bool accepted_any = true;
+    while (accepted_any && component < std::numeric_limits<int16_t>::max()) {
+        accepted_any = false;
+        for (const int id : candidates_) {
+            const TriNode& cand = model.nodes[id];
+            if (cand.reached || cand.weight < min_weight) continue;
+            int nearest = -1;
+            float best = max_dist2;
+            for (const int r : reached_list_) {
+                const Eigen::Vector2f diff = (model.nodes[r].mean - cand.mean).head<2>();
+                const float d2 = diff.squaredNorm();
+                if (d2 <= best) best = d2, nearest = r;
+            }
+            if (nearest < 0) continue;
+            const TriNode& ref = model.nodes[nearest];
+            const Eigen::Vector2f mid = 0.5f * (ref.mean + cand.mean).head<2>();
+            const float gap = planeHeightAt(ref.normal, ref.d, mid.x(), mid.y()) -
+                              planeHeightAt(cand.normal, cand.d, mid.x(), mid.y());
+            if (std::fabs(gap) > params.reseed_max_height_diff) continue;
+            searchFrom(id, component++, field, params, model);
+            accepted_any = true;
+        }
+    }
+    model.num_components = component;
+}
+
+}  // namespace travel

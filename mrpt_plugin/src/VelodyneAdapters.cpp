@@ -1,0 +1,224 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Velodyne family: CObservationVelodyneScan (raw packets) and CObservationRotatingScan (range
+// image). Both index lasers in FIRING order; TRAVEL wants rings in ELEVATION order.
+#include <mrpt/core/bits_math.h>
+#include <mrpt/obs/CObservationRotatingScan.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
+#include <mrpt/obs/VelodyneCalibration.h>
+#include <mrpt/system/datetime.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+
+#include "travel_mrpt/ObservationAdapters.hpp"
+
+namespace travel_mrpt {
+namespace {
+
+using mrpt::obs::CObservationRotatingScan;
+using mrpt::obs::CObservationVelodyneScan;
+using mrpt::obs::VelodyneCalibration;
+
+// Enough for every Velodyne/Ouster model; a fixed array keeps the per-frame path allocation-free.
+constexpr std::size_t kMaxLasers = 256;
+using RingTable = std::array<uint16_t, kMaxLasers>;
+
+bool fail(std::string* why_not, const char* reason) {
+    if (why_not) *why_not = reason;
+    return false;
+}
+
+/// ring_of_laser[id] = rank of laser id's elevation (0 = lowest); ties keep id order.
+void makeRingTable(const VelodyneCalibration& calib, RingTable& ring_of_laser) {
+    const std::size_t n = calib.laser_corrections.size();
+    std::array<uint16_t, kMaxLasers> by_elevation{};
+    for (std::size_t i = 0; i < n; ++i) by_elevation[i] = static_cast<uint16_t>(i);
+    std::stable_sort(by_elevation.begin(), by_elevation.begin() + n, [&](uint16_t a, uint16_t b) {
+        return calib.laser_corrections[a].verticalCorrection <
+               calib.laser_corrections[b].verticalCorrection;
+    });
+    for (std::size_t rank = 0; rank < n; ++rank)
+        ring_of_laser[by_elevation[rank]] = static_cast<uint16_t>(rank);
+}
+
+/// Streams MRPT's decoded points straight into the travel cloud (no intermediate copy).
+class TravelCloudSink final : public CObservationVelodyneScan::PointCloudStorageWrapper {
+public:
+    TravelCloudSink(travel::PointCloud& out, const RingTable& ring_of_laser,
+                    std::size_t num_lasers, mrpt::system::TTimeStamp t0, bool with_time)
+        : out_(out), ring_of_laser_(ring_of_laser), num_lasers_(num_lasers), t0_(t0),
+          with_time_(with_time) {}
+
+    void reserve(std::size_t n) override {
+        out_.reserve(n);
+        out_.ring.reserve(n);
+        if (with_time_) out_.time.reserve(n);
+    }
+
+    void add_point(float x, float y, float z, uint8_t intensity,
+                   const mrpt::system::TTimeStamp& t, const float /*azimuth*/,
+                   uint16_t laser_id) override {
+        out_.push_back(x, y, z, intensity);
+        // Ids beyond the calibration cannot come from a consistent scan; clamp, never overrun.
+        out_.ring.push_back(ring_of_laser_[std::min<std::size_t>(laser_id, num_lasers_ - 1)]);
+        if (with_time_)
+            out_.time.push_back(static_cast<float>(mrpt::system::timeDifference(t0_, t)));
+    }
+
+private:
+    travel::PointCloud& out_;
+    const RingTable& ring_of_laser_;
+    std::size_t num_lasers_;
+    mrpt::system::TTimeStamp t0_;
+    bool with_time_;
+};
+
+/// "VLP-16" -> "VLP16", "HDL-32E" -> "HDL32E": the spellings drivers use vary.
+std::string normalisedModel(const std::string& model) {
+    std::string s;
+    for (char c : model)
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+/// The default calibration for a rotating scan's lidarModel, falling back on the row count.
+/// Null when none fits (MRPT 2.5.8's HDL64 default is empty, see the notes).
+/// `laser_delay_in_columns`: firing delay of laser id k after its column's azimuth is
+/// k * this (in columns) for MRPT's fromVelodyne() layout, from the Velodyne timing tables:
+/// VLP-16 fires a laser every 2.304 us and stores one firing (55.296 us) per column;
+/// HDL-32E fires every 1.152 us and stores one 46.08 us firing cycle per column.
+const VelodyneCalibration* calibrationFor(const CObservationRotatingScan& obs,
+                                          double& laser_delay_in_columns) {
+    const std::string model = normalisedModel(obs.lidarModel);
+    const char* name = nullptr;
+    if (model.rfind("VLP16", 0) == 0 || model.rfind("PUCK", 0) == 0)
+        name = "VLP16";
+    else if (model.rfind("HDL32", 0) == 0)
+        name = "HDL32";
+    else if (model.rfind("HDL64", 0) == 0)
+        name = "HDL64";
+    else if (obs.rowCount == 16)
+        name = "VLP16";
+    else if (obs.rowCount == 32)
+        name = "HDL32";
+    if (!name) return nullptr;
+    laser_delay_in_columns = name[0] == 'V' ? 2.304 / 55.296 : name[3] == '3' ? 1.152 / 46.08 : 0;
+    const VelodyneCalibration& calib = VelodyneCalibration::LoadDefaultCalibration(name);
+    if (calib.empty() || calib.laser_corrections.size() != obs.rowCount) return nullptr;
+    return &calib;
+}
+
+}  // namespace
+
+bool velodyneToTravelCloud(const CObservationVelodyneScan& obs, travel::PointCloud& out,
+                           std::string* why_not) {
+    out.clear();
+    const std::size_t num_lasers = obs.calibration.laser_corrections.size();
+    if (num_lasers == 0)
+        return fail(why_not, "Velodyne scan without calibration: cannot decode its packets");
+    if (num_lasers > kMaxLasers) return fail(why_not, "Velodyne calibration with > 256 lasers");
+    if (obs.scan_packets.empty()) return fail(why_not, "Velodyne scan without packets");
+
+    RingTable ring_of_laser{};
+    makeRingTable(obs.calibration, ring_of_laser);
+
+    CObservationVelodyneScan::TGeneratePointCloudParameters gen;
+    gen.minDistance = 0.f;  // the range window is libtravel's min_range/max_range
+    gen.generatePerPointTimestamp = obs.timestamp != INVALID_TIMESTAMP;
+    TravelCloudSink sink(out, ring_of_laser, num_lasers, obs.timestamp,
+                         gen.generatePerPointTimestamp);
+    // generatePointCloud() only reads the packets; it is non-const because the overload
+    // without a sink writes into obs.point_cloud. The sink overload does not.
+    const_cast<CObservationVelodyneScan&>(obs).generatePointCloud(sink, gen);
+    if (out.empty()) return fail(why_not, "Velodyne scan without any return");
+    return true;
+}
+
+bool rotatingScanToTravelCloud(const CObservationRotatingScan& obs, travel::PointCloud& out,
+                               std::string* why_not) {
+    out.clear();
+    const auto& ranges = obs.rangeImage;
+    const std::size_t rows = static_cast<std::size_t>(ranges.rows());
+    const std::size_t cols = static_cast<std::size_t>(ranges.cols());
+    if (rows == 0 || cols == 0) return fail(why_not, "rotating scan with an empty range image");
+    if (rows > kMaxLasers) return fail(why_not, "rotating scan with > 256 rows");
+    double laser_delay_in_columns = 0;
+    const VelodyneCalibration* calib = calibrationFor(obs, laser_delay_in_columns);
+    if (!calib)
+        return fail(why_not,
+                    "rotating scan: no Velodyne calibration for its lidarModel/row count "
+                    "(MRPT 2.5 has VLP-16 and HDL-32E)");
+
+    // MRPT 2.5's fromVelodyne() sets columnCount rowCount times too large and fills only the
+    // first columns. A real scan has data in its last 1/rows of columns, so data ending before
+    // cols/rows means the quirk: the true column count (used for azimuth and time) is cols/rows.
+    std::size_t last_used = 0;
+    bool any = false;
+    for (std::size_t c = cols; c-- > 0 && !any;)
+        for (std::size_t r = 0; r < rows; ++r)
+            if (ranges(r, c) != 0) {
+                last_used = c, any = true;
+                break;
+            }
+    if (!any) return fail(why_not, "rotating scan without any return");
+    const bool mrpt_quirk = (last_used + 1) * rows <= cols;
+    const std::size_t true_cols = mrpt_quirk ? cols / rows : cols;
+    // The per-laser firing delay is only known for fromVelodyne()'s column layout.
+    if (!mrpt_quirk) laser_delay_in_columns = 0;
+
+    RingTable ring_of_laser{};
+    makeRingTable(*calib, ring_of_laser);
+    std::array<float, kMaxLasers> cos_vert{}, sin_vert{}, vert_offset{}, horiz_offset{},
+        azimuth_corr{}, firing_delay{};  // firing_delay in columns
+    for (std::size_t r = 0; r < rows; ++r) {
+        const auto& lc = calib->laser_corrections[r];
+        cos_vert[r] = static_cast<float>(std::cos(mrpt::DEG2RAD(lc.verticalCorrection)));
+        sin_vert[r] = static_cast<float>(std::sin(mrpt::DEG2RAD(lc.verticalCorrection)));
+        vert_offset[r] = static_cast<float>(lc.verticalOffsetCorrection);
+        horiz_offset[r] = static_cast<float>(lc.horizontalOffsetCorrection);
+        azimuth_corr[r] = static_cast<float>(mrpt::DEG2RAD(lc.azimuthCorrection));
+        firing_delay[r] = static_cast<float>(laser_delay_in_columns * static_cast<double>(r));
+    }
+
+    const bool has_intensity = static_cast<std::size_t>(obs.intensityImage.rows()) == rows &&
+                               static_cast<std::size_t>(obs.intensityImage.cols()) == cols;
+    const bool has_time = obs.sweepDuration > 0;
+    const float range_scale = static_cast<float>(obs.rangeResolution);
+    const double azimuth_step = obs.azimuthSpan / static_cast<double>(true_cols);
+    const double time_step = obs.sweepDuration / static_cast<double>(true_cols);
+
+    std::size_t num_returns = 0;
+    for (std::size_t c = 0; c <= last_used; ++c)
+        for (std::size_t r = 0; r < rows; ++r) num_returns += ranges(r, c) != 0;
+    out.reserve(num_returns);
+    out.ring.reserve(num_returns);
+    if (has_time) out.time.reserve(num_returns);
+
+    // Column-major: firing order, like the Velodyne decoder.
+    for (std::size_t c = 0; c <= last_used; ++c) {
+        for (std::size_t r = 0; r < rows; ++r) {
+            const uint16_t raw = ranges(r, c);
+            if (raw == 0) continue;  // no return
+            const double column = static_cast<double>(c) + firing_delay[r];
+            const float d = range_scale * static_cast<float>(raw);
+            // Velodyne azimuth grows clockwise seen from above: MRPT +y is Velodyne -x.
+            const float az =
+                static_cast<float>(obs.startAzimuth + azimuth_step * column) + azimuth_corr[r];
+            const float cos_az = std::cos(az), sin_az = std::sin(az);
+            const float xy = d * cos_vert[r];
+            out.push_back(xy * cos_az + horiz_offset[r] * sin_az,
+                          -(xy * sin_az - horiz_offset[r] * cos_az),
+                          d * sin_vert[r] + vert_offset[r],
+                          has_intensity ? static_cast<float>(obs.intensityImage(r, c)) : 0.f);
+            out.ring.push_back(ring_of_laser[r]);
+            if (has_time) out.time.push_back(static_cast<float>(time_step * column));
+        }
+    }
+    return true;
+}
+
+}  // namespace travel_mrpt

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Installs what TRAVEL needs on Debian bookworm (only the missing packages), then configures and
+# builds the project into ./build (Release, Ninja). Safe to run again: it installs nothing when
+# everything is present and the build is incremental.
+#
+#   scripts/setup.sh             install missing packages, then build
+#   scripts/setup.sh --no-build  install missing packages only
+set -euo pipefail
+
+ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="$ROOT_DIR/build"
+PACKAGES=(
+  cmake ninja-build g++ pkg-config
+  libeigen3-dev libmrpt-maps-dev libmrpt-nav-dev libmrpt-gui-dev libmrpt-tclap-dev
+  liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev
+)
+
+log() { printf '[setup] %s\n' "$*"; }
+die() { printf '[setup] error: %s\n' "$*" >&2; exit 1; }
+
+build=1
+for arg in "$@"; do
+  case "$arg" in
+    --no-build) build=0 ;;
+    -h|--help) sed -n '2,7p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option '$arg' (options: --no-build)" ;;
+  esac
+done
+
+# ---- Packages ------------------------------------------------------------------------------
+command -v dpkg-query >/dev/null 2>&1 || die "dpkg-query not found: this script supports Debian bookworm (apt) only"
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$pkg")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  log "all ${#PACKAGES[@]} required packages are installed"
+else
+  if [[ "$(id -u)" -eq 0 ]]; then
+    as_root=()
+  elif command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+  else
+    die "missing packages (${missing[*]}) and not root, and sudo is not available"
+  fi
+  log "missing packages: ${missing[*]}"
+  log "running: apt-get update"
+  "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+  log "running: apt-get install -y --no-install-recommends ${missing[*]}"
+  "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+# ---- Build ---------------------------------------------------------------------------------
+if ((build == 0)); then
+  log "--no-build: skipping the build"
+  exit 0
+fi
+
+configure=(cmake -S "$ROOT_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release)
+# The generator of an existing build directory cannot change; choose Ninja only for a new one.
+[[ -f "$BUILD_DIR/CMakeCache.txt" ]] || configure+=(-G Ninja)
+log "configuring: ${configure[*]}"
+"${configure[@]}"
+log "building: cmake --build $BUILD_DIR -j2"
+cmake --build "$BUILD_DIR" -j2
+log "done: tools in $BUILD_DIR/apps (travel-rawlog, travel-kitti)"

@@ -1,0 +1,47 @@
+# Command-line contract of travel-kitti: corrupt input is an error naming the file; a good run
+# writes one .label per scan with one uint32 per point. Uses generated scans, no real data.
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR}/scans ${WORK_DIR}/bad ${WORK_DIR}/labels)
+
+function(expect_failure_mentioning needle)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "expected failure: ${ARGN}\n${out}${err}")
+  endif()
+  string(FIND "${out}${err}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "message does not mention '${needle}':\n${out}${err}")
+  endif()
+endfunction()
+
+# Missing directory
+expect_failure_mentioning("no_such_dir" ${TRAVEL_KITTI} --scans ${WORK_DIR}/no_such_dir --out ${WORK_DIR}/out)
+# Unknown preset
+expect_failure_mentioning("nopreset" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --preset nopreset)
+# Misspelt parameter
+expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --set tgf_resolutoin=4)
+# A .bin whose size is not a multiple of 16
+file(WRITE ${WORK_DIR}/bad/broken.bin "0123456789")
+expect_failure_mentioning("broken.bin" ${TRAVEL_KITTI} --scans ${WORK_DIR}/bad --out ${WORK_DIR}/out)
+
+# A real scan if available: labels are written, one uint32 per point; a label file with the wrong
+# count is an error naming it.
+set(seq ${DATA_DIR}/semantickitti/sequences/00)
+if(EXISTS ${seq}/velodyne/000000.bin)
+  file(COPY ${seq}/velodyne/000000.bin DESTINATION ${WORK_DIR}/scans)
+  execute_process(COMMAND ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out -q
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "travel-kitti failed on a real scan:\n${out}${err}")
+  endif()
+  file(SIZE ${seq}/velodyne/000000.bin bin_size)
+  file(SIZE ${WORK_DIR}/out/000000.label label_size)
+  math(EXPR expected "${bin_size} / 4")
+  if(NOT label_size EQUAL expected)
+    message(FATAL_ERROR "label file has ${label_size} bytes, expected ${expected}")
+  endif()
+  file(WRITE ${WORK_DIR}/labels/000000.label "12345678")
+  expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
+else()
+  message(STATUS "SemanticKITTI scans not found in ${seq}: real-scan part skipped")
+endif()

@@ -1,0 +1,182 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Unit tests of the building blocks: tri-grid geometry, pre-processing, the edge test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <algorithm>
+
+#include "travel/Errors.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel/Preprocessing.hpp"
+#include "travel/TraversableGraphSearch.hpp"
+#include "travel/TriGridField.hpp"
+
+namespace travel {
+namespace {
+
+Params smallGrid() {
+    Params p;
+    p.tgf_resolution = 4.0;
+    p.max_range = 20.0;  // 10 x 10 cells
+    return p;
+}
+
+TEST(TriGridField, InteriorNodesHaveFourteenMutualNeighbours) {
+    TriGridField field;
+    field.configure(smallGrid());
+    ASSERT_EQ(field.cellsPerSide(), 10);
+    const int n = field.cellsPerSide();
+    for (int node = 0; node < field.numNodes(); ++node) {
+        const int ix = (node / 4) % n, iy = (node / 4) / n;
+        const auto& nb = field.neighbours(node);
+        if (ix > 0 && iy > 0 && ix < n - 1 && iy < n - 1) {
+            EXPECT_EQ(nb.count, 14) << node;
+        }
+        std::set<int> unique(nb.ids.begin(), nb.ids.begin() + nb.count);
+        EXPECT_EQ(unique.size(), static_cast<std::size_t>(nb.count));
+        for (int k = 0; k < nb.count; ++k) {
+            // Symmetric relation (the reference's table misses one direction of one pair).
+            const auto& back = field.neighbours(nb.ids[k]);
+            EXPECT_NE(std::find(back.ids.begin(), back.ids.begin() + back.count, node),
+                      back.ids.begin() + back.count);
+        }
+    }
+}
+
+TEST(TriGridField, PointsGoToTheTriangleThatContainsThem) {
+    TriGridField field;
+    field.configure(smallGrid());
+    // The sensor cell spans [0, 4) x [0, 4) (origin -20, r = 4); centre (2, 2).
+    const int cell = field.nodeOf(2.f, 2.f) / 4;
+    EXPECT_EQ(field.nodeOf(3.5f, 2.1f), 4 * cell + 0);  // east
+    EXPECT_EQ(field.nodeOf(2.1f, 3.5f), 4 * cell + 1);  // north
+    EXPECT_EQ(field.nodeOf(0.5f, 1.9f), 4 * cell + 2);  // west
+    EXPECT_EQ(field.nodeOf(1.9f, 0.5f), 4 * cell + 3);  // south
+    EXPECT_EQ(field.nodeOf(25.f, 0.f), -1);
+    EXPECT_EQ(field.nodeOf(std::nanf(""), 0.f), -1);
+    // Each triangle's corners: the cell centre and two corners of its own side.
+    for (int k = 0; k < 4; ++k) {
+        float x, y;
+        field.vertexXY(field.vertexId(4 * cell + k, 0), x, y);
+        EXPECT_FLOAT_EQ(x, 2.f);
+        EXPECT_FLOAT_EQ(y, 2.f);
+    }
+    float x1, y1, x2, y2;
+    field.vertexXY(field.vertexId(4 * cell + 0, 1), x1, y1);
+    field.vertexXY(field.vertexId(4 * cell + 0, 2), x2, y2);
+    EXPECT_FLOAT_EQ(x1, 4.f);
+    EXPECT_FLOAT_EQ(x2, 4.f);
+    EXPECT_FLOAT_EQ(std::fabs(y1 - y2), 4.f);
+}
+
+TEST(Preprocessing, InvalidPointsAreFlagged) {
+    Params p;
+    p.min_range = 1.0;
+    p.max_range = 50.0;
+    PointCloud cloud;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    cloud.push_back(10, 0, -1);     // valid
+    cloud.push_back(nan, 0, 0);     // NaN
+    cloud.push_back(0, inf, 0);     // inf
+    cloud.push_back(0, 0, 0);       // no return
+    cloud.push_back(0.5f, 0, 0);    // too close
+    cloud.push_back(60, 0, 0);      // too far
+    cloud.push_back(1e30f, 0, 0);   // overflows to inf when squared
+    AlignedCloud out;
+    preprocess(cloud, p, {}, out);
+    EXPECT_EQ(out.num_valid, 1u);
+    EXPECT_EQ(out.valid, (std::vector<uint8_t>{1, 0, 0, 0, 0, 0, 0}));
+}
+
+TEST(Preprocessing, AttitudeAlignmentLevelsATiltedSensor) {
+    // A sensor rolled by 10 deg sees flat ground 1.5 m below as a tilted plane; with the
+    // attitude the aligned points are level again.
+    const Eigen::Matrix3d tilt =
+        Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    PointCloud cloud;
+    for (int i = 1; i <= 10; ++i) {
+        const Eigen::Vector3d world(2.0 * i, 1.0 * i - 5, -1.5);
+        const Eigen::Vector3d sensor = tilt.transpose() * world;
+        cloud.push_back(sensor.x(), sensor.y(), sensor.z());
+    }
+    FrameInput input;
+    input.vehicle_attitude = tilt;
+    AlignedCloud out;
+    preprocess(cloud, Params{}, input, out);
+    for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(out.z[i], -1.5, 1e-4);
+    // Yaw of the attitude is ignored: the grid stays in the vehicle frame.
+    input.vehicle_attitude =
+        Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() * tilt;
+    preprocess(cloud, Params{}, input, out);
+    for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(out.z[i], -1.5, 1e-4);
+    EXPECT_NEAR(out.x[0], 2.0, 1e-4);
+}
+
+TEST(Preprocessing, DeskewUndoesConstantVelocityMotion) {
+    // The sensor moves at 10 m/s along x and yaws at 1 rad/s; a static point is observed at
+    // time t in the sensor frame of time t. Deskew to t = 0 must recover its position.
+    const Eigen::Vector3d v(10, 0, 0), w(0, 0, 1);
+    const Eigen::Vector3d world(20, 5, -1.7);
+    PointCloud cloud;
+    for (int k = 0; k < 10; ++k) {
+        const double t = 0.01 * k;
+        const Eigen::Matrix3d R = Eigen::AngleAxisd(w.norm() * t, w.normalized()).toRotationMatrix();
+        const Eigen::Vector3d seen = R.transpose() * (world - v * t);  // pose at t: (R, v t)
+        cloud.push_back(seen.x(), seen.y(), seen.z());
+        cloud.time.push_back(static_cast<float>(t));
+    }
+    FrameInput input;
+    input.linear_velocity = v;
+    input.angular_velocity = w;
+    AlignedCloud out;
+    preprocess(cloud, Params{}, input, out);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        EXPECT_NEAR(out.x[i], world.x(), 0.02);
+        EXPECT_NEAR(out.y[i], world.y(), 0.02);
+    }
+    Params off;
+    off.deskew = false;
+    preprocess(cloud, off, input, out);
+    EXPECT_GT(std::fabs(out.x[9] - world.x()), 0.5);
+}
+
+TriNode planeNode(Eigen::Vector3f mean, Eigen::Vector3f normal) {
+    TriNode n;
+    n.mean = mean;
+    n.normal = normal.normalized();
+    n.d = -n.normal.dot(n.mean);
+    n.node_class = NodeClass::Terrain;
+    return n;
+}
+
+TEST(GraphSearch, EdgeTestAcceptsFlatRejectsKerbAndIsSymmetric) {
+    const Params p;
+    const Eigen::Vector3f up(0, 0, 1);
+    const TriNode a = planeNode({0, 0, -1.7f}, up);
+    const TriNode flat = planeNode({4, 0, -1.7f}, up);
+    const TriNode kerb = planeNode({4, 0, -1.55f}, up);     // 15 cm higher, 4 m away
+    const TriNode tilted = planeNode({4, 0, -1.7f}, {0.5f, 0, 1});  // normals 27 deg apart
+    EXPECT_TRUE(isTraversableEdge(a, flat, p));
+    EXPECT_FALSE(isTraversableEdge(a, kerb, p));
+    EXPECT_FALSE(isTraversableEdge(kerb, a, p));
+    EXPECT_EQ(isTraversableEdge(a, tilted, p), isTraversableEdge(tilted, a, p));
+}
+
+TEST(Params, ValidateRejectsOutOfRangeAndHugeGrids) {
+    Params p;
+    p.tgf_resolution = -1;
+    EXPECT_THROW(p.validate(), ConfigError);
+    p = Params{};
+    p.min_range = 100, p.max_range = 50;
+    EXPECT_THROW(p.validate(), ConfigError);
+    p = Params{};
+    p.max_range = 2000, p.tgf_resolution = 0.25;  // 16000 cells per side
+    EXPECT_THROW(Pipeline{p}, ConfigError);
+}
+
+}  // namespace
+}  // namespace travel

@@ -1,0 +1,225 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "travel/Errors.hpp"
+#include "travel/KittiIO.hpp"
+
+namespace fs = std::filesystem;
+using travel::InputError;
+using travel::PointClass;
+using travel::PointCloud;
+
+namespace {
+
+template <class F>
+std::string inputErrorOf(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+#define EXPECT_CONTAINS(haystack, needle) \
+    EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() /
+               ("travel_test_kitti_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
+                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+    std::string writeBytes(const std::string& name, const std::vector<unsigned char>& bytes) const {
+        std::ofstream out(file(name), std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        return file(name);
+    }
+    // Host-order floats: the tests run on little-endian hosts, like the file format.
+    std::string writeFloats(const std::string& name, const std::vector<float>& values) const {
+        std::vector<unsigned char> bytes(values.size() * sizeof(float));
+        std::memcpy(bytes.data(), values.data(), bytes.size());
+        return writeBytes(name, bytes);
+    }
+};
+
+PointCloud sampleCloud() {
+    PointCloud c;
+    c.push_back(1.f, 2.f, 3.f, 0.5f);
+    c.push_back(-10.25f, 0.f, -1.73f, 0.f);
+    c.push_back(1e-3f, 80.f, 1e6f, 1.f);
+    return c;
+}
+
+}  // namespace
+
+TEST(KittiIO, BinRoundTrip) {
+    TempDir dir;
+    const PointCloud written = sampleCloud();
+    travel::writeKittiBin(dir.file("a.bin"), written);
+    EXPECT_EQ(fs::file_size(dir.file("a.bin")), 3u * 16u);
+
+    PointCloud read;
+    read.ring = {1, 2, 3};  // stale optional fields are cleared
+    read.time = {0.f, 0.f, 0.f};
+    travel::readKittiBin(dir.file("a.bin"), read);
+    EXPECT_EQ(read.x, written.x);
+    EXPECT_EQ(read.y, written.y);
+    EXPECT_EQ(read.z, written.z);
+    EXPECT_EQ(read.intensity, written.intensity);
+    EXPECT_TRUE(read.ring.empty());
+    EXPECT_TRUE(read.time.empty());
+}
+
+TEST(KittiIO, LittleEndianLayout) {
+    TempDir dir;
+    const std::string path = dir.writeFloats("b.bin", {1.f, 2.f, 3.f, 4.f, 5.f, 6.f, 7.f, 8.f});
+    PointCloud c;
+    travel::readKittiBin(path, c);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c.x[1], 5.f);
+    EXPECT_EQ(c.y[1], 6.f);
+    EXPECT_EQ(c.z[1], 7.f);
+    EXPECT_EQ(c.intensity[1], 8.f);
+}
+
+TEST(KittiIO, ReusesCloudForSmallerFrames) {
+    TempDir dir;
+    travel::writeKittiBin(dir.file("big.bin"), sampleCloud());
+    PointCloud small;
+    small.push_back(0.f, 0.f, 0.f);
+    travel::writeKittiBin(dir.file("small.bin"), small);
+    PointCloud c;
+    travel::readKittiBin(dir.file("big.bin"), c);
+    travel::readKittiBin(dir.file("small.bin"), c);
+    EXPECT_EQ(c.size(), 1u);
+    EXPECT_EQ(c.intensity.size(), 1u);
+}
+
+TEST(KittiIO, SizeNotMultipleOf16) {
+    TempDir dir;
+    const std::string path = dir.writeBytes("bad.bin", std::vector<unsigned char>(33, 0));
+    PointCloud c;
+    const std::string msg = inputErrorOf([&] { travel::readKittiBin(path, c); });
+    EXPECT_CONTAINS(msg, path);
+    EXPECT_CONTAINS(msg, "33");
+    EXPECT_CONTAINS(msg, "16");
+    EXPECT_CONTAINS(msg, "1 bytes left over");
+}
+
+TEST(KittiIO, EmptyFileIsEmptyCloud) {
+    TempDir dir;
+    const std::string path = dir.writeBytes("empty.bin", {});
+    PointCloud c = sampleCloud();
+    travel::readKittiBin(path, c);
+    EXPECT_TRUE(c.empty());
+    EXPECT_TRUE(c.intensity.empty());
+}
+
+TEST(KittiIO, MissingFileOrDirectory) {
+    TempDir dir;
+    PointCloud c;
+    const std::string missing = dir.file("missing.bin");
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::readKittiBin(missing, c); }), missing);
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::readKittiBin(dir.path.string(), c); }), "directory");
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::readLabelFile(missing, 0); }), missing);
+}
+
+TEST(KittiIO, XYZIRReadsRing) {
+    TempDir dir;
+    const std::string path =
+        dir.writeFloats("n.bin", {1.f, 2.f, 3.f, 4.f, 0.f, 5.f, 6.f, 7.f, 8.f, 31.f});
+    PointCloud c;
+    c.time = {1.f};
+    travel::readBinXYZIR(path, c);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_TRUE(c.hasRing());
+    EXPECT_TRUE(c.time.empty());
+    EXPECT_EQ(c.ring[0], 0);
+    EXPECT_EQ(c.ring[1], 31);
+    EXPECT_EQ(c.intensity[1], 8.f);
+
+    // KITTI files (16-byte records) are rejected unless the size happens to fit.
+    const std::string kitti = dir.writeFloats("k.bin", {1.f, 2.f, 3.f, 4.f});
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::readBinXYZIR(kitti, c); }), "20");
+    const std::string bad_ring = dir.writeFloats("r.bin", {1.f, 2.f, 3.f, 4.f, 0.25f});
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::readBinXYZIR(bad_ring, c); }), "ring");
+}
+
+TEST(KittiIO, LabelsRoundTripAndCount) {
+    TempDir dir;
+    const std::vector<uint32_t> labels = {0u, 40u, 72u | (7u << 16), 0xFFFFFFFFu};
+    travel::writeLabelFile(dir.file("a.label"), labels);
+    EXPECT_EQ(travel::readLabelFile(dir.file("a.label"), 4), labels);
+    EXPECT_EQ(travel::readLabelFile(dir.file("a.label"), travel::kAnyLabelCount), labels);
+
+    const std::string msg = inputErrorOf([&] { travel::readLabelFile(dir.file("a.label"), 5); });
+    EXPECT_CONTAINS(msg, dir.file("a.label"));
+    EXPECT_CONTAINS(msg, "4 labels");
+    EXPECT_CONTAINS(msg, "5");
+
+    const std::string odd = dir.writeBytes("odd.label", {1, 2, 3, 4, 5, 6});
+    const std::string odd_msg = inputErrorOf([&] { travel::readLabelFile(odd, 1); });
+    EXPECT_CONTAINS(odd_msg, odd);
+    EXPECT_CONTAINS(odd_msg, "multiple of 4");
+
+    travel::writeLabelFile(dir.file("empty.label"), {});
+    EXPECT_TRUE(travel::readLabelFile(dir.file("empty.label"), 0).empty());
+}
+
+TEST(KittiIO, WriteFailureThrows) {
+    TempDir dir;
+    EXPECT_THROW(travel::writeLabelFile(dir.file("no/such/dir/a.label"), {1u}), std::runtime_error);
+    EXPECT_THROW(travel::writeKittiBin(dir.file("no/such/dir/a.bin"), sampleCloud()),
+                 std::runtime_error);
+    PointCloud inconsistent = sampleCloud();
+    inconsistent.z.pop_back();
+    EXPECT_THROW(travel::writeKittiBin(dir.file("x.bin"), inconsistent), std::invalid_argument);
+}
+
+TEST(KittiIO, EncodeLabel) {
+    EXPECT_EQ(travel::encodeLabel(PointClass::Ground, 0), 1u);
+    EXPECT_EQ(travel::encodeLabel(PointClass::Outlier, 5), (5u << 16) | 3u);
+    EXPECT_EQ(travel::encodeLabel(PointClass::NonGround, 0xFFFF), (0xFFFFu << 16) | 2u);
+    // Large ids wrap into [1, 0xFFFF], never to 0 (= no cluster).
+    EXPECT_EQ(travel::labelClusterId(travel::encodeLabel(PointClass::NonGround, 0x10000)), 1u);
+    EXPECT_EQ(travel::labelClusterId(travel::encodeLabel(PointClass::NonGround, 0x1FFFE)), 0xFFFFu);
+    EXPECT_EQ(travel::labelClusterId(travel::encodeLabel(PointClass::NonGround, 0xFFFFFFFF)),
+              ((0xFFFFFFFFu - 1u) % 0xFFFFu) + 1u);
+    EXPECT_NE(travel::labelClusterId(travel::encodeLabel(PointClass::NonGround, 0x1FFFF)), 0u);
+    EXPECT_EQ(travel::labelClassBits(travel::encodeLabel(PointClass::Invalid, 0x12345)), 0u);
+}
+
+TEST(KittiIO, ListFiles) {
+    TempDir dir;
+    for (const char* name : {"000002.bin", "000000.bin", "000001.bin", "000000.label", "notes"}) {
+        dir.writeBytes(name, {});
+    }
+    fs::create_directories(dir.path / "sub.bin");  // directories are skipped
+    const auto bins = travel::listFiles(dir.path.string(), "bin");
+    ASSERT_EQ(bins.size(), 3u);
+    EXPECT_EQ(bins[0], dir.file("000000.bin"));
+    EXPECT_EQ(bins[2], dir.file("000002.bin"));
+    EXPECT_EQ(travel::listFiles(dir.path.string(), ".label").size(), 1u);
+    EXPECT_EQ(travel::listFiles(dir.path.string(), "").size(), 5u);
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::listFiles(dir.file("nope"), "bin"); }),
+                    dir.file("nope"));
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::listFiles(dir.file("notes"), "bin"); }),
+                    "not a directory");
+}

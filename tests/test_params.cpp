@@ -1,0 +1,371 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "travel/Errors.hpp"
+#include "travel/Params.hpp"
+#include "travel/ParamsIO.hpp"
+
+namespace fs = std::filesystem;
+using travel::ConfigError;
+using travel::Params;
+
+namespace {
+
+// The message of the ConfigError thrown by f, or "" if none was thrown.
+template <class F>
+std::string configErrorOf(F&& f) {
+    try {
+        f();
+    } catch (const ConfigError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+#define EXPECT_CONTAINS(haystack, needle) \
+    EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
+
+std::vector<double> valuesOf(const Params& p) {
+    std::vector<double> values;
+    travel::visitParams(p, [&](const char*, const auto& v, const char*, double, double,
+                               const char*) { values.push_back(static_cast<double>(v)); });
+    return values;
+}
+
+Params fromText(const std::string& text) {
+    Params p;
+    travel::applyParamsText(text, "test.yaml", p);
+    return p;
+}
+
+// A temporary directory removed at the end of the test.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() /
+               ("travel_test_params_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
+                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string write(const std::string& name, const std::string& text) const {
+        const fs::path file = path / name;
+        fs::create_directories(file.parent_path());
+        std::ofstream(file) << text;
+        return file.string();
+    }
+};
+
+}  // namespace
+
+// ---- Params::validate ------------------------------------------------------------------------
+
+TEST(ParamsValidate, DefaultsAreValid) {
+    EXPECT_NO_THROW(Params().validate());
+}
+
+TEST(ParamsValidate, OutOfRangeNamesParameterValueAndRange) {
+    Params p;
+    p.tgf_resolution = 0.1;
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "tgf_resolution");
+    EXPECT_CONTAINS(msg, "0.1");
+    EXPECT_CONTAINS(msg, "0.25");
+    EXPECT_CONTAINS(msg, "100");
+}
+
+TEST(ParamsValidate, IntOutOfRange) {
+    Params p;
+    p.node_min_points = 2;
+    EXPECT_CONTAINS(configErrorOf([&] { p.validate(); }), "node_min_points");
+}
+
+TEST(ParamsValidate, RejectsNaNAndInf) {
+    Params p;
+    p.eps1 = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_CONTAINS(configErrorOf([&] { p.validate(); }), "eps1");
+    p = Params();
+    p.max_range = std::numeric_limits<double>::infinity();
+    EXPECT_CONTAINS(configErrorOf([&] { p.validate(); }), "max_range");
+}
+
+TEST(ParamsValidate, MinRangeMustBeBelowMaxRange) {
+    Params p;
+    p.min_range = 80.0;
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "min_range");
+    EXPECT_CONTAINS(msg, "max_range");
+}
+
+TEST(ParamsValidate, GridSizeLimit) {
+    Params p;
+    p.max_range = 1000.0;
+    p.tgf_resolution = 1.0;  // 2000 cells per side > 1024
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "max_grid_cells_per_side");
+    EXPECT_CONTAINS(msg, "tgf_resolution");
+    EXPECT_CONTAINS(msg, "max_range");
+    p.max_grid_cells_per_side = 2000;  // exactly enough
+    EXPECT_NO_THROW(p.validate());
+}
+
+// ---- applyParamsText: syntax -----------------------------------------------------------------
+
+TEST(ParamsText, YamlAndComments) {
+    const Params p = fromText(
+        "# a comment\n"
+        "---\n"
+        "\n"
+        "tgf_resolution: 4      # trailing comment\n"
+        "node_min_points: 7\n"
+        "ttmf: false\n");
+    EXPECT_EQ(p.tgf_resolution, 4.0);
+    EXPECT_EQ(p.node_min_points, 7);
+    EXPECT_FALSE(p.ttmf);
+    EXPECT_EQ(p.max_range, Params().max_range);  // untouched keys keep their defaults
+}
+
+TEST(ParamsText, IniWithSection) {
+    const Params p = fromText(
+        "; ini comment\n"
+        "[travel]\n"
+        "tgf_resolution = 2.5\r\n"  // CRLF
+        "  deskew = off\n");
+    EXPECT_EQ(p.tgf_resolution, 2.5);
+    EXPECT_FALSE(p.deskew);
+}
+
+TEST(ParamsText, YamlTravelWrapper) {
+    const Params p = fromText(
+        "travel:\n"
+        "  tgf_resolution: 3\n"
+        "  sensor_height: 0.5\n");
+    EXPECT_EQ(p.tgf_resolution, 3.0);
+    EXPECT_EQ(p.sensor_height, 0.5);
+}
+
+TEST(ParamsText, QuotedValues) {
+    const Params p = fromText("tgf_resolution: \"4.5\"  # q\nttmf: 'no'\n");
+    EXPECT_EQ(p.tgf_resolution, 4.5);
+    EXPECT_FALSE(p.ttmf);
+    EXPECT_CONTAINS(configErrorOf([] { fromText("tgf_resolution: \"4.5\n"); }), "unterminated");
+}
+
+TEST(ParamsText, Booleans) {
+    for (const char* t : {"true", "TRUE", "Yes", "on", "1"}) {
+        EXPECT_TRUE(fromText(std::string("ttmf: ") + t).ttmf) << t;
+    }
+    for (const char* f : {"false", "False", "NO", "off", "0"}) {
+        EXPECT_FALSE(fromText(std::string("ttmf: ") + f).ttmf) << f;
+    }
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ttmf: maybe"); }), "test.yaml:1: ");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ttmf: 2"); }), "boolean");
+}
+
+TEST(ParamsText, Numbers) {
+    EXPECT_EQ(fromText("eps1: 1e-2").eps1, 0.01);
+    EXPECT_EQ(fromText("eps1: +0.5").eps1, 0.5);
+    EXPECT_EQ(fromText("mount_yaw_deg: -90").mount_yaw_deg, -90.0);
+    EXPECT_EQ(fromText("node_min_points: 12.0").node_min_points, 12);
+    for (const char* bad :
+         {"1.5m", "abc", "", "nan", "inf", "-inf", "1e999", "1.5 2", "++1", "0x10", "1,5"}) {
+        const std::string msg = configErrorOf([&] { fromText(std::string("eps1: ") + bad); });
+        EXPECT_CONTAINS(msg, "test.yaml:1: ") << "value " << bad;
+        EXPECT_CONTAINS(msg, "eps1");
+    }
+}
+
+TEST(ParamsText, Integers) {
+    EXPECT_CONTAINS(configErrorOf([] { fromText("node_min_points: 8.5"); }), "integer");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("node_min_points: 3000000000"); }), "int");
+    // Out of the parameter's own range, reported with the line.
+    const std::string msg = configErrorOf([] { fromText("\n\nnode_min_points: 2"); });
+    EXPECT_CONTAINS(msg, "test.yaml:3: ");
+    EXPECT_CONTAINS(msg, "[3, 1000000]");
+}
+
+TEST(ParamsText, UnknownKeySuggestsClosest) {
+    const std::string msg = configErrorOf([] { fromText("\ntgf_resolutoin: 4\n"); });
+    EXPECT_CONTAINS(msg, "test.yaml:2: ");
+    EXPECT_CONTAINS(msg, "unknown parameter 'tgf_resolutoin'");
+    EXPECT_CONTAINS(msg, "did you mean 'tgf_resolution'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("resolution: 4"); }), "'tgf_resolution'");
+    // No suggestion when nothing is close.
+    const std::string far = configErrorOf([] { fromText("completely_unrelated: 4"); });
+    EXPECT_CONTAINS(far, "unknown parameter 'completely_unrelated'");
+    EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+}
+
+TEST(ParamsText, DuplicateKey) {
+    const std::string msg =
+        configErrorOf([] { fromText("eps1: 0.1\neps2: 0.1\n[travel]\neps1 = 0.2\n"); });
+    EXPECT_CONTAINS(msg, "test.yaml:4: ");
+    EXPECT_CONTAINS(msg, "duplicate key 'eps1'");
+    EXPECT_CONTAINS(msg, "line 1");
+}
+
+TEST(ParamsText, SectionErrors) {
+    EXPECT_CONTAINS(configErrorOf([] { fromText("[other]\neps1 = 1\n"); }), "'[other]'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("[travel]\n[travel]\n"); }), "twice");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("[travel\n"); }), "malformed section");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ros:\n  eps1: 1\n"); }), "'ros:'");
+}
+
+TEST(ParamsText, StructureErrors) {
+    EXPECT_CONTAINS(configErrorOf([] { fromText("just text"); }), "expected 'key: value'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("- eps1: 1"); }), "expected 'key: value'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1:\n"); }), "missing value for 'eps1'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n---\n"); }), "test.yaml:2: ");
+    // Indented keys are only accepted under `travel:`.
+    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n  eps2: 0.1\n"); }), "indented");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("travel:\n eps1: 0.1\neps2: 0.1\n  ttmf: 0\n"); }),
+                    "test.yaml:4: ");
+}
+
+// ---- Files, presets, overrides ---------------------------------------------------------------
+
+TEST(ParamsFile, MissingFile) {
+    Params p;
+    const std::string msg =
+        configErrorOf([&] { travel::applyParamsFile("/nonexistent/x.yaml", p); });
+    EXPECT_CONTAINS(msg, "/nonexistent/x.yaml");
+}
+
+TEST(ParamsFile, ValidatesAfterwardsWithFileName) {
+    TempDir dir;
+    const std::string path = dir.write("bad.yaml", "min_range: 50\nmax_range: 40\n");
+    Params p;
+    const std::string msg = configErrorOf([&] { travel::applyParamsFile(path, p); });
+    EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+    EXPECT_CONTAINS(msg, "min_range");
+}
+
+TEST(ParamsFile, LineErrorsNameTheFile) {
+    TempDir dir;
+    const std::string path = dir.write("typo.ini", "[travel]\ntgf_resolutoin = 4\n");
+    Params p;
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyParamsFile(path, p); }), path + ":2: ");
+}
+
+TEST(Presets, AllShippedPresetsLoad) {
+    const auto names = travel::availablePresets();
+    for (const char* expected : {"hdl32", "hdl64", "os128", "vlp16"}) {
+        EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+    }
+    for (const auto& name : names) {
+        EXPECT_NO_THROW(travel::loadPreset(name).validate()) << name;
+    }
+}
+
+TEST(Presets, Values) {
+    EXPECT_EQ(valuesOf(travel::loadPreset("hdl64")), valuesOf(Params()));
+    const Params hdl32 = travel::loadPreset("hdl32");
+    EXPECT_EQ(hdl32.sensor_height, 1.84);
+    EXPECT_EQ(hdl32.mount_yaw_deg, -90.0);
+    EXPECT_EQ(hdl32.tgf_resolution, 4.0);
+    const Params vlp16 = travel::loadPreset("vlp16");
+    EXPECT_EQ(vlp16.node_min_points, 5);
+    EXPECT_EQ(vlp16.max_range, 60.0);
+    EXPECT_EQ(travel::loadPreset("os128").sensor_height, 0.0);
+}
+
+TEST(Presets, UnknownPresetListsAvailableAndSearched) {
+    const std::string msg = configErrorOf([] { travel::loadPreset("nope"); });
+    EXPECT_CONTAINS(msg, "'nope'");
+    EXPECT_CONTAINS(msg, "hdl64");
+    EXPECT_CONTAINS(msg, "presets");
+    // Names only, no paths.
+    EXPECT_CONTAINS(configErrorOf([] { travel::findPresetFile("../presets/hdl64"); }), "not found");
+}
+
+TEST(Presets, PresetKeyThenOverrides) {
+    const Params p = fromText("# my robot\npreset: vlp16\nsensor_height: 0.8\n");
+    EXPECT_EQ(p.sensor_height, 0.8);
+    EXPECT_EQ(p.node_min_points, 5);
+    EXPECT_EQ(p.tgf_resolution, 2.0);
+    EXPECT_EQ(fromText("travel:\n  preset: \"hdl32\"\n").mount_yaw_deg, -90.0);
+    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\npreset: vlp16\n"); }),
+                    "test.yaml:2: 'preset' must come before");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("preset: nope\n"); }), "test.yaml:1: preset");
+}
+
+TEST(Presets, EnvironmentDirectoryComesFirst) {
+    TempDir dir;
+    dir.write("presets/vlp16.yaml", "sensor_height: 0.42\n");
+    dir.write("presets/mine.yaml", "preset: vlp16\neps1: 0.05\n");
+    dir.write("presets/loop.yaml", "preset: loop\n");
+    ::setenv("TRAVEL_SHARE_DIR", dir.path.c_str(), 1);
+    EXPECT_EQ(travel::shareSearchDirs().front(), dir.path.string());
+    EXPECT_EQ(travel::findShareDir(), dir.path.string());
+    EXPECT_EQ(travel::loadPreset("vlp16").sensor_height, 0.42);
+    const Params mine = travel::loadPreset("mine");
+    EXPECT_EQ(mine.sensor_height, 0.42);
+    EXPECT_EQ(mine.eps1, 0.05);
+    EXPECT_CONTAINS(configErrorOf([] { travel::loadPreset("loop"); }), "cycle");
+    const auto names = travel::availablePresets();
+    EXPECT_NE(std::find(names.begin(), names.end(), "mine"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "hdl64"), names.end());
+    ::unsetenv("TRAVEL_SHARE_DIR");
+    EXPECT_EQ(travel::loadPreset("vlp16").sensor_height, 0.5);
+}
+
+TEST(Overrides, Apply) {
+    Params p;
+    travel::applyOverride("tgf_resolution=4", p);
+    travel::applyOverride(" ttmf = no ", p);
+    EXPECT_EQ(p.tgf_resolution, 4.0);
+    EXPECT_FALSE(p.ttmf);
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyOverride("tgf_resolution", p); }),
+                    "key=value");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyOverride("tgf_resolutoin=4", p); }),
+                    "did you mean 'tgf_resolution'");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyOverride("tgf_resolution=0.01", p); }),
+                    "tgf_resolution");
+    EXPECT_EQ(p.tgf_resolution, 4.0);  // a rejected override changes nothing
+}
+
+// ---- paramsToYaml ----------------------------------------------------------------------------
+
+TEST(ParamsYaml, RoundTripsExactly) {
+    Params p;
+    p.eps1 = 0.1 + 0.2;  // not representable by a short decimal
+    p.sensor_height = 1.0 / 3.0;
+    p.max_range = 100.0;
+    p.node_min_points = 123;
+    p.deskew = false;
+    p.mount_yaw_deg = -90.0;
+    const std::string yaml = travel::paramsToYaml(p);
+    const Params back = fromText(yaml);
+    EXPECT_EQ(valuesOf(back), valuesOf(p));
+    EXPECT_EQ(travel::paramsToYaml(back), yaml);
+}
+
+TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
+    const std::string yaml = travel::paramsToYaml(Params());
+    EXPECT_CONTAINS(yaml, "# [m] Height of the sensor origin");
+    EXPECT_CONTAINS(yaml, "(range [0, 100])\nsensor_height: 1.73\n");
+    EXPECT_CONTAINS(yaml, "\nmax_range: 80.0\n");
+    EXPECT_CONTAINS(yaml, "(true/false)\nttmf: true\n");
+    EXPECT_CONTAINS(yaml, "\nmax_grid_cells_per_side: 1024\n");
+    const Params defaults;
+    std::istringstream lines(yaml);
+    for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 100u) << line;
+    travel::visitParams(
+        defaults, [&](const char* name, const auto&, const char*, double, double, const char*) {
+            EXPECT_CONTAINS(yaml, "\n" + std::string(name) + ": ");
+        });
+}
