@@ -10,7 +10,6 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
-#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
@@ -27,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,7 +92,8 @@ struct Options {
 std::string presetList() {
     try {
         std::string list;
-        for (const auto& name : travel::availablePresets()) list += (list.empty() ? "" : ", ") + name;
+        for (const auto& name : travel::availablePresets())
+            list += (list.empty() ? "" : ", ") + name;
         return list.empty() ? "none found" : list;
     } catch (const std::exception&) {
         return "none found";
@@ -133,8 +134,8 @@ Options parseCommandLine(int argc, char** argv) {
                                         "applied after --preset",
                                         false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> preset(
-        "", "preset", "Start from this sensor preset instead of the HDL-64E defaults (" +
-                          presetList() + ")",
+        "", "preset",
+        "Start from this sensor preset instead of the HDL-64E defaults (" + presetList() + ")",
         false, "", "NAME", cmd);
     TCLAP::MultiArg<std::string> set("", "set",
                                      "Override one parameter (repeatable), applied last, e.g. "
@@ -205,7 +206,7 @@ void createParentDirectory(const std::string& path) {
 // Input: one serialized object per record; clean end of file vs truncated record.
 
 class RawlogReader {
-public:
+  public:
     explicit RawlogReader(const std::string& path) : path_(path) {
         std::error_code ec;
         if (!fs::exists(path, ec)) throw AppError(path + ": no such file");
@@ -228,23 +229,25 @@ public:
             if (file_.getPosition() == start) return nullptr;
             throw AppError(where(path_, index_) + ": truncated (end of file inside the record)");
         } catch (const std::bad_alloc&) {
-            throw AppError(where(path_, index_) + ": corrupt record (absurd size); is it a rawlog?");
+            throw AppError(where(path_, index_) +
+                           ": corrupt record (absurd size); is it a rawlog?");
         } catch (const std::exception& e) {
             const std::string what = oneLine(e.what());
             // MRPT reports a short read inside an object as a generic error, not CExceptionEOF.
             if (what.find("EOF") != std::string::npos ||
                 what.find("Cannot read object class name") != std::string::npos)
-                throw AppError(where(path_, index_) + ": truncated (end of file inside the record)");
-            throw AppError(where(path_, index_) +
-                           (index_ == 0 ? ": cannot read (is it an MRPT rawlog?): "
-                                        : ": cannot read: ") +
-                           what);
+                throw AppError(where(path_, index_) +
+                               ": truncated (end of file inside the record)");
+            throw AppError(
+                where(path_, index_) +
+                (index_ == 0 ? ": cannot read (is it an MRPT rawlog?): " : ": cannot read: ") +
+                what);
         }
     }
 
     long index() const { return index_; }
 
-private:
+  private:
     std::string path_;
     mrpt::io::CFileGZInputStream file_;
     mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive_{file_};
@@ -270,7 +273,7 @@ bool isOurOutputLabel(const std::string& label) {
 /// their record is written, so the objects (and their point buffers) are reused for the next
 /// records; a second LiDAR in the same SensoryFrame gets its own set.
 class ClassCloudPool {
-public:
+  public:
     using Set = std::array<CObservationPointCloud::Ptr, 3>;
 
     void startRecord() { used_ = 0; }
@@ -287,6 +290,11 @@ public:
         }
         const Set& set = sets_[used_++];
 
+        // Counted here rather than taken from result.class_counts: the buffers are written
+        // without bounds checks below, so their sizes must come from the labels themselves
+        // (& 3 keeps any label value inside the arrays).
+        std::array<std::size_t, 4> count_of_class{};
+        for (PointClass c : result.labels) ++count_of_class[static_cast<int>(c) & 3];
         std::array<mrpt::maps::CPointsMapXYZI*, 4> map_of_class{};  // indexed by PointClass
         std::array<std::size_t, 4> next_index{};
         for (std::size_t k = 0; k < set.size(); ++k) {
@@ -295,11 +303,11 @@ public:
             obs.sensorLabel = source.sensorLabel + kOutputSuffixes[k];
             obs.sensorPose = sensor_pose;
             auto* map = static_cast<mrpt::maps::CPointsMapXYZI*>(obs.pointcloud.get());
-            map->setSize(result.count(kOutputClasses[k]));
+            map->setSize(count_of_class[static_cast<int>(kOutputClasses[k])]);
             map_of_class[static_cast<int>(kOutputClasses[k])] = map;
         }
         for (std::size_t i = 0; i < cloud.size(); ++i) {
-            const int c = static_cast<int>(result.labels[i]);
+            const int c = static_cast<int>(result.labels[i]) & 3;
             mrpt::maps::CPointsMapXYZI* map = map_of_class[c];
             if (!map) continue;  // invalid
             const std::size_t j = next_index[c]++;
@@ -309,7 +317,7 @@ public:
         return set;
     }
 
-private:
+  private:
     std::vector<Set> sets_;
     std::size_t used_ = 0;
 };
@@ -324,15 +332,21 @@ constexpr Rgb kGroundColour{0, 170, 0}, kNonGroundColour{220, 0, 0}, kOutlierCol
 
 const Rgb* colourOf(PointClass c) {
     switch (c) {
-        case PointClass::Ground: return &kGroundColour;
-        case PointClass::NonGround: return &kNonGroundColour;
-        case PointClass::Outlier: return &kOutlierColour;
-        case PointClass::Invalid: break;
+        case PointClass::Ground:
+            return &kGroundColour;
+        case PointClass::NonGround:
+            return &kNonGroundColour;
+        case PointClass::Outlier:
+            return &kOutlierColour;
+        case PointClass::Invalid:
+            break;
     }
     return nullptr;
 }
 
-mrpt::img::TColor toTColor(const Rgb& c) { return mrpt::img::TColor(c.r, c.g, c.b); }
+mrpt::img::TColor toTColor(const Rgb& c) {
+    return mrpt::img::TColor(c.r, c.g, c.b);
+}
 
 /// Largest of 1, 2, 5 x 10^k metres not longer than `max_metres`.
 double niceLength(double max_metres) {
@@ -344,7 +358,7 @@ double niceLength(double max_metres) {
 }
 
 class BirdsEyeView {
-public:
+  public:
     BirdsEyeView(int size_px, double metres_per_pixel)
         : size_(size_px), mpp_(metres_per_pixel), image_(size_px, size_px, mrpt::img::CH_RGB) {}
 
@@ -377,7 +391,8 @@ public:
         image_.selectTextFont("9x15");
         image_.textOut(8, 6, title, black);
         const std::array<std::pair<const char*, Rgb>, 3> legend = {
-            {{"ground", kGroundColour}, {"non-ground", kNonGroundColour},
+            {{"ground", kGroundColour},
+             {"non-ground", kNonGroundColour},
              {"outlier", kOutlierColour}}};
         for (std::size_t k = 0; k < legend.size(); ++k) {
             const int y = 28 + 18 * static_cast<int>(k);
@@ -395,7 +410,7 @@ public:
         if (!image_.saveToFile(path)) throw AppError(path + ": cannot write PNG");
     }
 
-private:
+  private:
     int size_;
     double mpp_;
     mrpt::img::CImage image_;
@@ -440,7 +455,7 @@ struct Totals {
 };
 
 class CsvLog {
-public:
+  public:
     explicit CsvLog(const std::string& path) : path_(path) {
         if (path.empty()) return;
         createParentDirectory(path);
@@ -467,7 +482,7 @@ public:
         if (!file_) throw AppError(path_ + ": write error");
     }
 
-private:
+  private:
     std::string path_;
     std::ofstream file_;
 };
@@ -480,21 +495,25 @@ double msSince(Clock::time_point t0) {
 }
 
 class RawlogSegmenter {
-public:
+  public:
     RawlogSegmenter(const Options& options, const travel::Params& params)
-        : options_(options), base_params_(params), label_filter_(options.sensor_label_regex),
+        : options_(options),
+          base_params_(params),
+          label_filter_(options.sensor_label_regex),
           csv_(options.csv) {
         if (!options.png_prefix.empty()) {
             createParentDirectory(options.png_prefix + "_x");
-            birds_eye_ = std::make_unique<BirdsEyeView>(options.png_size,
-                                                        options.png_metres_per_pixel);
+            birds_eye_ =
+                std::make_unique<BirdsEyeView>(options.png_size, options.png_metres_per_pixel);
         }
     }
 
     /// Processes every selected observation of the record, appending the outputs to `added`.
     void processObservation(const CObservation& obs, long record,
                             std::vector<CObservation::Ptr>& added) {
-        if (!travel_mrpt::isLidarObservation(obs) || isOurOutputLabel(obs.sensorLabel)) return;
+        if (!travel_mrpt::isLidarObservation(obs)) return;
+        if (dynamic_cast<const CObservationPointCloud*>(&obs) && isOurOutputLabel(obs.sensorLabel))
+            return;  // an output of ours (kept when its source label is not selected)
         if (!std::regex_search(obs.sensorLabel, label_filter_)) {
             noteOnce("ignored (does not match --sensor-label): " + obs.sensorLabel);
             return;
@@ -543,7 +562,7 @@ public:
     void startRecord() { pool_.startRecord(); }
     const Totals& totals() const { return totals_; }
 
-private:
+  private:
     struct Sensor {
         std::unique_ptr<travel::Pipeline> pipeline;
         mrpt::poses::CPose3D pose;
@@ -573,8 +592,9 @@ private:
         const std::string stem = options_.png_prefix + suffix;
         const auto total = std::max<std::size_t>(1, cloud_.size());
         char title[256];
-        std::snprintf(title, sizeof title, "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%",
-                      frame, obs.sensorLabel.c_str(), cloud_.size(),
+        std::snprintf(title, sizeof title,
+                      "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%", frame,
+                      obs.sensorLabel.c_str(), cloud_.size(),
                       100.0 * result_.count(PointClass::Ground) / total,
                       100.0 * result_.count(PointClass::NonGround) / total);
         birds_eye_->save(stem + ".png", aligned, result_.labels, title);
@@ -582,7 +602,7 @@ private:
     }
 
     void noteOnce(const std::string& note) {
-        if (notes_.emplace(note, true).second && !options_.quiet)
+        if (notes_.insert(note).second && !options_.quiet)
             std::cerr << "travel-rawlog: note: " << note << "\n";
     }
 
@@ -592,7 +612,7 @@ private:
     CsvLog csv_;
     std::unique_ptr<BirdsEyeView> birds_eye_;
     std::map<std::string, Sensor> sensors_;
-    std::map<std::string, bool> notes_;
+    std::set<std::string> notes_;
     ClassCloudPool pool_;
     Totals totals_;
     // Reused across frames.
@@ -607,18 +627,18 @@ void printSummary(const Options& o, const Totals& t, long records, double second
     std::printf("travel-rawlog: %s -> %s\n", o.input.c_str(), o.output.c_str());
     std::printf("  records: %ld, LiDAR frames processed: %zu, skipped: %zu, wall time %.2f s\n",
                 records, t.frames, t.skipped, seconds);
-    std::printf("  points: %zu  ground %zu (%.1f %%)  non-ground %zu (%.1f %%)  outlier %zu "
-                "(%.1f %%)  invalid %zu (%.1f %%)\n",
-                t.points, count(PointClass::Ground), pct(count(PointClass::Ground)),
-                count(PointClass::NonGround), pct(count(PointClass::NonGround)),
-                count(PointClass::Outlier), pct(count(PointClass::Outlier)),
-                count(PointClass::Invalid), pct(count(PointClass::Invalid)));
+    std::printf(
+        "  points: %zu  ground %zu (%.1f %%)  non-ground %zu (%.1f %%)  outlier %zu "
+        "(%.1f %%)  invalid %zu (%.1f %%)\n",
+        t.points, count(PointClass::Ground), pct(count(PointClass::Ground)),
+        count(PointClass::NonGround), pct(count(PointClass::NonGround)), count(PointClass::Outlier),
+        pct(count(PointClass::Outlier)), count(PointClass::Invalid),
+        pct(count(PointClass::Invalid)));
     if (t.frames) {
-        std::printf("  ms per frame: TRAVEL median %.2f max %.2f; conversion median %.2f max %.2f\n",
-                    median(t.process_ms),
-                    *std::max_element(t.process_ms.begin(), t.process_ms.end()),
-                    median(t.convert_ms),
-                    *std::max_element(t.convert_ms.begin(), t.convert_ms.end()));
+        std::printf(
+            "  ms per frame: TRAVEL median %.2f max %.2f; conversion median %.2f max %.2f\n",
+            median(t.process_ms), *std::max_element(t.process_ms.begin(), t.process_ms.end()),
+            median(t.convert_ms), *std::max_element(t.convert_ms.begin(), t.convert_ms.end()));
     }
     if (!o.csv.empty()) std::printf("  per-frame CSV: %s\n", o.csv.c_str());
     if (!o.png_prefix.empty())
@@ -686,13 +706,15 @@ int run(int argc, char** argv) {
     out_file.close();
     std::error_code ec;
     fs::rename(partial, options.output, ec);
-    if (ec) throw AppError(options.output + ": cannot rename from " + partial + ": " + ec.message());
+    if (ec)
+        throw AppError(options.output + ": cannot rename from " + partial + ": " + ec.message());
 
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (progress_shown) std::fprintf(stderr, "\n");
     if (!options.quiet) printSummary(options, segmenter.totals(), reader.index(), seconds);
     if (segmenter.totals().frames == 0)
-        throw AppError(options.input + ": no LiDAR observation processed (check --sensor-label; "
+        throw AppError(options.input +
+                       ": no LiDAR observation processed (check --sensor-label; "
                        "the output rawlog is a plain copy)");
     return 0;
 }

@@ -28,21 +28,13 @@ fi
 }
 
 mkdir -p "$OUT_DIR"
-# Settings for this scan (the vlp16 preset is for a generic low robot):
-#   sensor_height=2.24  the floor is 2.24 m below the sensor: a RANSAC plane fit of the points
-#                       below z=-1.5 m within 25 m gives z = 0.019x - 0.018y - 2.24 (1.5 deg
-#                       tilt), and the lowest beam (-15 deg) draws its ground ring at 8.4 m
-#                       = 2.24 / tan(15 deg). (sensorPose.z is only 0.09 m: the robot origin of
-#                       this rawlog is not on the floor.)
-#   tgf_resolution=4, seed_search_cells=3
-#                       at that height no beam reaches the ground closer than 8.4 m, so the
-#                       search for the first ground node must look up to ~12 m from the sensor.
+# Settings for this scan (floor height, cell size) and why: share/configs/mrpt_sample_vlp16.yaml
 cmd=(build/apps/travel-rawlog
   -i "$dataset"
-  -o "$OUT_DIR/${NAME}_travel.rawlog"
-  --png "$OUT_DIR/$NAME"
-  --csv "$OUT_DIR/$NAME.csv"
-  --preset vlp16 --set sensor_height=2.24 --set tgf_resolution=4 --set seed_search_cells=3)
+  -o "travel-out/${NAME}_travel.rawlog"
+  --png "travel-out/$NAME"
+  --csv "travel-out/$NAME.csv"
+  --config share/configs/mrpt_sample_vlp16.yaml)
 echo "[run-demo] running: ${cmd[*]}"
 "${cmd[@]}"
 

@@ -3,6 +3,7 @@
 // Scores of a segmentation against the synthetic LiDAR's exact ground truth (tests only).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -23,11 +24,14 @@ struct SceneScores {
     }
 };
 
-/// No-return points are not scored.
-inline SceneScores scoreScene(const sim::GroundTruth& gt, const std::vector<PointClass>& labels) {
+/// No-return points are not scored; with a cloud and max_range, neither are points farther than
+/// max_range from the sensor (to compare scans whose far coverage differs).
+inline SceneScores scoreScene(const sim::GroundTruth& gt, const std::vector<PointClass>& labels,
+                              const PointCloud* cloud = nullptr, float max_range = 0.f) {
     SceneScores s;
     for (std::size_t i = 0; i < gt.size(); ++i) {
         if (gt.cls[i] == sim::NoReturn) continue;
+        if (cloud && std::hypot(cloud->x[i], cloud->y[i], cloud->z[i]) > max_range) continue;
         const bool truth = gt.cls[i] == sim::Ground;
         const bool pred = labels[i] == PointClass::Ground;
         if (truth && pred) ++s.tp;

@@ -22,9 +22,11 @@ namespace {
 constexpr double kSensorHeight = 1.73;
 
 sim::LidarModel testLidar() {
-    sim::LidarModel model = sim::LidarModel::hdl64(1000);
+    sim::LidarModel model = sim::LidarModel::hdl64();
     model.range_noise_sigma = 0.01;
     model.seed = 7;
+    // The configured range (Params::max_range): farther points are correctly Invalid.
+    model.max_range = Params{}.max_range;
     return model;
 }
 
@@ -139,16 +141,41 @@ TEST(Objects, OneMetreWallIsNotGround) {
     EXPECT_LE(double(ground) / double(points), 0.15);
 }
 
+// Mean tilt [deg] of the traversable nodes' refitted planes: 0 for a level terrain model.
+double meanTraversableTiltDeg(const TerrainModel& model) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const TriNode& node : model.nodes) {
+        if (!node.traversable) continue;
+        sum += std::acos(std::min(1.0f, node.refit_normal.z())) * 180.0 / M_PI;
+        ++n;
+    }
+    return n ? sum / double(n) : 90.0;
+}
+
 TEST(Alignment, TiltedMountWithAttitudeMatchesLevel) {
-    const sim::Scene scene = sim::mixed();
-    const SceneRun level = segment(scene, testParams());
-    const SceneRun tilted = segment(scene, testParams(), 8.0, -6.0, true);
-    const SceneRun unaligned = segment(scene, testParams(), 8.0, -6.0, false);
+    // Flat ground seen from a mount rolled 8 deg and pitched -6 deg: with the attitude the
+    // terrain model is level and the scores match the level mount's; without it the model
+    // is tilted by the mount (TRAVEL's local planes still find most ground, so the scores
+    // alone would not show the difference). Scores are compared within 40 m: the tilt
+    // throws one side's rings far out, where both scans' coverage differs.
+    const sim::Scene flat = sim::flatGround();
+    const SceneRun level = segment(flat, testParams());
+    const SceneRun tilted = segment(flat, testParams(), 8.0, -6.0, true);
+    const SceneRun unaligned = segment(flat, testParams(), 8.0, -6.0, false);
+    auto near = [](const SceneRun& r) {
+        return test::scoreScene(r.scan.gt, r.result.labels, &r.scan.cloud, 40.f);
+    };
     EXPECT_GE(tilted.scores.f1(), 0.97);
-    EXPECT_NEAR(tilted.scores.f1(), level.scores.f1(), 0.01);
+    EXPECT_NEAR(near(tilted).f1(), near(level).f1(), 0.01);
     EXPECT_EQ(tilted.scores.high_obstacle_as_ground, 0u);
-    // Without the attitude the same scan is measurably worse: the alignment is doing the work.
-    EXPECT_LT(unaligned.scores.f1(), tilted.scores.f1() - 0.02);
+    EXPECT_LT(meanTraversableTiltDeg(tilted.result.terrain), 1.0);
+    EXPECT_GT(meanTraversableTiltDeg(unaligned.result.terrain), 5.0);
+    // On the mixed scene (ramp, kerb, objects) the aligned tilted run stays close to level.
+    const SceneRun mixed_level = segment(sim::mixed(), testParams());
+    const SceneRun mixed_tilted = segment(sim::mixed(), testParams(), 8.0, -6.0, true);
+    EXPECT_NEAR(near(mixed_tilted).f1(), near(mixed_level).f1(), 0.01);
+    EXPECT_EQ(mixed_tilted.scores.high_obstacle_as_ground, 0u);
 }
 
 TEST(Alignment, GravityVectorEqualsAttitude) {
@@ -164,7 +191,7 @@ TEST(Alignment, GravityVectorEqualsAttitude) {
     pipeline.process(scan.cloud, by_gravity, b);
     std::size_t differ = 0;
     for (std::size_t i = 0; i < a.labels.size(); ++i) differ += a.labels[i] != b.labels[i];
-    EXPECT_LE(differ, a.labels.size() / 1000) << "float rounding only";
+    EXPECT_LE(differ, a.labels.size() / 10000) << "float rounding only";
 }
 
 TEST(Invalid, InvalidPointsAreLabelledInvalidAndChangeNothingElse) {
@@ -259,12 +286,20 @@ TEST(TerrainModel, FlatGroundModelIsLevelAtSensorHeight) {
     const TerrainModel& model = run.result.terrain;
     ASSERT_GE(model.seed_node, 0);
     std::size_t traversable = 0;
-    for (const TriNode& node : model.nodes) {
+    TriGridField field;
+    field.configure(testParams());
+    for (int id = 0; id < static_cast<int>(model.nodes.size()); ++id) {
+        const TriNode& node = model.nodes[id];
         if (!node.traversable) continue;
         ++traversable;
-        EXPECT_GT(node.refit_normal.z(), 0.999f);
-        for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(node.corner_z[k], -kSensorHeight, 0.05) << "corner height";
+        for (int k = 0; k < 3; ++k) {
+            // Corners inside the blind zone around the sensor (no beam reaches the ground
+            // closer than ~3.7 m, min_range 2.7 m) are extrapolated, not observed: skip them.
+            float x, y;
+            field.vertexXY(field.vertexId(id, k), x, y);
+            if (std::hypot(x, y) < 5.f) continue;
+            EXPECT_NEAR(node.corner_z[k], -kSensorHeight, 0.05) << "corner at " << x << "," << y;
+        }
     }
     EXPECT_GT(traversable, 100u);
 }

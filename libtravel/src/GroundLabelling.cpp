@@ -9,6 +9,9 @@
 // exactly one class: nothing is dropped (the reference drops out-of-range and outlier points).
 #include "travel/GroundLabelling.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace travel {
 
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
@@ -29,9 +32,16 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         if (!node.traversable || node.count == 0) continue;
         const float s0 = node.refit_normal.x(), s1 = node.refit_normal.y();
         const float s2 = node.refit_normal.z(), d = node.refit_d;
+        // The node's own plane, when the search verified it: a point on either surface is
+        // ground. Its signed distance is folded in as min(e, e_own) unless e_own says outlier.
+        const bool own = params.label_with_node_plane && node.reached;
+        const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z();
+        const float od = own ? node.d : std::numeric_limits<float>::infinity();
         const uint32_t end = node.begin + node.count;
         for (uint32_t i = node.begin; i < end; ++i) {
-            const float e = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
+            const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
+            const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
+            const float e = e_own >= outlier_dist ? std::min(e_refit, e_own) : e_refit;
             labels[order[i]] = e < outlier_dist  ? PointClass::Outlier
                                : e < ground_dist ? PointClass::Ground
                                                  : PointClass::NonGround;

@@ -68,7 +68,7 @@ struct Plane {
     double d_local = 0;                               // s.p_local + d_local = 0
 };
 
-bool fitPlane(const Moments& m, Plane& plane) {
+bool fitPlane(double line_node_ratio, const Moments& m, Plane& plane) {
     if (m.n < 3) return false;
     const double inv = 1.0 / m.n;
     const Eigen::Vector3d mean(m.sx * inv, m.sy * inv, m.sz * inv);
@@ -82,9 +82,18 @@ bool fitPlane(const Moments& m, Plane& plane) {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(cov);  // closed form for 3x3: much faster than the iterative solver
     Eigen::Vector3d s = solver.eigenvectors().col(0);
+    const Eigen::Vector3d ev = solver.eigenvalues();  // ascending
+    if (ev(1) < line_node_ratio * ev(2)) {
+        // Points along a line (one ring crossing the node): the PCA normal can spin freely
+        // about the line, so noise decides its tilt. The line fixes the slope along itself
+        // only; assume no cross slope: the normal closest to vertical that is perpendicular
+        // to the line.
+        const Eigen::Vector3d line = solver.eigenvectors().col(2);
+        const Eigen::Vector3d level = Eigen::Vector3d::UnitZ() - line.z() * line;
+        if (level.norm() > 1e-6) s = level.normalized();
+    }
     if (!s.allFinite()) return false;
     if (s.z() < 0) s = -s;
-    const Eigen::Vector3d ev = solver.eigenvalues();  // ascending
     plane.normal = s;
     plane.mean_local = mean;
     plane.d_local = -s.dot(mean);
@@ -140,7 +149,7 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
         const float seed_lo = -static_cast<float>(params.seed_margin_below_lpr);
         const float seed_hi = static_cast<float>(params.seed_margin_above_lpr);
         Plane plane;
-        bool ok = fitPlane(accumulate(x, y, z, node.count, origin,
+        bool ok = fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin,
                                       [=](float, float, float pz) {
                                           return pz >= seed_lo && pz < seed_hi;
                                       }),
@@ -151,7 +160,7 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
             const float cz = static_cast<float>(plane.normal.z());
             const float limit = static_cast<float>(params.plane_inlier_dist - plane.d_local);
             Plane next;
-            if (!fitPlane(accumulate(x, y, z, node.count, origin,
+            if (!fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin,
                                      [=](float px, float py, float pz) {
                                          return a * px + b * py + cz * pz < limit;
                                      }),

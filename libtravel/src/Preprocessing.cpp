@@ -31,10 +31,15 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
             R_level = withoutYaw(*input.vehicle_attitude);
         } else if (input.gravity_in_sensor && input.gravity_in_sensor->norm() > 0 &&
                    input.gravity_in_sensor->allFinite()) {
-            // The smallest rotation taking measured gravity onto -z has a horizontal axis,
-            // hence no yaw: exactly the roll/pitch correction.
-            const Eigen::Vector3d g_vehicle = R_mount * input.gravity_in_sensor->normalized();
-            R_level = Eigen::Quaterniond::FromTwoVectors(g_vehicle, -Eigen::Vector3d::UnitZ())
+            // Roll and pitch (ZYX convention, as for vehicle_attitude) that map the measured
+            // gravity onto -z: for R = Ry(pitch) Rx(roll), R^T (0,0,-1) is
+            // (sin p, -sin r cos p, -cos r cos p). (The minimal rotation between the two
+            // vectors would differ from this by a small yaw and rotate the grid.)
+            const Eigen::Vector3d g = R_mount * input.gravity_in_sensor->normalized();
+            const double pitch = std::atan2(g.x(), std::hypot(g.y(), g.z()));
+            const double roll = std::atan2(-g.y(), -g.z());
+            R_level = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
                           .toRotationMatrix();
         }
     }

@@ -3,8 +3,8 @@
 // Breadth-first traversable graph search (B-TGS, paper Sec. III-C).
 //
 // Decisions where the paper and the reference code leave room (travel-algorithm.md Sec. 3):
-// * Start node: the terrain node of highest weight within `seed_search_cells` cells of the
-//   sensor cell whose mean lies within `seed_height_tolerance` of -sensor_height. If there is
+// * Start node: the terrain node of highest weight whose mean is within seed_search_radius
+//   (xy) of the sensor and within seed_height_tolerance of -sensor_height. If there is
 //   none, nothing is traversable: a scan without plausible ground under the sensor (e.g. every
 //   point above it) must not produce ground.
 // * Edge test (eq. 2) is symmetric, and a node is reached if ANY reached neighbour has a
@@ -73,24 +73,16 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     model.seed_node = -1;
     model.num_components = 0;
     reached_list_.clear();
-    const int n = field.cellsPerSide();
-    const int sensor_cell = field.nodeOf(0.f, 0.f) / 4;
-    const int sx = sensor_cell % n, sy = sensor_cell / n;
-    const int reach = params.seed_search_cells;
-
     // Start node (see the decisions above).
+    const float radius2 = static_cast<float>(params.seed_search_radius * params.seed_search_radius);
     int seed = -1;
-    for (int iy = std::max(0, sy - reach); iy <= std::min(n - 1, sy + reach); ++iy) {
-        for (int ix = std::max(0, sx - reach); ix <= std::min(n - 1, sx + reach); ++ix) {
-            for (int k = 0; k < 4; ++k) {
-                const int id = 4 * (iy * n + ix) + k;
-                const TriNode& node = model.nodes[id];
-                if (node.node_class != NodeClass::Terrain) continue;
-                if (std::fabs(node.mean.z() + params.sensor_height) > params.seed_height_tolerance)
-                    continue;
-                if (seed < 0 || node.weight > model.nodes[seed].weight) seed = id;
-            }
-        }
+    for (int id = 0; id < static_cast<int>(model.nodes.size()); ++id) {
+        const TriNode& node = model.nodes[id];
+        if (node.node_class != NodeClass::Terrain) continue;
+        if (node.mean.head<2>().squaredNorm() > radius2) continue;
+        if (std::fabs(node.mean.z() + params.sensor_height) > params.seed_height_tolerance)
+            continue;
+        if (seed < 0 || node.weight > model.nodes[seed].weight) seed = id;
     }
     if (seed < 0) return;
     model.seed_node = seed;

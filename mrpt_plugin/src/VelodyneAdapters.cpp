@@ -46,10 +46,13 @@ void makeRingTable(const VelodyneCalibration& calib, RingTable& ring_of_laser) {
 
 /// Streams MRPT's decoded points straight into the travel cloud (no intermediate copy).
 class TravelCloudSink final : public CObservationVelodyneScan::PointCloudStorageWrapper {
-public:
-    TravelCloudSink(travel::PointCloud& out, const RingTable& ring_of_laser,
-                    std::size_t num_lasers, mrpt::system::TTimeStamp t0, bool with_time)
-        : out_(out), ring_of_laser_(ring_of_laser), num_lasers_(num_lasers), t0_(t0),
+  public:
+    TravelCloudSink(travel::PointCloud& out, const RingTable& ring_of_laser, std::size_t num_lasers,
+                    mrpt::system::TTimeStamp t0, bool with_time)
+        : out_(out),
+          ring_of_laser_(ring_of_laser),
+          num_lasers_(num_lasers),
+          t0_(t0),
           with_time_(with_time) {}
 
     void reserve(std::size_t n) override {
@@ -58,9 +61,8 @@ public:
         if (with_time_) out_.time.reserve(n);
     }
 
-    void add_point(float x, float y, float z, uint8_t intensity,
-                   const mrpt::system::TTimeStamp& t, const float /*azimuth*/,
-                   uint16_t laser_id) override {
+    void add_point(float x, float y, float z, uint8_t intensity, const mrpt::system::TTimeStamp& t,
+                   const float /*azimuth*/, uint16_t laser_id) override {
         out_.push_back(x, y, z, intensity);
         // Ids beyond the calibration cannot come from a consistent scan; clamp, never overrun.
         out_.ring.push_back(ring_of_laser_[std::min<std::size_t>(laser_id, num_lasers_ - 1)]);
@@ -68,7 +70,7 @@ public:
             out_.time.push_back(static_cast<float>(mrpt::system::timeDifference(t0_, t)));
     }
 
-private:
+  private:
     travel::PointCloud& out_;
     const RingTable& ring_of_laser_;
     std::size_t num_lasers_;
@@ -91,7 +93,7 @@ std::string normalisedModel(const std::string& model) {
 /// k * this (in columns) for MRPT's fromVelodyne() layout, from the Velodyne timing tables:
 /// VLP-16 fires a laser every 2.304 us and stores one firing (55.296 us) per column;
 /// HDL-32E fires every 1.152 us and stores one 46.08 us firing cycle per column.
-const VelodyneCalibration* calibrationFor(const CObservationRotatingScan& obs,
+const VelodyneCalibration* calibrationFor(const CObservationRotatingScan& obs, std::size_t rows,
                                           double& laser_delay_in_columns) {
     const std::string model = normalisedModel(obs.lidarModel);
     const char* name = nullptr;
@@ -101,14 +103,17 @@ const VelodyneCalibration* calibrationFor(const CObservationRotatingScan& obs,
         name = "HDL32";
     else if (model.rfind("HDL64", 0) == 0)
         name = "HDL64";
-    else if (obs.rowCount == 16)
+    else if (rows == 16)
         name = "VLP16";
-    else if (obs.rowCount == 32)
+    else if (rows == 32)
         name = "HDL32";
     if (!name) return nullptr;
-    laser_delay_in_columns = name[0] == 'V' ? 2.304 / 55.296 : name[3] == '3' ? 1.152 / 46.08 : 0;
-    const VelodyneCalibration& calib = VelodyneCalibration::LoadDefaultCalibration(name);
-    if (calib.empty() || calib.laser_corrections.size() != obs.rowCount) return nullptr;
+    const std::string chosen = name;
+    laser_delay_in_columns = chosen == "VLP16"   ? 2.304 / 55.296
+                             : chosen == "HDL32" ? 1.152 / 46.08
+                                                 : 0.0;
+    const VelodyneCalibration& calib = VelodyneCalibration::LoadDefaultCalibration(chosen);
+    if (calib.empty() || calib.laser_corrections.size() != rows) return nullptr;
     return &calib;
 }
 
@@ -147,15 +152,16 @@ bool rotatingScanToTravelCloud(const CObservationRotatingScan& obs, travel::Poin
     if (rows == 0 || cols == 0) return fail(why_not, "rotating scan with an empty range image");
     if (rows > kMaxLasers) return fail(why_not, "rotating scan with > 256 rows");
     double laser_delay_in_columns = 0;
-    const VelodyneCalibration* calib = calibrationFor(obs, laser_delay_in_columns);
+    const VelodyneCalibration* calib = calibrationFor(obs, rows, laser_delay_in_columns);
     if (!calib)
         return fail(why_not,
                     "rotating scan: no Velodyne calibration for its lidarModel/row count "
                     "(MRPT 2.5 has VLP-16 and HDL-32E)");
 
-    // MRPT 2.5's fromVelodyne() sets columnCount rowCount times too large and fills only the
-    // first columns. A real scan has data in its last 1/rows of columns, so data ending before
-    // cols/rows means the quirk: the true column count (used for azimuth and time) is cols/rows.
+    // MRPT 2.5's fromVelodyne() makes columnCount rowCount times too large and fills only the
+    // first 1/rowCount of the columns (VLP-16: every other one, one firing per column). A real
+    // scan has returns in its last columns too, so data ending before cols/rows means the quirk:
+    // the true column count (which sets the azimuth and time of a column) is then cols/rows.
     std::size_t last_used = 0;
     bool any = false;
     for (std::size_t c = cols; c-- > 0 && !any;)

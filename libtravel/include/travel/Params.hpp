@@ -41,21 +41,28 @@ namespace travel {
     /* ---- Node-wise terrain model (Sec. III-B) ---- */                                          \
     X(int, lpr_num_points, 5, "", 1, 1000,                                                        \
       "Number of lowest points whose mean z is the node's lowest point representative (LPR)")     \
-    X(double, seed_margin_above_lpr, 0.5, "m", 0.0, 10.0,                                         \
-      "Initial plane seeds: z < LPR + this")                                                      \
+    X(double, seed_margin_above_lpr, 0.2, "m", 0.0, 10.0,                                         \
+      "Initial plane seeds: z < LPR + this (reference 0.5; 0.2 keeps the foot of steep slopes "  \
+      "and kerbs out of the ground plane, and scores higher on SemanticKITTI)")                  \
     X(double, seed_margin_below_lpr, 0.3, "m", 0.0, 10.0,                                         \
       "Initial plane seeds: z >= LPR - this")                                                     \
-    X(double, plane_inlier_dist, 0.125, "m", 0.0, 10.0,                                           \
-      "PCA refit: points with signed distance to the plane below this are re-selected")           \
+    X(double, plane_inlier_dist, 0.05, "m", 0.0, 10.0,                                            \
+      "PCA refit: points with signed distance to the plane below this are re-selected "          \
+      "(reference 0.125; 0.05 keeps the bases of objects from lifting the plane)")               \
     X(int, plane_fit_iterations, 3, "", 1, 100, "Number of PCA fits per node")                    \
-    X(int, node_min_points, 10, "", 3, 1000000,                                                   \
-      "Nodes with fewer points are 'unknown' (no terrain model)")                                 \
+    X(int, node_min_points, 5, "", 3, 1000000,                                                    \
+      "Nodes with fewer points are 'unknown' (no terrain model). Reference 10; 5 keeps far "     \
+      "nodes crossed by a single ring")                                                          \
+    X(double, line_node_ratio, 0.01, "", 0.0, 1.0,                                               \
+      "A node whose PCA has l2 < this * l1 is a line (typically one ring crossing it): its "      \
+      "normal is taken perpendicular to the line and as level as possible")                      \
     X(double, max_slope_deg, 25.0, "deg", 0.0, 90.0,                                              \
       "theta: a node is terrain when its normal is within this angle of vertical (paper 30, "    \
       "reference code 20: 25 keeps 20-degree ramps and rejects 30-degree ones with margin)")     \
     /* ---- Breadth-first traversable graph search (Sec. III-C, eq. 2) ---- */                    \
-    X(int, seed_search_cells, 2, "", 0, 1000,                                                     \
-      "The search starts from the best terrain node within this many cells of the sensor cell")   \
+    X(double, seed_search_radius, 10.0, "m", 0.0, 10000.0,                                        \
+      "The search starts from the best terrain node whose mean is within this xy distance of "   \
+      "the sensor (metres, so it does not depend on the cell size)")                             \
     X(double, seed_height_tolerance, 1.0, "m", 0.0, 100.0,                                        \
       "A start node's mean z must be within this of -sensor_height (plausible ground)")           \
     X(double, eps1, 0.03, "rad", 0.0, 3.2,                                                        \
@@ -76,6 +83,9 @@ namespace travel {
     X(double, ground_dist, 0.1, "m", 0.0, 10.0,                                                   \
       "epsilon_3: a point of a traversable node is ground when its signed distance to the "       \
       "refitted plane is below this")                                                            \
+    X(bool, label_with_node_plane, true, "", 0, 1,                                               \
+      "A point of a node the search accepted is also ground when it lies within eps3 of the "   \
+      "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
       "Points more than this below the refitted plane are outliers (below-ground noise)")
 

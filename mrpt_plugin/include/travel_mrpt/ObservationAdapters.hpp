@@ -48,8 +48,8 @@ bool isLidarObservation(const mrpt::obs::CObservation& obs);
 
 /// Decodes the raw packets with the observation's own calibration. Ring = rank of the laser's
 /// verticalCorrection (laser ids are in firing order: VLP-16 id 1 is +1 deg, id 2 is -13 deg).
-bool velodyneToTravelCloud(const mrpt::obs::CObservationVelodyneScan& obs,
-                           travel::PointCloud& out, std::string* why_not = nullptr);
+bool velodyneToTravelCloud(const mrpt::obs::CObservationVelodyneScan& obs, travel::PointCloud& out,
+                           std::string* why_not = nullptr);
 
 /// Rebuilds XYZ from the range image with the default Velodyne calibration named by
 /// `lidarModel` (VLP-16, HDL-32E; or by row count when the model is unknown): MRPT 2.5 stores
