@@ -57,13 +57,12 @@ int run(int argc, char** argv) {
         "as ground, unlabeled points predicted ground count as TP) and protocol B (Patchwork++: "
         "classes 0, 1, 70 not scored).",
         ' ', "0.1");
-    TCLAP::ValueArg<std::string> scans("", "scans", "Directory of KITTI .bin scans (float32 x y z i)",
-                                       true, "", "DIR", cmd);
+    TCLAP::ValueArg<std::string> scans(
+        "", "scans", "Directory of KITTI .bin scans (float32 x y z i)", true, "", "DIR", cmd);
     TCLAP::ValueArg<std::string> out("", "out", "Output directory for .label files (created)", true,
                                      "", "DIR", cmd);
-    TCLAP::ValueArg<std::string> labels("", "labels",
-                                        "SemanticKITTI labels directory: enables the metrics",
-                                        false, "", "DIR", cmd);
+    TCLAP::ValueArg<std::string> labels(
+        "", "labels", "SemanticKITTI labels directory: enables the metrics", false, "", "DIR", cmd);
     TCLAP::ValueArg<std::string> preset("", "preset",
                                         "Sensor preset from share/presets (hdl64, hdl32, vlp16, "
                                         "os128)",
@@ -71,8 +70,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> config("", "config",
                                         "YAML or ini parameter file applied after the preset",
                                         false, "", "FILE", cmd);
-    TCLAP::MultiArg<std::string> set("", "set", "Override one parameter, e.g. --set tgf_resolution=4",
-                                     false, "KEY=VALUE", cmd);
+    TCLAP::MultiArg<std::string> set(
+        "", "set", "Override one parameter, e.g. --set tgf_resolution=4", false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame metrics and timings to this CSV",
                                      false, "", "FILE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Process at most this many scans", false, -1,
@@ -89,11 +88,14 @@ int run(int argc, char** argv) {
     }
     std::vector<std::string> files = travel::listFiles(scans.getValue(), ".bin");
     if (files.empty()) throw travel::InputError("no .bin files in " + scans.getValue());
-    if (max_frames.getValue() >= 0 && files.size() > static_cast<std::size_t>(max_frames.getValue()))
+    if (max_frames.getValue() >= 0 &&
+        files.size() > static_cast<std::size_t>(max_frames.getValue()))
         files.resize(max_frames.getValue());
     std::error_code ec;
     fs::create_directories(out.getValue(), ec);
-    if (ec) throw travel::InputError("cannot create output directory " + out.getValue() + ": " + ec.message());
+    if (ec)
+        throw travel::InputError("cannot create output directory " + out.getValue() + ": " +
+                                 ec.message());
 
     std::ofstream csv_out;
     if (csv.isSet()) {
@@ -112,14 +114,15 @@ int run(int argc, char** argv) {
     const travel::GroundProtocol protocols[2] = {travel::GroundProtocol::A,
                                                  travel::GroundProtocol::B};
     std::vector<double> f1[2], precision[2], recall[2], accuracy[2];
-    StageSeries stages[] = {{"preprocess", {}}, {"embedding", {}},    {"node_fitting", {}},
-                            {"graph_search", {}}, {"ttmf", {}},        {"labelling", {}},
+    StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}}, {"node_fitting", {}},
+                            {"graph_search", {}}, {"ttmf", {}},      {"labelling", {}},
                             {"ground_total", {}}};
     std::size_t unlabelled_frames = 0;
     const bool verbose = !quiet.getValue();
     if (verbose && labels.isSet())
         std::printf("%-10s %8s | %s | %s\n", "frame", "points",
-                    "protocol A   P      R      F1     Acc", "protocol B   P      R      F1     Acc");
+                    "protocol A   P      R      F1     Acc",
+                    "protocol B   P      R      F1     Acc");
 
     for (std::size_t f = 0; f < files.size(); ++f) {
         const fs::path bin(files[f]);
@@ -133,9 +136,8 @@ int run(int argc, char** argv) {
         travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
 
         const travel::StageTimings& t = result.timings;
-        const double stage_ms[] = {t.preprocess, t.embedding,
-                                   t.node_fitting, t.graph_search, t.ttmf, t.labelling,
-                                   t.ground_total};
+        const double stage_ms[] = {t.preprocess, t.embedding, t.node_fitting, t.graph_search,
+                                   t.ttmf,       t.labelling, t.ground_total};
         for (int s = 0; s < 7; ++s) stages[s].ms.push_back(stage_ms[s]);
 
         travel::GroundScores scores[2]{};
@@ -159,19 +161,21 @@ int run(int argc, char** argv) {
             }
         }
         if (verbose && scored) {
-            std::printf("%-10s %8zu |            %6.2f %6.2f %6.2f %6.2f |            %6.2f %6.2f "
-                        "%6.2f %6.2f\n",
-                        stem.c_str(), cloud.size(), scores[0].precision, scores[0].recall,
-                        scores[0].f1, scores[0].accuracy, scores[1].precision, scores[1].recall,
-                        scores[1].f1, scores[1].accuracy);
+            std::printf(
+                "%-10s %8zu |            %6.2f %6.2f %6.2f %6.2f |            %6.2f %6.2f "
+                "%6.2f %6.2f\n",
+                stem.c_str(), cloud.size(), scores[0].precision, scores[0].recall, scores[0].f1,
+                scores[0].accuracy, scores[1].precision, scores[1].recall, scores[1].f1,
+                scores[1].accuracy);
         } else if (verbose) {
             std::fprintf(stderr, "\r[%zu/%zu] %s: %zu points, %zu ground, %.2f ms   ", f + 1,
                          files.size(), stem.c_str(), cloud.size(),
                          result.count(travel::PointClass::Ground), t.ground_total);
         }
         if (csv_out) {
-            csv_out << stem << ',' << cloud.size() << ',' << result.count(travel::PointClass::Invalid)
-                    << ',' << result.count(travel::PointClass::Ground) << ','
+            csv_out << stem << ',' << cloud.size() << ','
+                    << result.count(travel::PointClass::Invalid) << ','
+                    << result.count(travel::PointClass::Ground) << ','
                     << result.count(travel::PointClass::NonGround) << ','
                     << result.count(travel::PointClass::Outlier);
             for (int p = 0; p < 2; ++p) {
@@ -196,10 +200,11 @@ int run(int argc, char** argv) {
         for (int p = 0; p < 2; ++p) {
             const auto P = travel::meanStd(precision[p]), R = travel::meanStd(recall[p]);
             const auto F = travel::meanStd(f1[p]), A = travel::meanStd(accuracy[p]);
-            std::printf("Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
-                        "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
-                        travel::protocolName(protocols[p]), F.n, P.mean, P.std, R.mean, R.std,
-                        F.mean, F.std, A.mean, A.std);
+            std::printf(
+                "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
+                "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
+                travel::protocolName(protocols[p]), F.n, P.mean, P.std, R.mean, R.std, F.mean,
+                F.std, A.mean, A.std);
         }
     }
     std::printf("Milliseconds per frame (single thread):\n");

@@ -3,10 +3,10 @@
 // Unit tests of the building blocks: tri-grid geometry, pre-processing, the edge test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
-#include <algorithm>
 
 #include "travel/Errors.hpp"
 #include "travel/Pipeline.hpp"
@@ -79,13 +79,13 @@ TEST(Preprocessing, InvalidPointsAreFlagged) {
     PointCloud cloud;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    cloud.push_back(10, 0, -1);     // valid
-    cloud.push_back(nan, 0, 0);     // NaN
-    cloud.push_back(0, inf, 0);     // inf
-    cloud.push_back(0, 0, 0);       // no return
-    cloud.push_back(0.5f, 0, 0);    // too close
-    cloud.push_back(60, 0, 0);      // too far
-    cloud.push_back(1e30f, 0, 0);   // overflows to inf when squared
+    cloud.push_back(10, 0, -1);    // valid
+    cloud.push_back(nan, 0, 0);    // NaN
+    cloud.push_back(0, inf, 0);    // inf
+    cloud.push_back(0, 0, 0);      // no return
+    cloud.push_back(0.5f, 0, 0);   // too close
+    cloud.push_back(60, 0, 0);     // too far
+    cloud.push_back(1e30f, 0, 0);  // overflows to inf when squared
     AlignedCloud out;
     preprocess(cloud, p, {}, out);
     EXPECT_EQ(out.num_valid, 1u);
@@ -124,7 +124,8 @@ TEST(Preprocessing, DeskewUndoesConstantVelocityMotion) {
     PointCloud cloud;
     for (int k = 0; k < 10; ++k) {
         const double t = 0.01 * k;
-        const Eigen::Matrix3d R = Eigen::AngleAxisd(w.norm() * t, w.normalized()).toRotationMatrix();
+        const Eigen::Matrix3d R =
+            Eigen::AngleAxisd(w.norm() * t, w.normalized()).toRotationMatrix();
         const Eigen::Vector3d seen = R.transpose() * (world - v * t);  // pose at t: (R, v t)
         cloud.push_back(seen.x(), seen.y(), seen.z());
         cloud.time.push_back(static_cast<float>(t));
@@ -158,7 +159,7 @@ TEST(GraphSearch, EdgeTestAcceptsFlatRejectsKerbAndIsSymmetric) {
     const Eigen::Vector3f up(0, 0, 1);
     const TriNode a = planeNode({0, 0, -1.7f}, up);
     const TriNode flat = planeNode({4, 0, -1.7f}, up);
-    const TriNode kerb = planeNode({4, 0, -1.55f}, up);     // 15 cm higher, 4 m away
+    const TriNode kerb = planeNode({4, 0, -1.55f}, up);             // 15 cm higher, 4 m away
     const TriNode tilted = planeNode({4, 0, -1.7f}, {0.5f, 0, 1});  // normals 27 deg apart
     EXPECT_TRUE(isTraversableEdge(a, flat, p));
     EXPECT_FALSE(isTraversableEdge(a, kerb, p));

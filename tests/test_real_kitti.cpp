@@ -37,8 +37,8 @@ TEST(RealKitti, GroundProtocolBMeetsTheTargets) {
     std::vector<double> f1[2], precision[2];
     for (int i = 0; i < 3; ++i) {
         readKittiBin((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud);
-        const std::vector<uint32_t> gt =
-            readLabelFile((kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
+        const std::vector<uint32_t> gt = readLabelFile(
+            (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
         pipeline.process(cloud, {}, result);
         ASSERT_EQ(result.labels.size(), cloud.size()) << "no point may be dropped";
         int p = 0;

@@ -5,8 +5,8 @@
 // point standing more than 0.3 m above the true ground labelled ground.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <random>
@@ -43,7 +43,7 @@ struct SceneRun {
 };
 
 SceneRun segment(const sim::Scene& scene, const Params& params, double roll_deg = 0,
-            double pitch_deg = 0, bool give_attitude = true) {
+                 double pitch_deg = 0, bool give_attitude = true) {
     SceneRun run;
     const Eigen::Isometry3d pose =
         sim::sensorPoseAt(scene, 0, 0, kSensorHeight, roll_deg, pitch_deg, 0);
@@ -64,18 +64,22 @@ struct NamedScene {
 class EveryScene : public ::testing::TestWithParam<int> {};
 
 std::vector<NamedScene> allScenes() {
-    return {{"flat", sim::flatGround()},       {"slope10", sim::slope(10)},
-            {"slope20", sim::slope(20)},       {"slope30", sim::slope(30)},
-            {"kerbs_steps", sim::kerbsAndSteps()}, {"bumpy", sim::bumpyTerrain()},
-            {"urban_objects", sim::urbanObjects()}, {"mixed", sim::mixed()}};
+    return {{"flat", sim::flatGround()},
+            {"slope10", sim::slope(10)},
+            {"slope20", sim::slope(20)},
+            {"slope30", sim::slope(30)},
+            {"kerbs_steps", sim::kerbsAndSteps()},
+            {"bumpy", sim::bumpyTerrain()},
+            {"urban_objects", sim::urbanObjects()},
+            {"mixed", sim::mixed()}};
 }
 
 TEST_P(EveryScene, GroundF1AndNoHighObstacleAsGround) {
     const NamedScene s = allScenes()[GetParam()];
     const SceneRun run = segment(s.scene, testParams());
     SCOPED_TRACE(s.name);
-    EXPECT_GE(run.scores.f1(), 0.97) << s.name << " P " << run.scores.precision() << " R "
-                                     << run.scores.recall();
+    EXPECT_GE(run.scores.f1(), 0.97)
+        << s.name << " P " << run.scores.precision() << " R " << run.scores.recall();
     EXPECT_EQ(run.scores.high_obstacle_as_ground, 0u) << s.name;
     // Every input point has exactly one class.
     ASSERT_EQ(run.result.labels.size(), run.scan.cloud.size());
@@ -205,7 +209,7 @@ TEST(Invalid, InvalidPointsAreLabelledInvalidAndChangeNothingElse) {
     // Insert NaN, +-inf, all-zero and out-of-range points at seeded random positions.
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    const float bad[][3] = {{nan, 0, 0}, {0, nan, -1}, {1, 2, nan}, {inf, 0, 0}, {0, -inf, 0},
+    const float bad[][3] = {{nan, 0, 0}, {0, nan, -1}, {1, 2, nan},  {inf, 0, 0},    {0, -inf, 0},
                             {0, 0, 0},   {500, 0, -1}, {0.5f, 0, 0}, {nan, nan, nan}};
     std::mt19937 rng(42);
     PointCloud dirty;

@@ -149,18 +149,19 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
         const float seed_lo = -static_cast<float>(params.seed_margin_below_lpr);
         const float seed_hi = static_cast<float>(params.seed_margin_above_lpr);
         Plane plane;
-        bool ok = fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin,
-                                      [=](float, float, float pz) {
-                                          return pz >= seed_lo && pz < seed_hi;
-                                      }),
-                           plane);
+        bool ok = fitPlane(
+            params.line_node_ratio,
+            accumulate(x, y, z, node.count, origin,
+                       [=](float, float, float pz) { return pz >= seed_lo && pz < seed_hi; }),
+            plane);
         for (int it = 1; ok && it < params.plane_fit_iterations; ++it) {
             const float a = static_cast<float>(plane.normal.x());
             const float b = static_cast<float>(plane.normal.y());
             const float cz = static_cast<float>(plane.normal.z());
             const float limit = static_cast<float>(params.plane_inlier_dist - plane.d_local);
             Plane next;
-            if (!fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin,
+            if (!fitPlane(params.line_node_ratio,
+                          accumulate(x, y, z, node.count, origin,
                                      [=](float px, float py, float pz) {
                                          return a * px + b * py + cz * pz < limit;
                                      }),

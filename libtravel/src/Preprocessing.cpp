@@ -59,7 +59,8 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     const Eigen::Vector3f v = deskew ? input.linear_velocity->cast<float>() : Eigen::Vector3f{};
     const Eigen::Vector3f w = deskew ? input.angular_velocity->cast<float>() : Eigen::Vector3f{};
     const float w_norm = w.norm();
-    const Eigen::Vector3f w_axis = w_norm > 0 ? Eigen::Vector3f(w / w_norm) : Eigen::Vector3f::UnitZ();
+    const Eigen::Vector3f w_axis =
+        w_norm > 0 ? Eigen::Vector3f(w / w_norm) : Eigen::Vector3f::UnitZ();
     const float t_ref = static_cast<float>(input.reference_time);
 
     const float min_r2 = static_cast<float>(params.min_range * params.min_range);

@@ -38,8 +38,8 @@ bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params)
     const Eigen::Vector3f d = b.mean - a.mean;
     const float len = d.norm();
     if (!(len > 0.f)) return true;  // coincident means: nothing separates the nodes
-    const float normal_turn = static_cast<float>(
-        std::sin(std::min(static_cast<double>(len) * params.eps2, M_PI / 2)));
+    const float normal_turn =
+        static_cast<float>(std::sin(std::min(static_cast<double>(len) * params.eps2, M_PI / 2)));
     const float max_offset = len * static_cast<float>(std::sin(params.eps1));
     return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn &&
            std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset;
@@ -95,12 +95,12 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
         if (model.nodes[id].node_class == NodeClass::Terrain && !model.nodes[id].reached)
             candidates_.push_back(id);
     }
-    std::stable_sort(candidates_.begin(), candidates_.end(), [&](int a, int b) {
-        return model.nodes[a].weight > model.nodes[b].weight;
-    });
+    std::stable_sort(candidates_.begin(), candidates_.end(),
+                     [&](int a, int b) { return model.nodes[a].weight > model.nodes[b].weight; });
     const float min_weight =
         static_cast<float>(params.reseed_min_weight_ratio) * model.nodes[seed].weight;
-    const float max_dist2 = static_cast<float>(params.reseed_max_distance * params.reseed_max_distance);
+    const float max_dist2 =
+        static_cast<float>(params.reseed_max_distance * params.reseed_max_distance);
     bool accepted_any = true;
     while (accepted_any && component < std::numeric_limits<int16_t>::max()) {
         accepted_any = false;

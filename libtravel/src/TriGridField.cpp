@@ -70,27 +70,76 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     model.nodes.assign(num_nodes, TriNode{});
 
     // Counting sort by node: pass 1 counts, pass 2 scatters into contiguous slices.
+    // Sensors deliver long runs of points in the same node, so counts and slots are kept in
+    // registers for the current run and flushed when the node changes: a plain ++count[node]
+    // per point would chain every increment through memory. Raw pointers let the compiler keep
+    // everything else in registers too (vector members could alias the written data).
     const std::size_t n = cloud.x.size();
     point_node_.resize(n);
     node_start_.assign(num_nodes + 1, 0);
+    const float* px = cloud.x.data();
+    const float* py = cloud.y.data();
+    const float* pz = cloud.z.data();
+    const uint8_t* valid = cloud.valid.data();
+    int32_t* point_node = point_node_.data();
+    uint32_t* start = node_start_.data();
+    // Node of every point: the same arithmetic as nodeOf(), written as selects so that it
+    // vectorises (with -fno-trapping-math, see CMakeLists). Coordinates are clamped before the
+    // float->int conversion, so NaN and huge values stay defined.
+    const float inv_r = 1.f / resolution_, origin = origin_;
+    const float limit = static_cast<float>(cells_per_side_);
+    const int side = cells_per_side_;
     for (std::size_t i = 0; i < n; ++i) {
-        const int node = cloud.valid[i] ? nodeOf(cloud.x[i], cloud.y[i]) : -1;
-        point_node_[i] = node;
-        if (node >= 0) ++node_start_[node + 1];
+        const float gx = (px[i] - origin) * inv_r, gy = (py[i] - origin) * inv_r;
+        const int inside = (valid[i] != 0 ? 1 : 0) & (gx >= 0.f ? 1 : 0) & (gy >= 0.f ? 1 : 0) &
+                           (gx < limit ? 1 : 0) & (gy < limit ? 1 : 0);
+        const float cx = gx < 0.f ? 0.f : (gx > limit - 0.5f ? limit - 0.5f : gx);
+        const float cy = gy < 0.f ? 0.f : (gy > limit - 0.5f ? limit - 0.5f : gy);
+        const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
+        const float u = cx - (static_cast<float>(ix) + 0.5f);
+        const float v = cy - (static_cast<float>(iy) + 0.5f);
+        const float abs_u = u < 0.f ? -u : u, abs_v = v < 0.f ? -v : v;
+        const int horizontal = abs_u >= abs_v ? 1 : 0;
+        const int negative = horizontal ? (u < 0.f ? 1 : 0) : (v < 0.f ? 1 : 0);
+        const int node = 4 * (iy * side + ix) + (1 - horizontal) + 2 * negative;
+        point_node[i] = inside ? node : -1;
     }
-    for (int k = 0; k < num_nodes; ++k) node_start_[k + 1] += node_start_[k];
-    const uint32_t total = node_start_[num_nodes];
+    int run_node = -1;
+    uint32_t run_length = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int node = point_node[i];
+        if (node != run_node) {
+            if (run_node >= 0) start[run_node + 1] += run_length;
+            run_node = node;
+            run_length = 0;
+        }
+        ++run_length;
+    }
+    if (run_node >= 0) start[run_node + 1] += run_length;
+    for (int k = 0; k < num_nodes; ++k) start[k + 1] += start[k];
+    const uint32_t total = start[num_nodes];
     sx_.resize(total), sy_.resize(total), sz_.resize(total), order_.resize(total);
     for (int k = 0; k < num_nodes; ++k) {
-        model.nodes[k].begin = node_start_[k];
-        model.nodes[k].count = node_start_[k + 1] - node_start_[k];
+        model.nodes[k].begin = start[k];
+        model.nodes[k].count = start[k + 1] - start[k];
     }
+    float* sx = sx_.data();
+    float* sy = sy_.data();
+    float* sz = sz_.data();
+    uint32_t* order = order_.data();
+    run_node = -1;
+    uint32_t slot = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        const int node = point_node_[i];
+        const int node = point_node[i];
         if (node < 0) continue;
-        const uint32_t slot = node_start_[node]++;
-        sx_[slot] = cloud.x[i], sy_[slot] = cloud.y[i], sz_[slot] = cloud.z[i];
-        order_[slot] = static_cast<uint32_t>(i);
+        if (node != run_node) {
+            if (run_node >= 0) start[run_node] = slot;
+            run_node = node;
+            slot = start[node];
+        }
+        sx[slot] = px[i], sy[slot] = py[i], sz[slot] = pz[i];
+        order[slot] = static_cast<uint32_t>(i);
+        ++slot;
     }
 }
 

@@ -79,12 +79,24 @@ void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
     ttmf.run(field, params, model);
     for (auto _ : state) {
         switch (stage) {
-            case kPreprocess: preprocess(cloud, params, {}, aligned); break;
-            case kEmbedding: field.embed(aligned, model); break;
-            case kNodeFitting: fitNodes(field, params, model); break;
-            case kGraphSearch: search.run(field, params, model); break;
-            case kTtmf: ttmf.run(field, params, model); break;
-            case kLabelling: labelPoints(field, aligned, params, model, labels); break;
+            case kPreprocess:
+                preprocess(cloud, params, {}, aligned);
+                break;
+            case kEmbedding:
+                field.embed(aligned, model);
+                break;
+            case kNodeFitting:
+                fitNodes(field, params, model);
+                break;
+            case kGraphSearch:
+                search.run(field, params, model);
+                break;
+            case kTtmf:
+                ttmf.run(field, params, model);
+                break;
+            case kLabelling:
+                labelPoints(field, aligned, params, model, labels);
+                break;
         }
         benchmark::ClobberMemory();
         // Embedding resets the model: refit so the later stages' inputs stay meaningful.

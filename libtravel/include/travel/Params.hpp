@@ -16,7 +16,7 @@ namespace travel {
 #define TRAVEL_PARAM_LIST(X)                                                                      \
     /* ---- Sensor and pre-processing (paper Sec. III-A) ---- */                                  \
     X(double, sensor_height, 1.73, "m", 0.0, 100.0,                                               \
-      "Height of the sensor origin above the ground under the vehicle (h_s)")                    \
+      "Height of the sensor origin above the ground under the vehicle (h_s)")                     \
     X(double, min_range, 2.7, "m", 0.0, 1000.0,                                                   \
       "Points closer than this (3-D range) are invalid: returns from the vehicle itself")         \
     X(double, max_range, 80.0, "m", 0.1, 2000.0,                                                  \
@@ -27,52 +27,51 @@ namespace travel {
       "Pitch of the sensor in the vehicle frame (extrinsic)")                                     \
     X(double, mount_yaw_deg, 0.0, "deg", -180.0, 180.0,                                           \
       "Yaw of the sensor in the vehicle frame (extrinsic); the tri-grid is aligned with the "     \
-      "vehicle frame")                                                                           \
+      "vehicle frame")                                                                            \
     X(bool, align_attitude, true, "", 0, 1,                                                       \
       "Rotate each frame upright with the vehicle roll/pitch when the caller provides it")        \
     X(bool, deskew, true, "", 0, 1,                                                               \
       "Undo the motion during the sweep when per-point times and a velocity are provided")        \
     /* ---- Tri-grid field (Sec. III-B) ---- */                                                   \
     X(double, tgf_resolution, 4.0, "m", 0.25, 100.0,                                              \
-      "r: side of a tri-grid cell; each cell holds 4 triangular nodes (paper: 8; 4 is better "   \
-      "on SemanticKITTI, see README)")                                                           \
+      "r: side of a tri-grid cell; each cell holds 4 triangular nodes (paper: 8; 4 is better "    \
+      "on SemanticKITTI, see README)")                                                            \
     X(int, max_grid_cells_per_side, 1024, "", 1, 8192,                                            \
       "Safety limit on 2 R / r; a larger grid is a configuration error, never an allocation")     \
     /* ---- Node-wise terrain model (Sec. III-B) ---- */                                          \
     X(int, lpr_num_points, 5, "", 1, 1000,                                                        \
       "Number of lowest points whose mean z is the node's lowest point representative (LPR)")     \
     X(double, seed_margin_above_lpr, 0.2, "m", 0.0, 10.0,                                         \
-      "Initial plane seeds: z < LPR + this (reference 0.5; 0.2 keeps the foot of steep slopes "  \
-      "and kerbs out of the ground plane, and scores higher on SemanticKITTI)")                  \
-    X(double, seed_margin_below_lpr, 0.3, "m", 0.0, 10.0,                                         \
-      "Initial plane seeds: z >= LPR - this")                                                     \
+      "Initial plane seeds: z < LPR + this (reference 0.5; 0.2 keeps the foot of steep slopes "   \
+      "and kerbs out of the ground plane, and scores higher on SemanticKITTI)")                   \
+    X(double, seed_margin_below_lpr, 0.3, "m", 0.0, 10.0, "Initial plane seeds: z >= LPR - this") \
     X(double, plane_inlier_dist, 0.05, "m", 0.0, 10.0,                                            \
-      "PCA refit: points with signed distance to the plane below this are re-selected "          \
-      "(reference 0.125; 0.05 keeps the bases of objects from lifting the plane)")               \
+      "PCA refit: points with signed distance to the plane below this are re-selected "           \
+      "(reference 0.125; 0.05 keeps the bases of objects from lifting the plane)")                \
     X(int, plane_fit_iterations, 3, "", 1, 100, "Number of PCA fits per node")                    \
     X(int, node_min_points, 5, "", 3, 1000000,                                                    \
-      "Nodes with fewer points are 'unknown' (no terrain model). Reference 10; 5 keeps far "     \
-      "nodes crossed by a single ring")                                                          \
-    X(double, line_node_ratio, 0.01, "", 0.0, 1.0,                                               \
+      "Nodes with fewer points are 'unknown' (no terrain model). Reference 10; 5 keeps far "      \
+      "nodes crossed by a single ring")                                                           \
+    X(double, line_node_ratio, 0.01, "", 0.0, 1.0,                                                \
       "A node whose PCA has l2 < this * l1 is a line (typically one ring crossing it): its "      \
-      "normal is taken perpendicular to the line and as level as possible")                      \
+      "normal is taken perpendicular to the line and as level as possible")                       \
     X(double, max_slope_deg, 25.0, "deg", 0.0, 90.0,                                              \
-      "theta: a node is terrain when its normal is within this angle of vertical (paper 30, "    \
-      "reference code 20: 25 keeps 20-degree ramps and rejects 30-degree ones with margin)")     \
+      "theta: a node is terrain when its normal is within this angle of vertical (paper 30, "     \
+      "reference code 20: 25 keeps 20-degree ramps and rejects 30-degree ones with margin)")      \
     /* ---- Breadth-first traversable graph search (Sec. III-C, eq. 2) ---- */                    \
     X(double, seed_search_radius, 10.0, "m", 0.0, 10000.0,                                        \
-      "The search starts from the best terrain node whose mean is within this xy distance of "   \
-      "the sensor (metres, so it does not depend on the cell size)")                             \
+      "The search starts from the best terrain node whose mean is within this xy distance of "    \
+      "the sensor (metres, so it does not depend on the cell size)")                              \
     X(double, seed_height_tolerance, 1.0, "m", 0.0, 100.0,                                        \
       "A start node's mean z must be within this of -sensor_height (plausible ground)")           \
     X(double, eps1, 0.03, "rad", 0.0, 3.2,                                                        \
-      "epsilon_1: local convexity/concavity, |s_i.d| < |d| sin(eps1) and |s_j.d| < |d| "         \
-      "sin(eps1) for the displacement d between node means")                                     \
+      "epsilon_1: local convexity/concavity, |s_i.d| < |d| sin(eps1) and |s_j.d| < |d| "          \
+      "sin(eps1) for the displacement d between node means")                                      \
     X(double, eps2, 0.1, "rad/m", 0.0, 3.2,                                                       \
       "epsilon_2: normal similarity, |s_i.s_j| > 1 - sin(|d| eps2)")                              \
     X(double, reseed_max_height_diff, 0.3, "m", 0.0, 100.0,                                       \
       "A node unreached by the search starts a new search only if its mean is within this of "    \
-      "the plane of the nearest accepted node")                                                  \
+      "the plane of the nearest accepted node")                                                   \
     X(double, reseed_max_distance, 24.0, "m", 0.0, 10000.0,                                       \
       "... and that accepted node is at most this far (xy) from it")                              \
     X(double, reseed_min_weight_ratio, 0.0, "", 0.0, 1.0,                                         \
@@ -82,10 +81,10 @@ namespace travel {
       "Traversable terrain model fitting: refit every node from corner heights")                  \
     X(double, ground_dist, 0.1, "m", 0.0, 10.0,                                                   \
       "epsilon_3: a point of a traversable node is ground when its signed distance to the "       \
-      "refitted plane is below this")                                                            \
-    X(bool, label_with_node_plane, true, "", 0, 1,                                               \
-      "A point of a node the search accepted is also ground when it lies within eps3 of the "   \
-      "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                \
+      "refitted plane is below this")                                                             \
+    X(bool, label_with_node_plane, true, "", 0, 1,                                                \
+      "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
+      "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
       "Points more than this below the refitted plane are outliers (below-ground noise)")
 

@@ -18,7 +18,7 @@
 namespace travel {
 
 class Pipeline {
-public:
+  public:
     explicit Pipeline(const Params& params);
 
     const Params& params() const { return params_; }
@@ -29,7 +29,7 @@ public:
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
 
-private:
+  private:
     Params params_;
     AlignedCloud aligned_;
     TriGridField field_;

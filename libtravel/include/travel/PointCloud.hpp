@@ -23,12 +23,8 @@ struct PointCloud {
     bool hasRing() const { return !ring.empty() && ring.size() == x.size(); }
     bool hasTime() const { return !time.empty() && time.size() == x.size(); }
 
-    void clear() {
-        x.clear(), y.clear(), z.clear(), intensity.clear(), ring.clear(), time.clear();
-    }
-    void reserve(std::size_t n) {
-        x.reserve(n), y.reserve(n), z.reserve(n), intensity.reserve(n);
-    }
+    void clear() { x.clear(), y.clear(), z.clear(), intensity.clear(), ring.clear(), time.clear(); }
+    void reserve(std::size_t n) { x.reserve(n), y.reserve(n), z.reserve(n), intensity.reserve(n); }
     void push_back(float px, float py, float pz, float pi = 0.f) {
         x.push_back(px), y.push_back(py), z.push_back(pz), intensity.push_back(pi);
     }
@@ -51,10 +47,14 @@ enum class PointClass : uint8_t {
 
 inline const char* toString(PointClass c) {
     switch (c) {
-        case PointClass::Invalid: return "invalid";
-        case PointClass::Ground: return "ground";
-        case PointClass::NonGround: return "nonground";
-        case PointClass::Outlier: return "outlier";
+        case PointClass::Invalid:
+            return "invalid";
+        case PointClass::Ground:
+            return "ground";
+        case PointClass::NonGround:
+            return "nonground";
+        case PointClass::Outlier:
+            return "outlier";
     }
     return "?";
 }

@@ -56,12 +56,12 @@ inline float planeHeightAt(const Eigen::Vector3f& s, float d, float x, float y) 
 }
 
 struct TerrainModel {
-    float resolution = 0.f;     ///< r [m]
-    int cells_per_side = 0;     ///< the grid is cells_per_side x cells_per_side cells
-    float origin_xy = 0.f;      ///< x and y of the grid's lower-left corner (= -R)
-    std::vector<TriNode> nodes; ///< 4 per cell; index = 4 * (iy * cells_per_side + ix) + tri
-    int seed_node = -1;         ///< start node of the first search (-1: no terrain near sensor)
-    int num_components = 0;     ///< searches run (first + re-seeds)
+    float resolution = 0.f;      ///< r [m]
+    int cells_per_side = 0;      ///< the grid is cells_per_side x cells_per_side cells
+    float origin_xy = 0.f;       ///< x and y of the grid's lower-left corner (= -R)
+    std::vector<TriNode> nodes;  ///< 4 per cell; index = 4 * (iy * cells_per_side + ix) + tri
+    int seed_node = -1;          ///< start node of the first search (-1: no terrain near sensor)
+    int num_components = 0;      ///< searches run (first + re-seeds)
 
     /// Triangle k of a cell: 0 = +x side (east), 1 = +y (north), 2 = -x (west), 3 = -y (south).
     /// Its corners are the cell centre and the two cell corners of that side.

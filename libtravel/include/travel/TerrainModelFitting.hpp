@@ -14,12 +14,12 @@
 namespace travel {
 
 class TerrainModelFitting {
-public:
+  public:
     /// Sets corner_z, refit_* and traversable of every node. With params.ttmf == false,
     /// traversable = reached and the refit plane is the node's own plane (ablation).
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
 
-private:
+  private:
     std::vector<double> vote_weight_, vote_weighted_z_;
 };
 

@@ -15,11 +15,11 @@ namespace travel {
 bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params);
 
 class TraversableGraphSearch {
-public:
+  public:
     /// Sets reached / component of every node and model.seed_node / num_components.
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
 
-private:
+  private:
     void searchFrom(int root, int16_t component, const TriGridField& field, const Params& params,
                     TerrainModel& model);
     std::vector<int> queue_;

@@ -18,7 +18,7 @@
 namespace travel {
 
 class TriGridField {
-public:
+  public:
     /// Up to 14 neighbours per node: the 3 other triangles of its cell and every triangle of
     /// the 8 surrounding cells that shares a vertex with it. Built geometrically (by shared
     /// vertices), so no hand-written table can have a typo.
@@ -59,7 +59,7 @@ public:
     const std::vector<float>& sz() const { return sz_; }
     const std::vector<uint32_t>& order() const { return order_; }
 
-private:
+  private:
     float resolution_ = 0.f;
     float origin_ = 0.f;  // x and y of the grid's lower-left corner
     int cells_per_side_ = 0;
@@ -84,8 +84,8 @@ inline int TriGridField::nodeOf(float x, float y) const {
     // Branch-free (the choice is unpredictable along a scan line): east 0, north 1, west 2,
     // south 3.
     const int horizontal = std::fabs(u) >= std::fabs(v);
-    const int negative = horizontal ? (u < 0.f) : (v < 0.f);
-    const int tri = (1 - horizontal) + 2 * negative;
+    const int negative = (horizontal & (u < 0.f)) | ((horizontal ^ 1) & (v < 0.f));
+    const int tri = (horizontal ^ 1) + 2 * negative;
     return 4 * (iy * cells_per_side_ + ix) + tri;
 }
 

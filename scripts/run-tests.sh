@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The README's test command, and what CI runs (.ci/run):
+#   1. scripts/setup.sh: installs the missing Debian packages and builds ./build (Release)
+#   2. the whole test suite of ./build with CTest
+#   3. libtravel's tests again under AddressSanitizer + UndefinedBehaviorSanitizer
+#      (./build-asan, libtravel only: the MRPT parts are tested in step 2)
+#   4. clang-format check of every C++ file, when clang-format is installed
+# Tests that need ../shared/data (SemanticKITTI etc.) skip with a message when it is absent.
+set -euo pipefail
+
+ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT_DIR"
+log() { printf '[run-tests] %s\n' "$*"; }
+
+"$ROOT_DIR/scripts/setup.sh"
+
+log "test suite (build/)"
+ctest --test-dir build -j2 --output-on-failure
+
+log "sanitizer build (build-asan/: address,undefined)"
+asan=(cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=address,undefined
+      -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF)
+[[ -f build-asan/CMakeCache.txt ]] || asan+=(-G Ninja)
+"${asan[@]}" >/dev/null
+cmake --build build-asan -j2
+log "test suite under sanitizers"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build-asan -j2 --output-on-failure
+
+if command -v clang-format >/dev/null 2>&1; then
+  log "clang-format check"
+  git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
+else
+  log "clang-format not installed: format check skipped"
+fi
+log "all tests passed"
