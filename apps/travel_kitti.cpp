@@ -6,6 +6,8 @@
 // evaluation protocols, plus the median and max milliseconds of every stage.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -58,8 +60,9 @@ int run(int argc, char** argv) {
         "classes 0, 1, 70 not scored).",
         ' ', "0.1");
     TCLAP::ValueArg<std::string> scans(
-        "", "scans", "Directory of KITTI .bin scans (float32 x y z i)", true, "", "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Output directory for .label files (created)", true,
+        "", "scans", "Directory of KITTI .bin scans (float32 x y z i); required", false, "",
+        "DIR", cmd);
+    TCLAP::ValueArg<std::string> out("", "out", "Output directory for .label files (created); required", false,
                                      "", "DIR", cmd);
     TCLAP::ValueArg<std::string> labels(
         "", "labels", "SemanticKITTI labels directory: enables the metrics", false, "", "DIR", cmd);
@@ -86,6 +89,8 @@ int run(int argc, char** argv) {
         std::cout << travel::paramsToYaml(params);
         return 0;
     }
+    if (!scans.isSet() || !out.isSet())
+        throw TCLAP::CmdLineParseException("--scans DIR and --out DIR are required", "--scans");
     std::vector<std::string> files = travel::listFiles(scans.getValue(), ".bin");
     if (files.empty()) throw travel::InputError("no .bin files in " + scans.getValue());
     if (max_frames.getValue() >= 0 &&
@@ -119,10 +124,10 @@ int run(int argc, char** argv) {
                             {"ground_total", {}}};
     std::size_t unlabelled_frames = 0;
     const bool verbose = !quiet.getValue();
-    if (verbose && labels.isSet())
-        std::printf("%-10s %8s | %s | %s\n", "frame", "points",
-                    "protocol A   P      R      F1     Acc",
-                    "protocol B   P      R      F1     Acc");
+    const bool tty = isatty(fileno(stderr));
+    if (verbose)
+        std::printf("%-10s %8s %8s %6s | %-30s | %-30s\n", "frame", "points", "ground", "ms",
+                    "protocol A  P     R     F1    Acc", "protocol B  P     R     F1    Acc");
 
     for (std::size_t f = 0; f < files.size(); ++f) {
         const fs::path bin(files[f]);
@@ -160,17 +165,15 @@ int run(int argc, char** argv) {
                 ++unlabelled_frames;
             }
         }
-        if (verbose && scored) {
-            std::printf(
-                "%-10s %8zu |            %6.2f %6.2f %6.2f %6.2f |            %6.2f %6.2f "
-                "%6.2f %6.2f\n",
-                stem.c_str(), cloud.size(), scores[0].precision, scores[0].recall, scores[0].f1,
-                scores[0].accuracy, scores[1].precision, scores[1].recall, scores[1].f1,
-                scores[1].accuracy);
-        } else if (verbose) {
-            std::fprintf(stderr, "\r[%zu/%zu] %s: %zu points, %zu ground, %.2f ms   ", f + 1,
-                         files.size(), stem.c_str(), cloud.size(),
-                         result.count(travel::PointClass::Ground), t.ground_total);
+        if (verbose) {
+            std::printf("%-10s %8zu %8zu %6.2f", stem.c_str(), cloud.size(),
+                        result.count(travel::PointClass::Ground), t.ground_total);
+            for (int p = 0; p < 2 && scored; ++p)
+                std::printf(" |            %5.2f %5.2f %5.2f %5.2f", scores[p].precision,
+                            scores[p].recall, scores[p].f1, scores[p].accuracy);
+            std::printf(labels.isSet() && !scored ? " | (no .label file)\n" : "\n");
+        } else if (tty) {
+            std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
         }
         if (csv_out) {
             csv_out << stem << ',' << cloud.size() << ','
@@ -189,7 +192,7 @@ int run(int argc, char** argv) {
             csv_out << '\n';
         }
     }
-    if (verbose && !labels.isSet()) std::fprintf(stderr, "\n");
+    if (!verbose && tty) std::fprintf(stderr, "\n");
 
     std::printf("\n%zu scans processed (preset %s), labels written to %s\n", files.size(),
                 preset.getValue().c_str(), out.getValue().c_str());

@@ -51,7 +51,6 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
     queue_.push_back(root);
     model.nodes[root].reached = true;
     model.nodes[root].component = component;
-    reached_list_.push_back(root);
     for (std::size_t head = 0; head < queue_.size(); ++head) {
         const int i = queue_[head];
         const TriGridField::Neighbours& nb = field.neighbours(i);
@@ -62,17 +61,51 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
             if (!isTraversableEdge(model.nodes[i], next, params)) continue;
             next.reached = true;
             next.component = component;
-            reached_list_.push_back(j);
             queue_.push_back(j);
         }
     }
+}
+
+// The reached node whose mean is nearest (xy) to `cand`'s, at most sqrt(max_dist2) away, or -1.
+// Cells are visited in rings of growing Chebyshev radius around the candidate's cell. Means lie
+// inside their cells, so a node of ring r is at least (r - 1) r_cell away: the scan stops when
+// that exceeds the best distance found (exact, not a heuristic).
+int TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
+                                           const TerrainModel& model, float max_dist2) const {
+    const int n = field.cellsPerSide();
+    const int cell = field.nodeOf(cand.mean.x(), cand.mean.y()) / 4;
+    if (cell < 0) return -1;
+    const int cx = cell % n, cy = cell / n;
+    const int max_ring = static_cast<int>(std::ceil(std::sqrt(max_dist2) / field.resolution())) + 1;
+    int nearest = -1;
+    float best = max_dist2;
+    for (int ring = 0; ring <= max_ring; ++ring) {
+        const float gap = std::max(0, ring - 1) * field.resolution();
+        if (gap * gap > best) break;
+        for (int iy = cy - ring; iy <= cy + ring; ++iy) {
+            if (iy < 0 || iy >= n) continue;
+            const bool edge_row = iy == cy - ring || iy == cy + ring;
+            for (int ix = cx - ring; ix <= cx + ring; ix += edge_row ? 1 : 2 * ring) {
+                if (ix >= 0 && ix < n) {
+                    for (int k = 0; k < 4; ++k) {
+                        const int id = 4 * (iy * n + ix) + k;
+                        if (!model.nodes[id].reached) continue;
+                        const float d2 = (model.nodes[id].mean - cand.mean).head<2>().squaredNorm();
+                        if (d2 < best || (d2 == best && id < nearest)) best = d2, nearest = id;
+                    }
+                }
+                if (ring == 0) break;
+            }
+        }
+    }
+    return nearest;
 }
 
 void TraversableGraphSearch::run(const TriGridField& field, const Params& params,
                                  TerrainModel& model) {
     model.seed_node = -1;
     model.num_components = 0;
-    reached_list_.clear();
+    for (TriNode& node : model.nodes) node.reached = false, node.component = -1;
     // Start node (see the decisions above).
     const float radius2 = static_cast<float>(params.seed_search_radius * params.seed_search_radius);
     int seed = -1;
@@ -107,13 +140,7 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
         for (const int id : candidates_) {
             const TriNode& cand = model.nodes[id];
             if (cand.reached || cand.weight < min_weight) continue;
-            int nearest = -1;
-            float best = max_dist2;
-            for (const int r : reached_list_) {
-                const Eigen::Vector2f diff = (model.nodes[r].mean - cand.mean).head<2>();
-                const float d2 = diff.squaredNorm();
-                if (d2 <= best) best = d2, nearest = r;
-            }
+            const int nearest = nearestReached(cand, field, model, max_dist2);
             if (nearest < 0) continue;
             const TriNode& ref = model.nodes[nearest];
             const Eigen::Vector2f mid = 0.5f * (ref.mean + cand.mean).head<2>();

@@ -22,9 +22,10 @@ class TraversableGraphSearch {
   private:
     void searchFrom(int root, int16_t component, const TriGridField& field, const Params& params,
                     TerrainModel& model);
+    int nearestReached(const TriNode& cand, const TriGridField& field, const TerrainModel& model,
+                       float max_dist2) const;
     std::vector<int> queue_;
     std::vector<int> candidates_;
-    std::vector<int> reached_list_;
 };
 
 }  // namespace travel
