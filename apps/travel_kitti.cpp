@@ -19,6 +19,7 @@
 #include "travel/Errors.hpp"
 #include "travel/KittiIO.hpp"
 #include "travel/Metrics.hpp"
+#include "travel/ObjectMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 
@@ -108,8 +109,11 @@ int run(int argc, char** argv) {
         if (!csv_out) throw travel::InputError("cannot write " + csv.getValue());
         csv_out << "frame,points,invalid,ground,nonground,outlier,"
                    "A_precision,A_recall,A_f1,A_accuracy,B_precision,B_recall,B_f1,B_accuracy,"
+                   "clusters,OSE_sum,USE_sum,OSE_mean,USE_mean,instances,mean_coverage,"
+                   "mean_purity,"
                    "ms_preprocess,ms_embedding,ms_node_fitting,ms_graph_search,ms_ttmf,"
-                   "ms_labelling,ms_ground_total\n";
+                   "ms_labelling,ms_ground_total,ms_range_image,ms_horizontal,ms_vertical,"
+                   "ms_clusters,ms_objects_total,ms_total\n";
     }
 
     travel::Pipeline pipeline(params);
@@ -119,15 +123,21 @@ int run(int argc, char** argv) {
     const travel::GroundProtocol protocols[2] = {travel::GroundProtocol::A,
                                                  travel::GroundProtocol::B};
     std::vector<double> f1[2], precision[2], recall[2], accuracy[2];
-    StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}}, {"node_fitting", {}},
-                            {"graph_search", {}}, {"ttmf", {}},      {"labelling", {}},
-                            {"ground_total", {}}};
+    StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}},    {"node_fitting", {}},
+                            {"graph_search", {}}, {"ttmf", {}},         {"labelling", {}},
+                            {"ground_total", {}}, {"range_image", {}},  {"horizontal", {}},
+                            {"vertical", {}},     {"clusters", {}},     {"objects_total", {}},
+                            {"total", {}}};
+    constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
+    travel::ObjectScoreAccumulator object_scores;
+    std::vector<double> ose_sum, use_sum;
     std::size_t unlabelled_frames = 0;
     const bool verbose = !quiet.getValue();
     const bool tty = isatty(fileno(stderr));
     if (verbose)
-        std::printf("%-10s %8s %8s %6s | %-30s | %-30s\n", "frame", "points", "ground", "ms",
-                    "protocol A  P     R     F1    Acc", "protocol B  P     R     F1    Acc");
+        std::printf("%-8s %7s %6s %5s %6s | %-23s | %-23s | %s\n", "frame", "points", "ground",
+                    "clust", "ms", "ground A: P R F1 Acc", "ground B: P R F1 Acc",
+                    "objects: OSE USE (sums) coverage purity");
 
     for (std::size_t f = 0; f < files.size(); ++f) {
         const fs::path bin(files[f]);
@@ -141,11 +151,15 @@ int run(int argc, char** argv) {
         travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
 
         const travel::StageTimings& t = result.timings;
-        const double stage_ms[] = {t.preprocess, t.embedding, t.node_fitting, t.graph_search,
-                                   t.ttmf,       t.labelling, t.ground_total};
-        for (int s = 0; s < 7; ++s) stages[s].ms.push_back(stage_ms[s]);
+        const double stage_ms[] = {t.preprocess,   t.embedding,   t.node_fitting,
+                                   t.graph_search, t.ttmf,        t.labelling,
+                                   t.ground_total, t.range_image, t.horizontal,
+                                   t.vertical,     t.clusters,    t.objects_total,
+                                   t.ground_total + t.objects_total};
+        for (int s = 0; s < kNumStages; ++s) stages[s].ms.push_back(stage_ms[s]);
 
         travel::GroundScores scores[2]{};
+        travel::ObjectScores objects;
         bool scored = false;
         if (labels.isSet()) {
             const fs::path label_path = fs::path(labels.getValue()) / (stem + ".label");
@@ -160,17 +174,25 @@ int run(int argc, char** argv) {
                     f1[p].push_back(scores[p].f1);
                     accuracy[p].push_back(scores[p].accuracy);
                 }
+                objects = travel::evaluateObjects(result.cluster_id, result.labels, gt, cloud);
+                object_scores.add(objects);
+                ose_sum.push_back(objects.entropy.ose_sum);
+                use_sum.push_back(objects.entropy.use_sum);
                 scored = true;
             } else {
                 ++unlabelled_frames;
             }
         }
         if (verbose) {
-            std::printf("%-10s %8zu %8zu %6.2f", stem.c_str(), cloud.size(),
-                        result.count(travel::PointClass::Ground), t.ground_total);
+            std::printf("%-8s %7zu %6zu %5zu %6.2f", stem.c_str(), cloud.size(),
+                        result.count(travel::PointClass::Ground), result.clusters.size(),
+                        t.ground_total + t.objects_total);
             for (int p = 0; p < 2 && scored; ++p)
-                std::printf(" |            %5.2f %5.2f %5.2f %5.2f", scores[p].precision,
-                            scores[p].recall, scores[p].f1, scores[p].accuracy);
+                std::printf(" | %5.2f %5.2f %5.2f %5.2f", scores[p].precision, scores[p].recall,
+                            scores[p].f1, scores[p].accuracy);
+            if (scored)
+                std::printf(" | %6.2f %6.2f  %5.3f %5.3f", objects.entropy.ose_sum,
+                            objects.entropy.use_sum, objects.mean_coverage, objects.mean_purity);
             std::printf(labels.isSet() && !scored ? " | (no .label file)\n" : "\n");
         } else if (tty) {
             std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
@@ -188,7 +210,15 @@ int run(int argc, char** argv) {
                 else
                     csv_out << ",,,,";
             }
-            for (int s = 0; s < 7; ++s) csv_out << ',' << stage_ms[s];
+            csv_out << ',' << result.clusters.size();
+            if (scored)
+                csv_out << ',' << objects.entropy.ose_sum << ',' << objects.entropy.use_sum << ','
+                        << objects.entropy.ose_mean << ',' << objects.entropy.use_mean << ','
+                        << objects.instances.size() << ',' << objects.mean_coverage << ','
+                        << objects.mean_purity;
+            else
+                csv_out << ",,,,,,,";
+            for (int s = 0; s < kNumStages; ++s) csv_out << ',' << stage_ms[s];
             csv_out << '\n';
         }
     }
@@ -209,6 +239,16 @@ int run(int argc, char** argv) {
                 travel::protocolName(protocols[p]), F.n, P.mean, P.std, R.mean, R.std, F.mean,
                 F.std, A.mean, A.std);
         }
+        const travel::ObjectSummary o = object_scores.summary();
+        const auto ose = travel::meanStd(ose_sum), use = travel::meanStd(use_sum);
+        std::printf(
+            "Objects over %zu frames: USE %.2f +- %.2f, OSE %.2f +- %.2f (per-frame sums, "
+            "paper eqs. 6-7); per object: OSE %.3f, USE %.3f per cluster\n",
+            o.frames, use.mean, use.std, ose.mean, ose.std, o.ose_per_object, o.use_per_cluster);
+        std::printf(
+            "Thing instances (>= 50 points): %zu, mean coverage %.3f, mean purity %.3f, "
+            "split %zu, merged %zu\n",
+            o.instances, o.mean_coverage, o.mean_purity, o.split, o.merged);
     }
     std::printf("Milliseconds per frame (single thread):\n");
     for (const StageSeries& s : stages)

@@ -10,6 +10,8 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "travel/Errors.hpp"
@@ -36,10 +38,18 @@ std::string configErrorOf(F&& f) {
 #define EXPECT_CONTAINS(haystack, needle) \
     EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
-std::vector<double> valuesOf(const Params& p) {
-    std::vector<double> values;
-    travel::visitParams(p, [&](const char*, const auto& v, const char*, double, double,
-                               const char*) { values.push_back(static_cast<double>(v)); });
+using ParamValue = std::variant<double, std::string>;
+
+std::vector<ParamValue> valuesOf(const Params& p) {
+    std::vector<ParamValue> values;
+    travel::visitParams(p,
+                        [&](const char*, const auto& v, const char*, double, double, const char*) {
+                            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) {
+                                values.emplace_back(v);
+                            } else {
+                                values.emplace_back(static_cast<double>(v));
+                            }
+                        });
     return values;
 }
 
@@ -111,6 +121,38 @@ TEST(ParamsValidate, MinRangeMustBeBelowMaxRange) {
     EXPECT_CONTAINS(msg, "max_range");
 }
 
+TEST(ParamsValidate, StringNotAnAllowedValue) {
+    Params p;
+    p.ring_source = "laser";
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "ring_source");
+    EXPECT_CONTAINS(msg, "'laser'");
+    EXPECT_CONTAINS(msg, "auto|field|scan_order|table");
+    p = Params();
+    p.elevation_table = "Hdl64";  // validate() wants the exact spelling; the loader fixes case
+    EXPECT_CONTAINS(configErrorOf([&] { p.validate(); }), "elevation_table");
+}
+
+TEST(ParamsValidate, ElevationBoundsOrdered) {
+    Params p;
+    p.min_elevation_deg = 5.0;
+    p.max_elevation_deg = 5.0;
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "min_elevation_deg");
+    EXPECT_CONTAINS(msg, "max_elevation_deg");
+}
+
+TEST(ParamsValidate, ClusterSizesOrdered) {
+    Params p;
+    p.min_cluster_size = 50;
+    p.max_cluster_size = 49;
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "min_cluster_size");
+    EXPECT_CONTAINS(msg, "max_cluster_size");
+    p.max_cluster_size = 50;  // equal is allowed: exactly one size
+    EXPECT_NO_THROW(p.validate());
+}
+
 TEST(ParamsValidate, GridSizeLimit) {
     Params p;
     p.max_range = 1000.0;
@@ -163,6 +205,23 @@ TEST(ParamsText, QuotedValues) {
     EXPECT_EQ(p.tgf_resolution, 4.5);
     EXPECT_FALSE(p.ttmf);
     EXPECT_CONTAINS(configErrorOf([] { fromText("tgf_resolution: \"4.5\n"); }), "unterminated");
+}
+
+TEST(ParamsText, Strings) {
+    EXPECT_EQ(fromText("ring_source: table").ring_source, "table");
+    EXPECT_EQ(fromText("ring_source: \"scan_order\"  # q").ring_source, "scan_order");
+    EXPECT_EQ(fromText("[travel]\nelevation_table = 'vlp16'\n").elevation_table, "vlp16");
+    EXPECT_EQ(fromText("elevation_table: OS128").elevation_table, "os128");  // stored as listed
+    EXPECT_EQ(fromText("ring_source: field # comment").ring_source, "field");
+    for (const char* bad : {"laser", "\"\"", "'table '", "table x", "scan-order"}) {
+        const std::string msg =
+            configErrorOf([&] { fromText(std::string("\nring_source: ") + bad); });
+        EXPECT_CONTAINS(msg, "test.yaml:2: ") << bad;
+        EXPECT_CONTAINS(msg, "'ring_source'");
+        EXPECT_CONTAINS(msg, "auto|field|scan_order|table");
+    }
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ring_source: laser"); }), "'laser'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ring_source:"); }), "missing value");
 }
 
 TEST(ParamsText, Booleans) {
@@ -338,6 +397,19 @@ TEST(Overrides, Apply) {
     EXPECT_EQ(p.tgf_resolution, 4.0);  // a rejected override changes nothing
 }
 
+TEST(Overrides, Strings) {
+    Params p;
+    travel::applyOverride("ring_source=table", p);
+    EXPECT_EQ(p.ring_source, "table");
+    travel::applyOverride("elevation_table = 'uniform'", p);
+    EXPECT_EQ(p.elevation_table, "uniform");
+    const std::string msg = configErrorOf([&] { travel::applyOverride("ring_source=ring", p); });
+    EXPECT_CONTAINS(msg, "ring_source");
+    EXPECT_CONTAINS(msg, "'ring'");
+    EXPECT_CONTAINS(msg, "auto|field|scan_order|table");
+    EXPECT_EQ(p.ring_source, "table");
+}
+
 // ---- paramsToYaml ----------------------------------------------------------------------------
 
 TEST(ParamsYaml, RoundTripsExactly) {
@@ -348,6 +420,8 @@ TEST(ParamsYaml, RoundTripsExactly) {
     p.node_min_points = 123;
     p.deskew = false;
     p.mount_yaw_deg = -90.0;
+    p.ring_source = "scan_order";
+    p.elevation_table = "uniform";
     const std::string yaml = travel::paramsToYaml(p);
     const Params back = fromText(yaml);
     EXPECT_EQ(valuesOf(back), valuesOf(p));
@@ -361,6 +435,8 @@ TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
     EXPECT_CONTAINS(yaml, "\nmax_range: 80.0\n");
     EXPECT_CONTAINS(yaml, "(true/false)\nttmf: true\n");
     EXPECT_CONTAINS(yaml, "\nmax_grid_cells_per_side: 1024\n");
+    EXPECT_CONTAINS(yaml, "(one of auto|field|scan_order|table)\nring_source: auto\n");
+    EXPECT_CONTAINS(yaml, "(one of hdl64|hdl32|vlp16|os128|uniform)\nelevation_table: hdl64\n");
     const Params defaults;
     std::istringstream lines(yaml);
     for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 100u) << line;

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "travel/Errors.hpp"
+#include "travel/ParamsIO.hpp"
 
 namespace travel {
 
@@ -35,13 +36,22 @@ std::string withUnit(const std::string& text, const char* unit) {
 void Params::validate() const {
     visitParams(*this, [](const char* name, const auto& value, const char* unit, double lo,
                           double hi, const char*) {
-        const double v = static_cast<double>(value);
-        // NaN compares false with everything, so it must be rejected explicitly.
-        if (std::isnan(v) || v < lo || v > hi) {
-            throw ConfigError("parameter '" + std::string(name) +
-                              "' = " + withUnit(formatForMessage(value), unit) +
-                              " is outside its allowed range [" + formatForMessage(lo) + ", " +
-                              withUnit(formatForMessage(hi), unit) + "]");
+        using T = std::remove_cv_t<std::remove_reference_t<decltype(value)>>;
+        if constexpr (std::is_same_v<T, std::string>) {
+            // For strings the unit slot lists the allowed values.
+            if (!isAllowedChoice(value, unit)) {
+                throw ConfigError("parameter '" + std::string(name) + "' = '" + value +
+                                  "' is not one of " + unit);
+            }
+        } else {
+            const double v = static_cast<double>(value);
+            // NaN compares false with everything, so it must be rejected explicitly.
+            if (std::isnan(v) || v < lo || v > hi) {
+                throw ConfigError("parameter '" + std::string(name) +
+                                  "' = " + withUnit(formatForMessage(value), unit) +
+                                  " is outside its allowed range [" + formatForMessage(lo) + ", " +
+                                  withUnit(formatForMessage(hi), unit) + "]");
+            }
         }
     });
 
@@ -49,6 +59,17 @@ void Params::validate() const {
         throw ConfigError("min_range = " + formatForMessage(min_range) +
                           " m must be smaller than max_range = " + formatForMessage(max_range) +
                           " m");
+    }
+
+    if (!(min_elevation_deg < max_elevation_deg)) {
+        throw ConfigError("min_elevation_deg = " + formatForMessage(min_elevation_deg) +
+                          " deg must be smaller than max_elevation_deg = " +
+                          formatForMessage(max_elevation_deg) + " deg");
+    }
+    if (min_cluster_size > max_cluster_size) {
+        throw ConfigError(
+            "min_cluster_size = " + formatForMessage(min_cluster_size) +
+            " must not exceed max_cluster_size = " + formatForMessage(max_cluster_size));
     }
 
     // The grid covers [-max_range, max_range] in x and y; a partial cell still costs a cell.

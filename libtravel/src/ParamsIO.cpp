@@ -12,8 +12,11 @@
 #include <locale>
 #include <map>
 #include <sstream>
+#include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "travel/Errors.hpp"
 
@@ -115,9 +118,20 @@ std::string formatDouble(double value) {
     return text;
 }
 
+// A bare word when it reads back as the same string, otherwise quoted.
+std::string formatString(const std::string& value) {
+    const bool bare = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+        return isIdentChar(c) || c == '-' || c == '.';
+    });
+    if (bare) return value;
+    return value.find('"') == std::string::npos ? "\"" + value + "\"" : "'" + value + "'";
+}
+
 template <class T>
-std::string formatValue(T value) {
-    if constexpr (std::is_same_v<T, bool>) {
+std::string formatValue(const T& value) {
+    if constexpr (std::is_same_v<T, std::string>) {
+        return formatString(value);
+    } else if constexpr (std::is_same_v<T, bool>) {
         return value ? "true" : "false";
     } else if constexpr (std::is_same_v<T, int>) {
         return std::to_string(value);
@@ -158,6 +172,33 @@ std::string parseValue(const std::string& text, bool& out) {
         out = false;
     } else {
         return inQuotes(text) + " is not a boolean (true/false, yes/no, on/off, 1/0)";
+    }
+    return {};
+}
+
+// Strings are checked against their allowed values by the caller, which knows them.
+std::string parseValue(const std::string& text, std::string& out) {
+    out = text;
+    return {};
+}
+
+std::vector<std::string> splitChoices(const char* choices) {
+    std::vector<std::string> out;
+    std::string_view rest = choices ? choices : "";
+    while (!rest.empty()) {
+        const std::size_t bar = rest.find('|');
+        out.emplace_back(rest.substr(0, bar));
+        if (bar == std::string_view::npos) break;
+        rest.remove_prefix(bar + 1);
+    }
+    return out;
+}
+
+// The allowed spelling of `text` (case-insensitive match), or "" when it is not allowed.
+std::string canonicalChoice(const std::string& text, const char* choices) {
+    const std::string lower = toLower(text);
+    for (const auto& choice : splitChoices(choices)) {
+        if (toLower(choice) == lower) return choice;
     }
     return {};
 }
@@ -237,19 +278,30 @@ std::string assignParam(Params& params, const std::string& key, const std::strin
                             const char*) {
         if (found || key != name) return;
         found = true;
-        std::remove_reference_t<decltype(value)> parsed{};
+        using T = std::remove_reference_t<decltype(value)>;
+        T parsed{};
         error = parseValue(text, parsed);
         if (!error.empty()) {
             error = "invalid value for " + inQuotes(key) + ": " + error;
             return;
         }
-        const double as_double = static_cast<double>(parsed);
-        if (as_double < lo || as_double > hi) {
-            error = inQuotes(key) + " = " + formatValue(parsed) + " is outside its allowed range " +
-                    rangeText(lo, hi, unit);
-            return;
+        if constexpr (std::is_same_v<T, std::string>) {
+            // For strings the unit slot lists the allowed values.
+            parsed = canonicalChoice(parsed, unit);
+            if (parsed.empty()) {
+                error = "invalid value for " + inQuotes(key) + ": " + inQuotes(text) +
+                        " is not one of " + unit;
+                return;
+            }
+        } else {
+            const double as_double = static_cast<double>(parsed);
+            if (as_double < lo || as_double > hi) {
+                error = inQuotes(key) + " = " + formatValue(parsed) +
+                        " is outside its allowed range " + rangeText(lo, hi, unit);
+                return;
+            }
         }
-        value = parsed;
+        value = std::move(parsed);
     });
     return found ? error : unknownKeyMessage(key);
 }
@@ -452,6 +504,11 @@ std::string wrappedComment(const std::string& text, const std::string& tail) {
 
 }  // namespace
 
+bool isAllowedChoice(const std::string& value, const char* choices) {
+    const auto allowed = splitChoices(choices);
+    return std::find(allowed.begin(), allowed.end(), value) != allowed.end();
+}
+
 void applyParamsText(const std::string& text, const std::string& source_name, Params& params) {
     TextApplier(source_name, params, 0).apply(text);
 }
@@ -527,7 +584,12 @@ void applyOverride(const std::string& key_equals_value, Params& params) {
     const std::size_t equals = key_equals_value.find('=');
     if (equals == std::string::npos) throw ConfigError(prefix + "expected key=value");
     const std::string key(trim(std::string_view(key_equals_value).substr(0, equals)));
-    const std::string value(trim(std::string_view(key_equals_value).substr(equals + 1)));
+    std::string value(trim(std::string_view(key_equals_value).substr(equals + 1)));
+    // Quotes as in a file ("ring_source='table'"), in case the shell left them.
+    if (value.size() >= 2 && (value.front() == '"' || value.front() == '\'') &&
+        value.back() == value.front()) {
+        value = value.substr(1, value.size() - 2);
+    }
     if (key == "preset") throw ConfigError(prefix + "a preset cannot be applied as an override");
     const std::string error = assignParam(params, key, value);
     if (!error.empty()) throw ConfigError(prefix + error);
@@ -540,12 +602,17 @@ std::string paramsToYaml(const Params& params) {
     visitParams(params, [&](const char* name, const auto& value, const char* unit, double lo,
                             double hi, const char* description) {
         using T = std::remove_cv_t<std::remove_reference_t<decltype(value)>>;
-        const std::string range =
-            std::is_same_v<T, bool> ? "true/false" : "range " + rangeText(lo, hi, "");
-        yaml += "\n" +
-                wrappedComment("[" + std::string(*unit ? unit : "-") + "] " + description,
-                               "(" + range + ")") +
-                name + ": " + formatValue(value) + "\n";
+        std::string comment;
+        if constexpr (std::is_same_v<T, std::string>) {
+            // The unit slot of a string holds its allowed values.
+            comment = wrappedComment(description, "(one of " + std::string(unit) + ")");
+        } else {
+            const std::string range =
+                std::is_same_v<T, bool> ? "true/false" : "range " + rangeText(lo, hi, "");
+            comment = wrappedComment("[" + std::string(*unit ? unit : "-") + "] " + description,
+                                     "(" + range + ")");
+        }
+        yaml += "\n" + comment + name + ": " + formatValue(value) + "\n";
     });
     return yaml;
 }

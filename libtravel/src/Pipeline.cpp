@@ -38,10 +38,24 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     terrain_fitting_.run(field_, params_, result.terrain);
     t.ttmf = msSince(clock);
     result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels);
-    result.cluster_id.assign(cloud.size(), 0u);
     t.labelling = msSince(clock);
     t.ground_total =
         t.preprocess + t.embedding + t.node_fitting + t.graph_search + t.ttmf + t.labelling;
+
+    result.cluster_id.assign(cloud.size(), 0u);
+    result.clusters.clear();
+    t.range_image = t.horizontal = t.vertical = t.clusters = t.objects_total = 0;
+    if (!params_.cluster_objects) return;
+    range_image_.build(cloud, aligned_.valid, params_);
+    t.range_image = msSince(clock);
+    clustering_.horizontal(aligned_, range_image_, result.labels, params_);
+    t.horizontal = msSince(clock);
+    clustering_.vertical(aligned_, params_);
+    t.vertical = msSince(clock);
+    clustering_.assignIds(params_, result.cluster_id);
+    summarizeClusters(aligned_, result.cluster_id, field_, result.terrain, result.clusters);
+    t.clusters = msSince(clock);
+    t.objects_total = t.range_image + t.horizontal + t.vertical + t.clusters;
 }
 
 }  // namespace travel

@@ -12,7 +12,9 @@
 namespace travel {
 
 // X(type, name, default, unit, min, max, description)
-// Types: double, int, bool. Angles are in degrees in files; the code converts once.
+// Types: double, int, bool, std::string. Angles are in degrees in files; the code converts once.
+// For std::string parameters the `unit` slot lists the allowed values ("a|b|c") and min/max are
+// unused (0).
 #define TRAVEL_PARAM_LIST(X)                                                                      \
     /* ---- Sensor and pre-processing (paper Sec. III-A) ---- */                                  \
     X(double, sensor_height, 1.73, "m", 0.0, 100.0,                                               \
@@ -86,7 +88,42 @@ namespace travel {
       "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
       "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
-      "Points more than this below the refitted plane are outliers (below-ground noise)")
+      "Points more than this below the refitted plane are outliers (below-ground noise)")         \
+    /* ---- Range image (Sec. IV-A) ---- */                                                       \
+    X(std::string, ring_source, "auto", "auto|field|scan_order|table", 0, 0,                      \
+      "Where a point's ring comes from: the input's ring field, the scan order (a ring ends "    \
+      "where the azimuth wraps around, KITTI .bin files), the elevation table; auto = the "      \
+      "first of these that works")                                                               \
+    X(std::string, elevation_table, "hdl64", "hdl64|hdl32|vlp16|os128|uniform", 0, 0,             \
+      "Beam elevations used when rings come from the table: a sensor's (non-uniform for the "    \
+      "HDL-64E) or num_rings uniform bins in [min_elevation_deg, max_elevation_deg]")            \
+    X(int, num_rings, 64, "", 1, 1024, "Rows of the range image (laser rings)")                   \
+    X(int, num_columns, 2048, "", 16, 65536, "Columns of the range image (azimuth bins)")         \
+    X(double, min_elevation_deg, -24.9, "deg", -90.0, 90.0,                                       \
+      "Lowest beam elevation, for elevation_table: uniform")                                      \
+    X(double, max_elevation_deg, 2.0, "deg", -90.0, 90.0,                                         \
+      "Highest beam elevation, for elevation_table: uniform")                                     \
+    /* ---- Above-ground object segmentation (Sec. IV) ---- */                                    \
+    X(bool, cluster_objects, true, "", 0, 1, "Run the above-ground object segmentation")          \
+    X(double, horizontal_merge_dist, 0.4, "m", 0.0, 100.0,                                        \
+      "T_horz: neighbouring points of a ring closer than this (3-D) form one run")                \
+    X(int, horizontal_skip_runs, 5, "", 0, 10000,                                                 \
+      "T_skip: a run also merges with the next runs up to this many ahead on its ring when "     \
+      "their facing end points are closer than T_horz (bridges occlusions)")                     \
+    X(double, occlusion_max_gap, 1.0, "m", 0.0, 100.0,                                           \
+      "Skipped linkage across an occlusion: a point continues an open run across a gap up to "   \
+      "this wide when every point seen in between is nearer to the sensor (by T_horz) and the "  \
+      "two ends' ranges differ by less than T_horz")                                             \
+    X(int, vertical_ring_span, 3, "", 1, 1024,                                                    \
+      "T_ring: a run is compared with the runs of this many rings below it")                      \
+    X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \
+      "T_vert: runs of different rings merge when their closest points are nearer than this")    \
+    X(int, vertical_column_extension, 5, "", 0, 65536,                                            \
+      "T_ext: columns by which a run's span is widened when looking for runs on other rings")    \
+    X(int, min_cluster_size, 10, "", 1, 100000000,                                                \
+      "Clusters with fewer points keep class nonground with cluster id 0")                       \
+    X(int, max_cluster_size, 100000000, "", 1, 2000000000,                                        \
+      "Clusters with more points keep class nonground with cluster id 0")
 
 struct Params {
 #define TRAVEL_DECLARE_PARAM(type, name, def, unit, lo, hi, doc) type name = def;

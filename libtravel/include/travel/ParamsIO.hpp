@@ -9,7 +9,8 @@
 //   travel:            optional YAML wrapper; the keys are then indented beneath it
 //   preset: vlp16      only as the first key: start from loadPreset("vlp16"), then apply the rest
 // Values: booleans true/false/yes/no/on/off/1/0 (any case); numbers must be the whole string
-// (no units, no NaN/inf); integers must be integral and fit an int.
+// (no units, no NaN/inf); integers must be integral and fit an int. Strings are a bare word or
+// a quoted string and must be one of the parameter's allowed values (any case; stored as listed).
 // Every error is a ConfigError whose message starts with "<source>:<line>: ".
 #pragma once
 
@@ -51,7 +52,11 @@ std::string findShareDir();
 /// range-checked; call Params::validate() after the last override.
 void applyOverride(const std::string& key_equals_value, Params& params);
 
-/// Every parameter as "key: value", each preceded by "# [unit] description (range)". Doubles are
+/// True when `value` is one of the '|'-separated `choices` ("auto|field|table"), exactly.
+bool isAllowedChoice(const std::string& value, const char* choices);
+
+/// Every parameter as "key: value", each preceded by "# [unit] description (range)" (for strings
+/// "# description (one of a|b|c)"). Doubles are
 /// written with the shortest text that reads back to the same value, so
 /// applyParamsText(paramsToYaml(p)) reproduces p exactly.
 std::string paramsToYaml(const Params& params);

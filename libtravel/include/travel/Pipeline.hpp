@@ -10,7 +10,9 @@
 #include "travel/Params.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/Preprocessing.hpp"
+#include "travel/RangeImage.hpp"
 #include "travel/Result.hpp"
+#include "travel/RunClustering.hpp"
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
 #include "travel/TriGridField.hpp"
@@ -23,11 +25,14 @@ class Pipeline {
 
     const Params& params() const { return params_; }
 
-    /// Traversable ground segmentation (TGS) of one frame.
+    /// Traversable ground segmentation (TGS) of one frame, then (params.cluster_objects)
+    /// above-ground object segmentation (AOS) of its non-ground points.
     void process(const PointCloud& cloud, const FrameInput& input, Result& result);
 
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
+    /// Rings and columns of the last frame (valid when params.cluster_objects).
+    const RangeImage& rangeImage() const { return range_image_; }
 
   private:
     Params params_;
@@ -35,6 +40,8 @@ class Pipeline {
     TriGridField field_;
     TraversableGraphSearch graph_search_;
     TerrainModelFitting terrain_fitting_;
+    RangeImage range_image_;
+    RunClustering clustering_;
 };
 
 }  // namespace travel

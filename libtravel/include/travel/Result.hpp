@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "travel/Clusters.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/TerrainModel.hpp"
 
@@ -19,6 +20,11 @@ struct StageTimings {
     double ttmf = 0;          ///< corner fitting
     double labelling = 0;     ///< per-point labels (eq. 5)
     double ground_total = 0;  ///< sum of the above
+    double range_image = 0;   ///< rings and columns (AOS, Sec. IV-A)
+    double horizontal = 0;    ///< runs along rings, circular and skipped linkage
+    double vertical = 0;      ///< merges across rings
+    double clusters = 0;      ///< ids, size filter, summaries
+    double objects_total = 0; ///< sum of the four above
 };
 
 /// The result of one frame. Vectors are indexed like the input cloud: every input point has
@@ -27,6 +33,8 @@ struct Result {
     std::vector<PointClass> labels;
     /// Cluster id per point, 0 = no cluster (filled by object segmentation).
     std::vector<uint32_t> cluster_id;
+    /// One entry per cluster, ordered by id (clusters[k].id == k + 1).
+    std::vector<ClusterSummary> clusters;
     TerrainModel terrain;
     StageTimings timings;
 

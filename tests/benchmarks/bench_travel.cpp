@@ -1,12 +1,13 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Ground-segmentation benchmarks, single-threaded:
-//   BM_Ground_KITTI/<frame>   whole TGS on SemanticKITTI seq 00 frames 0-2 (when ../shared/data
-//                             is present; otherwise the benchmark reports an error and skips)
-//   BM_Stage_KITTI_<stage>    each stage alone on frame 000000
-//   BM_Ground_Synthetic       whole TGS on a synthetic HDL-64E frame (always available)
-// Run: build/tests/benchmarks/bench_ground --benchmark_repetitions=10
-//        --benchmark_report_aggregates_only=true --benchmark_out=bench_ground.json
+// TRAVEL benchmarks, single-threaded:
+//   BM_Ground_KITTI/<frame>   ground segmentation (TGS) only, SemanticKITTI seq 00 frames 0-2
+//                             (when ../shared/data is present; otherwise reports an error)
+//   BM_Travel_KITTI/<frame>   TGS + object segmentation (AOS), the whole pipeline
+//   BM_Stage_KITTI/<stage>    each stage alone on frame 000000
+//   BM_Ground_Synthetic, BM_Travel_Synthetic: a synthetic HDL-64E frame (always available)
+// Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
+//        --benchmark_report_aggregates_only=true --benchmark_out=bench_travel.json
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "travel/KittiIO.hpp"
 #include "travel/NodeFitting.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/RunClustering.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
@@ -37,13 +39,15 @@ bool loadKittiFrame(int index, PointCloud& cloud) {
     return true;
 }
 
-void BM_Ground_KITTI(benchmark::State& state) {
+void runKitti(benchmark::State& state, bool objects) {
     PointCloud cloud;
     if (!loadKittiFrame(static_cast<int>(state.range(0)), cloud)) {
         state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
         return;
     }
-    Pipeline pipeline(loadPreset("hdl64"));
+    Params params = loadPreset("hdl64");
+    params.cluster_objects = objects;
+    Pipeline pipeline(params);
     Result result;
     pipeline.process(cloud, {}, result);  // warm the buffers, as on a running vehicle
     for (auto _ : state) {
@@ -52,11 +56,26 @@ void BM_Ground_KITTI(benchmark::State& state) {
     }
     state.counters["points"] = static_cast<double>(cloud.size());
     state.counters["ground"] = static_cast<double>(result.count(PointClass::Ground));
+    state.counters["clusters"] = static_cast<double>(result.clusters.size());
 }
+void BM_Ground_KITTI(benchmark::State& state) { runKitti(state, false); }
+void BM_Travel_KITTI(benchmark::State& state) { runKitti(state, true); }
 BENCHMARK(BM_Ground_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Travel_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 // Each stage alone, on the state the previous stages leave.
-enum Stage { kPreprocess, kEmbedding, kNodeFitting, kGraphSearch, kTtmf, kLabelling };
+enum Stage {
+    kPreprocess,
+    kEmbedding,
+    kNodeFitting,
+    kGraphSearch,
+    kTtmf,
+    kLabelling,
+    kRangeImage,
+    kHorizontal,
+    kVertical,
+    kClusters
+};
 
 void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
     PointCloud cloud;
@@ -72,11 +91,19 @@ void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
     TraversableGraphSearch search;
     TerrainModelFitting ttmf;
     std::vector<PointClass> labels;
+    RangeImage image;
+    RunClustering clustering;
+    std::vector<uint32_t> cluster_id(cloud.size(), 0);
+    std::vector<ClusterSummary> clusters;
     preprocess(cloud, params, {}, aligned);
     field.embed(aligned, model);
     fitNodes(field, params, model);
     search.run(field, params, model);
     ttmf.run(field, params, model);
+    labelPoints(field, aligned, params, model, labels);
+    image.build(cloud, aligned.valid, params);
+    clustering.horizontal(aligned, image, labels, params);
+    clustering.vertical(aligned, params);
     for (auto _ : state) {
         switch (stage) {
             case kPreprocess:
@@ -115,13 +142,19 @@ BENCHMARK_CAPTURE(BM_Stage_KITTI, node_fitting, kNodeFitting)->Unit(benchmark::k
 BENCHMARK_CAPTURE(BM_Stage_KITTI, graph_search, kGraphSearch)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Stage_KITTI, ttmf, kTtmf)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Stage_KITTI, labelling, kLabelling)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_KITTI, range_image, kRangeImage)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_KITTI, horizontal, kHorizontal)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_KITTI, vertical, kVertical)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_KITTI, clusters, kClusters)->Unit(benchmark::kMicrosecond);
 
-void BM_Ground_Synthetic(benchmark::State& state) {
+void runSynthetic(benchmark::State& state, bool objects) {
     const sim::Scene scene = sim::mixed();
     sim::LidarModel lidar = sim::LidarModel::hdl64();
     lidar.range_noise_sigma = 0.02;
     const sim::Scan scan = sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, 1.73, 0, 0, 0));
-    Pipeline pipeline(Params{});
+    Params params;
+    params.cluster_objects = objects;
+    Pipeline pipeline(params);
     Result result;
     for (auto _ : state) {
         pipeline.process(scan.cloud, {}, result);
@@ -129,7 +162,10 @@ void BM_Ground_Synthetic(benchmark::State& state) {
     }
     state.counters["points"] = static_cast<double>(scan.cloud.size());
 }
+void BM_Ground_Synthetic(benchmark::State& state) { runSynthetic(state, false); }
+void BM_Travel_Synthetic(benchmark::State& state) { runSynthetic(state, true); }
 BENCHMARK(BM_Ground_Synthetic)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Travel_Synthetic)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -1,0 +1,90 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Above-ground object segmentation (AOS, paper Sec. IV): the non-ground points of each ring form
+// runs (nodes); runs are linked along the ring (horizontal update, circular and skipped linkage)
+// and across rings (vertical update); linked runs are one object. Merges go through a
+// union-find, so no label is ever stale (the reference relabels only the two runs in hand).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "travel/Clusters.hpp"
+#include "travel/Params.hpp"
+#include "travel/PointCloud.hpp"
+#include "travel/Preprocessing.hpp"
+#include "travel/RangeImage.hpp"
+
+namespace travel {
+
+class RunClustering {
+public:
+    /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
+    /// every ring, with skipped linkage (a point joins the most recent of the last T_skip + 1
+    /// open runs whose end lies within T_horz, or, across an occlusion, within
+    /// occlusion_max_gap) and circular linkage across the 0/360-degree seam.
+    void horizontal(const AlignedCloud& cloud, const RangeImage& image,
+                    const std::vector<PointClass>& labels, const Params& params);
+
+    /// Stage 2 (Sec. IV-C): each run is compared with the runs of the T_ring rings below it
+    /// whose column span, widened by T_ext, overlaps its own; they merge when two of their
+    /// points in nearby columns are closer than T_vert (3-D).
+    void vertical(const AlignedCloud& cloud, const Params& params);
+
+    /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
+    /// 1, 2, ... in the order of their first point (smallest input index): the same input
+    /// gives the same ids. Other points keep id 0.
+    void assignIds(const Params& params, std::vector<uint32_t>& cluster_id);
+
+    std::size_t numRuns() const { return run_first_.size(); }
+
+private:
+    int find(int run);
+    void unite(int a, int b);
+    bool runsTouch(const AlignedCloud& cloud, int a, int b, int column_window,
+                   float max_dist2) const;
+
+    // Non-ground points sorted by (row, column, range): input indices, their columns, and
+    // the offsets of each row in this order.
+    std::vector<uint32_t> sorted_;
+    std::vector<int32_t> sorted_col_;
+    std::vector<uint32_t> row_begin_;
+    std::vector<uint32_t> key_count_;
+    std::vector<float> range_;  // of each sorted point
+
+    // Runs: first and last point (input indices), column span, row; runs of a row are
+    // consecutive and ordered by first column.
+    std::vector<uint32_t> run_first_, run_last_;
+    std::vector<float> run_last_range_;
+    std::vector<int32_t> run_col_begin_, run_col_end_;
+    std::vector<int16_t> run_row_;
+    std::vector<uint32_t> row_runs_begin_;   // runs of row r: [row_runs_begin_[r], [r + 1])
+    std::vector<int32_t> row_max_span_;      // longest column span of a run in each row
+    std::vector<int32_t> point_run_;         // run of each sorted point
+    // Points grouped by run (in column order): offsets and sorted-point positions.
+    std::vector<uint32_t> run_points_begin_, run_points_;
+    std::vector<int32_t> parent_;
+    // Open runs of the ring being swept (most recent last), with the largest range of the
+    // points seen since each run's last point (0 = none): an occluder is nearer than both.
+    struct OpenRun {
+        int32_t run;
+        float max_range_since;
+    };
+    std::vector<OpenRun> open_runs_;
+    std::vector<uint32_t> cursor_;
+
+    // Id assignment scratch.
+    std::vector<uint32_t> root_size_, root_first_;
+    std::vector<int32_t> root_order_;
+    std::vector<uint32_t> root_id_;
+};
+
+/// Per-cluster summaries (count, centroid, boxes, height above the terrain model).
+/// `ground_height(x, y)` gives the terrain height or NaN.
+class TriGridField;
+struct TerrainModel;
+void summarizeClusters(const AlignedCloud& cloud, const std::vector<uint32_t>& cluster_id,
+                       const TriGridField& field, const TerrainModel& terrain,
+                       std::vector<ClusterSummary>& clusters);
+
+}  // namespace travel
