@@ -50,7 +50,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     t.range_image = msSince(clock);
     clustering_.horizontal(aligned_, range_image_, result.labels, params_);
     t.horizontal = msSince(clock);
-    clustering_.vertical(aligned_, params_);
+    clustering_.vertical(params_);
     t.vertical = msSince(clock);
     clustering_.assignIds(params_, result.cluster_id);
     summarizeClusters(aligned_, result.cluster_id, field_, result.terrain, result.clusters);

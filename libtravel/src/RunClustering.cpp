@@ -5,11 +5,11 @@
 //   dropped, unlike the reference which keeps the first point of a cell).
 // * Distances are 3-D Euclidean everywhere (the reference uses xy distance only, which merges
 //   objects stacked above one another, e.g. a canopy over a car).
-// * Skipped linkage at point level: a point joins the most recent of the last T_skip + 1 open
-//   runs of its ring whose end is within T_horz; a point within T_horz of two open runs merges
-//   them. This is the paper's "run i merges with runs up to T_skip ahead when their facing end
-//   points are close", applied as the ring is swept, and it keeps a run's points together when
-//   a nearer object interleaves with it (two points in one column).
+// * Skipped linkage at point level: a point continues the most recent of the last T_skip + 1
+//   open runs of its ring whose end is within T_horz. This is the paper's "run i merges with
+//   runs up to T_skip ahead when their facing end points are close", applied as the ring is
+//   swept, and it keeps a run's points together when a nearer object interleaves with it (two
+//   points in one column).
 // * Occlusions: a distance test alone cannot bridge the shadow of an occluder, which grows
 //   with the distance ratio (a 0.24 m pole at 13 m hides 0.47 m of a wall at 26 m). A point
 //   also continues an open run when the gap is at most occlusion_max_gap, the two ends' ranges
@@ -28,14 +28,12 @@
 #include "travel/TriGridField.hpp"
 
 namespace travel {
-namespace {
+namespace {}  // namespace
 
-inline float dist2(const AlignedCloud& c, uint32_t a, uint32_t b) {
-    const float dx = c.x[a] - c.x[b], dy = c.y[a] - c.y[b], dz = c.z[a] - c.z[b];
+inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
+    const float dx = px_[a] - px_[b], dy = py_[a] - py_[b], dz = pz_[a] - pz_[b];
     return dx * dx + dy * dy + dz * dz;
 }
-
-}  // namespace
 
 int RunClustering::find(int run) {
     while (parent_[run] != run) {
@@ -73,21 +71,18 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const uint32_t total = key_count_[num_keys];
     row_begin_.resize(rows + 1);
     for (int r = 0; r <= rows; ++r) row_begin_[r] = key_count_[static_cast<std::size_t>(r) * cols];
-    sorted_.resize(total);
-    sorted_col_.resize(total);
+    sorted_.resize(total), sorted_col_.resize(total);
+    px_.resize(total), py_.resize(total), pz_.resize(total), range_.resize(total);
     for (std::size_t i = 0; i < n; ++i) {
         if (labels[i] != PointClass::NonGround || row[i] < 0) continue;
         const uint32_t slot = key_count_[static_cast<std::size_t>(row[i]) * cols + col[i]]++;
         sorted_[slot] = static_cast<uint32_t>(i);
         sorted_col_[slot] = col[i];
+        // Contiguous copies in sorted order: every later access is by sorted position.
+        px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
     }
-
-    range_.resize(total);
-    for (uint32_t k = 0; k < total; ++k) {
-        const uint32_t p = sorted_[k];
-        range_[k] = std::sqrt(cloud.x[p] * cloud.x[p] + cloud.y[p] * cloud.y[p] +
-                              cloud.z[p] * cloud.z[p]);
-    }
+    for (uint32_t k = 0; k < total; ++k)
+        range_[k] = std::sqrt(px_[k] * px_[k] + py_[k] * py_[k] + pz_[k] * pz_[k]);
 
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
@@ -96,51 +91,51 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
     const float merge2 = t_horz * t_horz;
-    const float occlusion2 = static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
+    const float occlusion2 =
+        static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
         for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
-            const uint32_t p = sorted_[k];
             const float range = range_[k];
+            // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
-            for (std::size_t s = open_runs_.size(); s-- > 0;) {
-                const int o = open_runs_[s].run;
-                const float d2 = dist2(cloud, p, run_last_[o]);
+            for (std::size_t s = open_runs_.size(); s-- > 0 && joined < 0;) {
+                const int o = open_runs_[s];
+                const float d2 = dist2(k, run_last_[o]);
                 bool link = d2 < merge2;
-                if (!link && d2 < occlusion2 && open_runs_[s].max_range_since > 0.f) {
-                    const float nearest_end = std::min(range, run_last_range_[o]);
-                    link = std::fabs(range - run_last_range_[o]) < t_horz &&
-                           open_runs_[s].max_range_since < nearest_end - t_horz;
+                if (!link && d2 < occlusion2 && std::fabs(range - run_last_range_[o]) < t_horz) {
+                    // Across an occlusion only if every point swept since the run's end is
+                    // in front of both ends (rare: computed only here).
+                    const float in_front = std::min(range, run_last_range_[o]) - t_horz;
+                    link = run_last_[o] + 1 < k;
+                    for (uint32_t j = run_last_[o] + 1; j < k && link; ++j)
+                        link = range_[j] < in_front;
                 }
-                if (!link) continue;
-                if (joined < 0)
-                    joined = o, joined_slot = s;
-                else
-                    unite(joined, o);  // the point bridges two open runs
+                if (link) joined = o, joined_slot = s;
             }
-            for (OpenRun& open : open_runs_)  // p lies between every other run and its future
-                open.max_range_since = std::max(open.max_range_since, range);
             if (joined >= 0) {
-                run_last_[joined] = p;
+                run_last_[joined] = k;
                 run_last_range_[joined] = range;
                 run_col_end_[joined] = sorted_col_[k];
                 point_run_[k] = joined;
                 // Keep the extended run open longest: move it to the most recent slot.
-                open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
-                open_runs_.push_back({joined, 0.f});
+                if (joined_slot + 1 != open_runs_.size()) {
+                    open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
+                    open_runs_.push_back(joined);
+                }
                 continue;
             }
             const int run = static_cast<int>(run_first_.size());
-            run_first_.push_back(p), run_last_.push_back(p), run_last_range_.push_back(range);
+            run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
             parent_.push_back(run);
             point_run_[k] = run;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
-            open_runs_.push_back({run, 0.f});
+            open_runs_.push_back(run);
         }
         // Circular linkage across the seam: the ring's last runs against its first runs.
         const int begin = static_cast<int>(row_runs_begin_[r]);
@@ -148,7 +143,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         const int span = static_cast<int>(std::min<std::size_t>(max_open, end - begin));
         for (int late = end - span; late < end; ++late)
             for (int early = begin; early < begin + span; ++early)
-                if (late != early && dist2(cloud, run_last_[late], run_first_[early]) < merge2)
+                if (late != early && dist2(run_last_[late], run_first_[early]) < merge2)
                     unite(late, early);
     }
     row_runs_begin_[rows] = static_cast<uint32_t>(run_first_.size());
@@ -163,14 +158,19 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     cursor_.assign(run_points_begin_.begin(), run_points_begin_.end() - 1);
     for (uint32_t k = 0; k < total; ++k) run_points_[cursor_[point_run_[k]]++] = k;
 
-    row_max_span_.assign(rows, 0);
-    for (std::size_t run = 0; run < num_runs; ++run)
-        row_max_span_[run_row_[run]] = std::max(row_max_span_[run_row_[run]],
-                                                run_col_end_[run] - run_col_begin_[run]);
+    // Bounding box of each run: lets the vertical update reject far pairs without comparing
+    // their points.
+    const float inf = std::numeric_limits<float>::infinity();
+    run_box_.assign(num_runs, RunBox{{inf, inf, inf}, {-inf, -inf, -inf}});
+    for (uint32_t k = 0; k < total; ++k) {
+        RunBox& box = run_box_[point_run_[k]];
+        const float v[3] = {px_[k], py_[k], pz_[k]};
+        for (int d = 0; d < 3; ++d)
+            box.lo[d] = std::min(box.lo[d], v[d]), box.hi[d] = std::max(box.hi[d], v[d]);
+    }
 }
 
-bool RunClustering::runsTouch(const AlignedCloud& cloud, int a, int b, int column_window,
-                              float max_dist2) const {
+bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) const {
     // Both runs' points are in column order: sweep them together, comparing points whose
     // columns differ by at most column_window.
     const uint32_t b_begin = run_points_begin_[b], b_end = run_points_begin_[b + 1];
@@ -182,34 +182,63 @@ bool RunClustering::runsTouch(const AlignedCloud& cloud, int a, int b, int colum
         for (uint32_t j = jb; j < b_end; ++j) {
             const uint32_t kb = run_points_[j];
             if (sorted_col_[kb] > ca + column_window) break;
-            if (dist2(cloud, sorted_[ka], sorted_[kb]) < max_dist2) return true;
+            if (dist2(ka, kb) < max_dist2) return true;
         }
     }
     return false;
 }
 
-void RunClustering::vertical(const AlignedCloud& cloud, const Params& params) {
+void RunClustering::vertical(const Params& params) {
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
     const int ext = params.vertical_column_extension;
-    const float merge2 = static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
+    const float merge2 =
+        static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
+    // Runs of a row are ordered by first column, so the runs that can overlap [lo, hi] are -
+    // if no run were longer than kLongSpan columns - those starting in [lo - kLongSpan, hi]. The
+    // few longer runs (walls, kerbs) are listed per row and always checked, so one long run cannot
+    // turn the search into a scan of the whole row.
+    constexpr int kLongSpan = 32;
+    long_runs_.clear();
+    long_runs_begin_.assign(rows + 1, 0);
+    for (int r = 0; r < rows; ++r) {
+        long_runs_begin_[r] = static_cast<uint32_t>(long_runs_.size());
+        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b)
+            if (run_col_end_[b] - run_col_begin_[b] > kLongSpan)
+                long_runs_.push_back(static_cast<int32_t>(b));
+    }
+    long_runs_begin_[rows] = static_cast<uint32_t>(long_runs_.size());
+
+    auto consider = [&](int a, int b, int lo) {
+        if (run_col_end_[b] < lo) return;
+        // Gap between the two boxes: if it exceeds T_vert, no two points can be closer.
+        float gap2 = 0.f;
+        for (int d = 0; d < 3; ++d) {
+            const float g = std::max(run_box_[a].lo[d] - run_box_[b].hi[d],
+                                     run_box_[b].lo[d] - run_box_[a].hi[d]);
+            if (g > 0.f) gap2 += g * g;
+        }
+        if (gap2 >= merge2 || find(a) == find(b)) return;
+        if (runsTouch(a, b, ext, merge2)) unite(a, b);
+    };
+    // Runs of row r are visited in column order, so the first candidate of each lower row
+    // only moves forward: one pointer per lower row instead of a binary search per query.
+    const int span = params.vertical_ring_span;
+    window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
     for (int r = 1; r < rows; ++r) {
+        const int lowest = std::max(0, r - span);
+        for (int rr = lowest; rr < r; ++rr) window_start_[r - 1 - rr] = row_runs_begin_[rr];
         for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
-            for (int rr = r - 1; rr >= std::max(0, r - params.vertical_ring_span); --rr) {
-                // Runs of row rr are ordered by first column: binary search the window of
-                // runs that can overlap [lo, hi] (a run starting before lo - max_span ends
-                // before lo).
-                const auto first = run_col_begin_.begin() + row_runs_begin_[rr];
-                const auto last = run_col_begin_.begin() + row_runs_begin_[rr + 1];
-                auto it = std::lower_bound(first, last, lo - row_max_span_[rr]);
-                const auto stop = std::upper_bound(it, last, hi);
-                for (; it != stop; ++it) {
-                    const int b = static_cast<int>(it - run_col_begin_.begin());
-                    if (run_col_end_[b] < lo) continue;
-                    if (find(static_cast<int>(a)) == find(b)) continue;
-                    if (runsTouch(cloud, static_cast<int>(a), b, ext, merge2))
-                        unite(static_cast<int>(a), b);
-                }
+            for (int rr = r - 1; rr >= lowest; --rr) {
+                uint32_t& start = window_start_[r - 1 - rr];
+                const uint32_t end = row_runs_begin_[rr + 1];
+                while (start < end && run_col_begin_[start] < lo - kLongSpan) ++start;
+                for (uint32_t b = start; b < end && run_col_begin_[b] <= hi; ++b)
+                    if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan)
+                        consider(static_cast<int>(a), static_cast<int>(b), lo);
+                for (uint32_t l = long_runs_begin_[rr]; l < long_runs_begin_[rr + 1]; ++l)
+                    if (run_col_begin_[long_runs_[l]] <= hi)
+                        consider(static_cast<int>(a), long_runs_[l], lo);
             }
         }
     }
@@ -266,10 +295,12 @@ void summarizeClusters(const AlignedCloud& cloud, const std::vector<uint32_t>& c
         c.aabb_min = c.aabb_min.cwiseMin(p);
         c.aabb_max = c.aabb_max.cwiseMax(p);
         s.sx += p.x(), s.sy += p.y(), s.sz += p.z();
-        s.sxx += double(p.x()) * p.x(), s.sxy += double(p.x()) * p.y(), s.syy += double(p.y()) * p.y();
+        s.sxx += double(p.x()) * p.x(), s.sxy += double(p.x()) * p.y(),
+            s.syy += double(p.y()) * p.y();
     }
     // Oriented box axes from the 2-D covariance of xy.
     std::vector<Eigen::Vector4f> extent(num);  // umin, umax, vmin, vmax
+    std::vector<Eigen::Vector2f> axis(num);    // cos, sin of the yaw
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
         c.id = k + 1;
@@ -279,12 +310,13 @@ void summarizeClusters(const AlignedCloud& cloud, const std::vector<uint32_t>& c
         const double cxx = sums[k].sxx * inv - mx * mx, cyy = sums[k].syy * inv - my * my;
         const double cxy = sums[k].sxy * inv - mx * my;
         c.obb_yaw = static_cast<float>(0.5 * std::atan2(2 * cxy, cxx - cyy));
+        axis[k] = Eigen::Vector2f(std::cos(c.obb_yaw), std::sin(c.obb_yaw));
         extent[k] = Eigen::Vector4f(inf, -inf, inf, -inf);
     }
     for (std::size_t i = 0; i < cluster_id.size(); ++i) {
         const uint32_t id = cluster_id[i];
         if (id == 0) continue;
-        const float cy = std::cos(clusters[id - 1].obb_yaw), sy = std::sin(clusters[id - 1].obb_yaw);
+        const float cy = axis[id - 1].x(), sy = axis[id - 1].y();
         const float u = cy * cloud.x[i] + sy * cloud.y[i], v = -sy * cloud.x[i] + cy * cloud.y[i];
         Eigen::Vector4f& e = extent[id - 1];
         e[0] = std::min(e[0], u), e[1] = std::max(e[1], u);

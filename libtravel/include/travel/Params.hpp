@@ -81,22 +81,23 @@ namespace travel {
     /* ---- TTMF and point labels (Sec. III-D, eq. 5) ---- */                                     \
     X(bool, ttmf, true, "", 0, 1,                                                                 \
       "Traversable terrain model fitting: refit every node from corner heights")                  \
-    X(double, ground_dist, 0.1, "m", 0.0, 10.0,                                                   \
+    X(double, ground_dist, 0.13, "m", 0.0, 10.0,                                                  \
       "epsilon_3: a point of a traversable node is ground when its signed distance to the "       \
-      "refitted plane is below this")                                                             \
-    X(bool, label_with_node_plane, true, "", 0, 1,                                                \
+      "refitted plane is below this (paper 0.1; 0.13 keeps road points beside cars out of "       \
+      "their clusters, see README)")                                                              \
+    X(bool, label_with_node_plane, false, "", 0, 1,                                               \
       "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
       "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
       "Points more than this below the refitted plane are outliers (below-ground noise)")         \
     /* ---- Range image (Sec. IV-A) ---- */                                                       \
     X(std::string, ring_source, "auto", "auto|field|scan_order|table", 0, 0,                      \
-      "Where a point's ring comes from: the input's ring field, the scan order (a ring ends "    \
-      "where the azimuth wraps around, KITTI .bin files), the elevation table; auto = the "      \
-      "first of these that works")                                                               \
+      "Where a point's ring comes from: the input's ring field, the scan order (a ring ends "     \
+      "where the azimuth wraps around, KITTI .bin files), the elevation table; auto = the "       \
+      "first of these that works")                                                                \
     X(std::string, elevation_table, "hdl64", "hdl64|hdl32|vlp16|os128|uniform", 0, 0,             \
-      "Beam elevations used when rings come from the table: a sensor's (non-uniform for the "    \
-      "HDL-64E) or num_rings uniform bins in [min_elevation_deg, max_elevation_deg]")            \
+      "Beam elevations used when rings come from the table: a sensor's (non-uniform for the "     \
+      "HDL-64E) or num_rings uniform bins in [min_elevation_deg, max_elevation_deg]")             \
     X(int, num_rings, 64, "", 1, 1024, "Rows of the range image (laser rings)")                   \
     X(int, num_columns, 2048, "", 16, 65536, "Columns of the range image (azimuth bins)")         \
     X(double, min_elevation_deg, -24.9, "deg", -90.0, 90.0,                                       \
@@ -108,20 +109,20 @@ namespace travel {
     X(double, horizontal_merge_dist, 0.4, "m", 0.0, 100.0,                                        \
       "T_horz: neighbouring points of a ring closer than this (3-D) form one run")                \
     X(int, horizontal_skip_runs, 5, "", 0, 10000,                                                 \
-      "T_skip: a run also merges with the next runs up to this many ahead on its ring when "     \
-      "their facing end points are closer than T_horz (bridges occlusions)")                     \
-    X(double, occlusion_max_gap, 1.0, "m", 0.0, 100.0,                                           \
-      "Skipped linkage across an occlusion: a point continues an open run across a gap up to "   \
-      "this wide when every point seen in between is nearer to the sensor (by T_horz) and the "  \
-      "two ends' ranges differ by less than T_horz")                                             \
+      "T_skip: a run also merges with the next runs up to this many ahead on its ring when "      \
+      "their facing end points are closer than T_horz (bridges occlusions)")                      \
+    X(double, occlusion_max_gap, 1.0, "m", 0.0, 100.0,                                            \
+      "Skipped linkage across an occlusion: a point continues an open run across a gap up to "    \
+      "this wide when every point seen in between is nearer to the sensor (by T_horz) and the "   \
+      "two ends' ranges differ by less than T_horz")                                              \
     X(int, vertical_ring_span, 3, "", 1, 1024,                                                    \
       "T_ring: a run is compared with the runs of this many rings below it")                      \
     X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \
-      "T_vert: runs of different rings merge when their closest points are nearer than this")    \
+      "T_vert: runs of different rings merge when their closest points are nearer than this")     \
     X(int, vertical_column_extension, 5, "", 0, 65536,                                            \
-      "T_ext: columns by which a run's span is widened when looking for runs on other rings")    \
+      "T_ext: columns by which a run's span is widened when looking for runs on other rings")     \
     X(int, min_cluster_size, 10, "", 1, 100000000,                                                \
-      "Clusters with fewer points keep class nonground with cluster id 0")                       \
+      "Clusters with fewer points keep class nonground with cluster id 0")                        \
     X(int, max_cluster_size, 100000000, "", 1, 2000000000,                                        \
       "Clusters with more points keep class nonground with cluster id 0")
 

@@ -55,10 +55,9 @@ void applyOverride(const std::string& key_equals_value, Params& params);
 /// True when `value` is one of the '|'-separated `choices` ("auto|field|table"), exactly.
 bool isAllowedChoice(const std::string& value, const char* choices);
 
-/// Every parameter as "key: value", each preceded by "# [unit] description (range)" (for strings
-/// "# description (one of a|b|c)"). Doubles are
-/// written with the shortest text that reads back to the same value, so
-/// applyParamsText(paramsToYaml(p)) reproduces p exactly.
+/// Every parameter as "key: value", each preceded by "# [unit] description (range)", or for
+/// strings "# description (one of a|b|c)". Doubles are written with the shortest text that reads
+/// back to the same value, so applyParamsText(paramsToYaml(p)) reproduces p exactly.
 std::string paramsToYaml(const Params& params);
 
 }  // namespace travel

@@ -18,7 +18,7 @@
 namespace travel {
 
 class RunClustering {
-public:
+  public:
     /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
     /// every ring, with skipped linkage (a point joins the most recent of the last T_skip + 1
     /// open runs whose end lies within T_horz, or, across an occlusion, within
@@ -29,7 +29,7 @@ public:
     /// Stage 2 (Sec. IV-C): each run is compared with the runs of the T_ring rings below it
     /// whose column span, widened by T_ext, overlaps its own; they merge when two of their
     /// points in nearby columns are closer than T_vert (3-D).
-    void vertical(const AlignedCloud& cloud, const Params& params);
+    void vertical(const Params& params);
 
     /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
     /// 1, 2, ... in the order of their first point (smallest input index): the same input
@@ -38,11 +38,11 @@ public:
 
     std::size_t numRuns() const { return run_first_.size(); }
 
-private:
+  private:
     int find(int run);
     void unite(int a, int b);
-    bool runsTouch(const AlignedCloud& cloud, int a, int b, int column_window,
-                   float max_dist2) const;
+    bool runsTouch(int a, int b, int column_window, float max_dist2) const;
+    float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
 
     // Non-ground points sorted by (row, column, range): input indices, their columns, and
     // the offsets of each row in this order.
@@ -50,27 +50,27 @@ private:
     std::vector<int32_t> sorted_col_;
     std::vector<uint32_t> row_begin_;
     std::vector<uint32_t> key_count_;
-    std::vector<float> range_;  // of each sorted point
+    std::vector<float> px_, py_, pz_, range_;  // of each sorted point
 
-    // Runs: first and last point (input indices), column span, row; runs of a row are
+    // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
     std::vector<uint32_t> run_first_, run_last_;
     std::vector<float> run_last_range_;
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
-    std::vector<uint32_t> row_runs_begin_;   // runs of row r: [row_runs_begin_[r], [r + 1])
-    std::vector<int32_t> row_max_span_;      // longest column span of a run in each row
-    std::vector<int32_t> point_run_;         // run of each sorted point
+    std::vector<uint32_t> row_runs_begin_;  // runs of row r: [row_runs_begin_[r], [r + 1])
+    struct RunBox {
+        float lo[3], hi[3];
+    };
+    std::vector<RunBox> run_box_;
+    std::vector<int32_t> long_runs_;  // runs spanning many columns, by row
+    std::vector<uint32_t> long_runs_begin_;
+    std::vector<uint32_t> window_start_;  // per lower row, during the vertical update
+    std::vector<int32_t> point_run_;      // run of each sorted point
     // Points grouped by run (in column order): offsets and sorted-point positions.
     std::vector<uint32_t> run_points_begin_, run_points_;
     std::vector<int32_t> parent_;
-    // Open runs of the ring being swept (most recent last), with the largest range of the
-    // points seen since each run's last point (0 = none): an occluder is nearer than both.
-    struct OpenRun {
-        int32_t run;
-        float max_range_since;
-    };
-    std::vector<OpenRun> open_runs_;
+    std::vector<int32_t> open_runs_;  // of the ring being swept, most recent last
     std::vector<uint32_t> cursor_;
 
     // Id assignment scratch.
