@@ -53,7 +53,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     clustering_.vertical(params_);
     t.vertical = msSince(clock);
     clustering_.assignIds(params_, result.cluster_id);
-    summarizeClusters(aligned_, result.cluster_id, field_, result.terrain, result.clusters);
+    clustering_.summarize(field_, result.terrain, result.clusters);
     t.clusters = msSince(clock);
     t.objects_total = t.range_image + t.horizontal + t.vertical + t.clusters;
 }

@@ -56,8 +56,10 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     const bool deskew = params.deskew && cloud.hasTime() && input.linear_velocity &&
                         input.angular_velocity && input.linear_velocity->allFinite() &&
                         input.angular_velocity->allFinite();
-    const Eigen::Vector3f v = deskew ? input.linear_velocity->cast<float>() : Eigen::Vector3f{};
-    const Eigen::Vector3f w = deskew ? input.angular_velocity->cast<float>() : Eigen::Vector3f{};
+    const Eigen::Vector3f v =
+        deskew ? Eigen::Vector3f(input.linear_velocity->cast<float>()) : Eigen::Vector3f::Zero();
+    const Eigen::Vector3f w =
+        deskew ? Eigen::Vector3f(input.angular_velocity->cast<float>()) : Eigen::Vector3f::Zero();
     const float w_norm = w.norm();
     const Eigen::Vector3f w_axis =
         w_norm > 0 ? Eigen::Vector3f(w / w_norm) : Eigen::Vector3f::UnitZ();

@@ -197,7 +197,7 @@ void RunClustering::vertical(const Params& params) {
     // if no run were longer than kLongSpan columns - those starting in [lo - kLongSpan, hi]. The
     // few longer runs (walls, kerbs) are listed per row and always checked, so one long run cannot
     // turn the search into a scan of the whole row.
-    constexpr int kLongSpan = 32;
+    constexpr int kLongSpan = 8;
     long_runs_.clear();
     long_runs_begin_.assign(rows + 1, 0);
     for (int r = 0; r < rows; ++r) {
@@ -236,9 +236,10 @@ void RunClustering::vertical(const Params& params) {
                 for (uint32_t b = start; b < end && run_col_begin_[b] <= hi; ++b)
                     if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan)
                         consider(static_cast<int>(a), static_cast<int>(b), lo);
-                for (uint32_t l = long_runs_begin_[rr]; l < long_runs_begin_[rr + 1]; ++l)
-                    if (run_col_begin_[long_runs_[l]] <= hi)
-                        consider(static_cast<int>(a), long_runs_[l], lo);
+                // Long runs are in first-column order too: stop at the first beyond hi.
+                for (uint32_t l = long_runs_begin_[rr];
+                     l < long_runs_begin_[rr + 1] && run_col_begin_[long_runs_[l]] <= hi; ++l)
+                    consider(static_cast<int>(a), long_runs_[l], lo);
             }
         }
     }
@@ -246,10 +247,13 @@ void RunClustering::vertical(const Params& params) {
 
 void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& cluster_id) {
     const std::size_t num_runs = run_first_.size();
+    // Root of every run once (not a find() per point), then sizes and first points per root.
+    run_root_.resize(num_runs);
+    for (std::size_t run = 0; run < num_runs; ++run) run_root_[run] = find(static_cast<int>(run));
     root_size_.assign(num_runs, 0);
     root_first_.assign(num_runs, std::numeric_limits<uint32_t>::max());
     for (uint32_t k = 0; k < sorted_.size(); ++k) {
-        const int root = find(point_run_[k]);
+        const int root = run_root_[point_run_[k]];
         ++root_size_[root];
         root_first_[root] = std::min(root_first_[root], sorted_[k]);
     }
@@ -266,68 +270,102 @@ void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& clust
     root_id_.assign(num_runs, 0);
     for (std::size_t k = 0; k < root_order_.size(); ++k)
         root_id_[root_order_[k]] = static_cast<uint32_t>(k + 1);
-    for (uint32_t k = 0; k < sorted_.size(); ++k)
-        cluster_id[sorted_[k]] = root_id_[find(point_run_[k])];
+    point_id_.resize(sorted_.size());
+    for (uint32_t k = 0; k < sorted_.size(); ++k) {
+        point_id_[k] = root_id_[run_root_[point_run_[k]]];
+        cluster_id[sorted_[k]] = point_id_[k];
+    }
 }
 
-void summarizeClusters(const AlignedCloud& cloud, const std::vector<uint32_t>& cluster_id,
-                       const TriGridField& field, const TerrainModel& terrain,
-                       std::vector<ClusterSummary>& clusters) {
-    uint32_t num = 0;
-    for (const uint32_t id : cluster_id) num = std::max(num, id);
+void RunClustering::summarize(const TriGridField& field, const TerrainModel& terrain,
+                              std::vector<ClusterSummary>& clusters) {
+    const uint32_t num = static_cast<uint32_t>(root_order_.size());
     clusters.assign(num, ClusterSummary{});
-    struct Sums {
+    sums_.assign(num, Sums{});
+    const float inf = std::numeric_limits<float>::infinity();
+    for (uint32_t k = 0; k < num; ++k) {
+        clusters[k].id = k + 1;
+        clusters[k].first_point = root_first_[root_order_[k]];
+        clusters[k].aabb_min.setConstant(inf);
+        clusters[k].aabb_max.setConstant(-inf);
+        clusters[k].num_points = 0;
+    }
+    // Pass 1 over the clustered points (sorted order, contiguous): counts, boxes, moments.
+    // Consecutive points mostly share a cluster: accumulate in locals and flush when the id
+    // changes, instead of chaining every += through the cluster's memory.
+    struct Acc {
+        uint32_t n = 0;
+        Eigen::Array3f lo, hi;
         double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
     };
-    std::vector<Sums> sums(num);
-    const float inf = std::numeric_limits<float>::infinity();
-    for (ClusterSummary& c : clusters) {
-        c.aabb_min.setConstant(inf);
-        c.aabb_max.setConstant(-inf);
-    }
-    for (std::size_t i = 0; i < cluster_id.size(); ++i) {
-        const uint32_t id = cluster_id[i];
-        if (id == 0) continue;
+    auto flush = [&](uint32_t id, const Acc& a) {
+        if (id == 0 || a.n == 0) return;
         ClusterSummary& c = clusters[id - 1];
-        Sums& s = sums[id - 1];
-        if (c.num_points++ == 0) c.first_point = static_cast<uint32_t>(i);
-        const Eigen::Vector3f p(cloud.x[i], cloud.y[i], cloud.z[i]);
-        c.aabb_min = c.aabb_min.cwiseMin(p);
-        c.aabb_max = c.aabb_max.cwiseMax(p);
-        s.sx += p.x(), s.sy += p.y(), s.sz += p.z();
-        s.sxx += double(p.x()) * p.x(), s.sxy += double(p.x()) * p.y(),
-            s.syy += double(p.y()) * p.y();
-    }
-    // Oriented box axes from the 2-D covariance of xy.
-    std::vector<Eigen::Vector4f> extent(num);  // umin, umax, vmin, vmax
-    std::vector<Eigen::Vector2f> axis(num);    // cos, sin of the yaw
-    for (uint32_t k = 0; k < num; ++k) {
-        ClusterSummary& c = clusters[k];
-        c.id = k + 1;
-        const double inv = 1.0 / std::max<uint32_t>(c.num_points, 1);
-        const double mx = sums[k].sx * inv, my = sums[k].sy * inv;
-        c.centroid = Eigen::Vector3f(float(mx), float(my), float(sums[k].sz * inv));
-        const double cxx = sums[k].sxx * inv - mx * mx, cyy = sums[k].syy * inv - my * my;
-        const double cxy = sums[k].sxy * inv - mx * my;
-        c.obb_yaw = static_cast<float>(0.5 * std::atan2(2 * cxy, cxx - cyy));
-        axis[k] = Eigen::Vector2f(std::cos(c.obb_yaw), std::sin(c.obb_yaw));
-        extent[k] = Eigen::Vector4f(inf, -inf, inf, -inf);
-    }
-    for (std::size_t i = 0; i < cluster_id.size(); ++i) {
-        const uint32_t id = cluster_id[i];
+        Sums& s = sums_[id - 1];
+        c.num_points += a.n;
+        c.aabb_min = c.aabb_min.cwiseMin(a.lo.matrix());
+        c.aabb_max = c.aabb_max.cwiseMax(a.hi.matrix());
+        s.sx += a.sx, s.sy += a.sy, s.sz += a.sz, s.sxx += a.sxx, s.sxy += a.sxy, s.syy += a.syy;
+    };
+    Acc acc;
+    uint32_t current = 0;
+    for (uint32_t k = 0; k < point_id_.size(); ++k) {
+        const uint32_t id = point_id_[k];
+        if (id != current) {
+            flush(current, acc);
+            current = id;
+            acc = Acc{};
+            acc.lo.setConstant(inf), acc.hi.setConstant(-inf);
+        }
         if (id == 0) continue;
-        const float cy = axis[id - 1].x(), sy = axis[id - 1].y();
-        const float u = cy * cloud.x[i] + sy * cloud.y[i], v = -sy * cloud.x[i] + cy * cloud.y[i];
-        Eigen::Vector4f& e = extent[id - 1];
-        e[0] = std::min(e[0], u), e[1] = std::max(e[1], u);
-        e[2] = std::min(e[2], v), e[3] = std::max(e[3], v);
+        const Eigen::Array3f p(px_[k], py_[k], pz_[k]);
+        ++acc.n;
+        acc.lo = acc.lo.min(p), acc.hi = acc.hi.max(p);
+        acc.sx += p.x(), acc.sy += p.y(), acc.sz += p.z();
+        acc.sxx += double(p.x()) * p.x(), acc.sxy += double(p.x()) * p.y();
+        acc.syy += double(p.y()) * p.y();
+    }
+    flush(current, acc);
+    // Oriented box axes from the 2-D covariance of xy.
+    for (uint32_t k = 0; k < num; ++k) {
+        ClusterSummary& c = clusters[k];
+        Sums& s = sums_[k];
+        const double inv = 1.0 / std::max<uint32_t>(c.num_points, 1);
+        const double mx = s.sx * inv, my = s.sy * inv;
+        c.centroid = Eigen::Vector3f(float(mx), float(my), float(s.sz * inv));
+        const double cxx = s.sxx * inv - mx * mx, cyy = s.syy * inv - my * my;
+        const double cxy = s.sxy * inv - mx * my;
+        c.obb_yaw = static_cast<float>(0.5 * std::atan2(2 * cxy, cxx - cyy));
+        s.cos_yaw = std::cos(c.obb_yaw), s.sin_yaw = std::sin(c.obb_yaw);
+        s.extent = Eigen::Vector4f(inf, -inf, inf, -inf);  // umin, umax, vmin, vmax
+    }
+    // Pass 2: extents along the box axes (same run-length accumulation).
+    Eigen::Vector4f ext(inf, -inf, inf, -inf);
+    current = 0;
+    for (uint32_t k = 0; k <= point_id_.size(); ++k) {
+        const uint32_t id = k < point_id_.size() ? point_id_[k] : 0;
+        if (id != current) {
+            if (current) {
+                Eigen::Vector4f& e = sums_[current - 1].extent;
+                e[0] = std::min(e[0], ext[0]), e[1] = std::max(e[1], ext[1]);
+                e[2] = std::min(e[2], ext[2]), e[3] = std::max(e[3], ext[3]);
+            }
+            current = id;
+            ext = Eigen::Vector4f(inf, -inf, inf, -inf);
+        }
+        if (id == 0) continue;
+        const Sums& s = sums_[id - 1];
+        const float u = s.cos_yaw * px_[k] + s.sin_yaw * py_[k];
+        const float v = -s.sin_yaw * px_[k] + s.cos_yaw * py_[k];
+        ext[0] = std::min(ext[0], u), ext[1] = std::max(ext[1], u);
+        ext[2] = std::min(ext[2], v), ext[3] = std::max(ext[3], v);
     }
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
-        const Eigen::Vector4f& e = extent[k];
+        const Eigen::Vector4f& e = sums_[k].extent;
         float length = e[1] - e[0], width = e[3] - e[2];
         const float um = 0.5f * (e[0] + e[1]), vm = 0.5f * (e[2] + e[3]);
-        const float cy = std::cos(c.obb_yaw), sy = std::sin(c.obb_yaw);
+        const float cy = sums_[k].cos_yaw, sy = sums_[k].sin_yaw;
         c.obb_center = Eigen::Vector3f(cy * um - sy * vm, sy * um + cy * vm,
                                        0.5f * (c.aabb_min.z() + c.aabb_max.z()));
         if (width > length) {  // length is the longer side; yaw follows it

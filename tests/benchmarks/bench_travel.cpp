@@ -139,7 +139,7 @@ void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
                 break;
             case kClusters:
                 clustering.assignIds(params, cluster_id);
-                summarizeClusters(aligned, cluster_id, field, model, clusters);
+                clustering.summarize(field, model, clusters);
                 break;
         }
         benchmark::ClobberMemory();

@@ -17,6 +17,9 @@
 
 namespace travel {
 
+class TriGridField;
+struct TerrainModel;
+
 class RunClustering {
   public:
     /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
@@ -35,6 +38,11 @@ class RunClustering {
     /// 1, 2, ... in the order of their first point (smallest input index): the same input
     /// gives the same ids. Other points keep id 0.
     void assignIds(const Params& params, std::vector<uint32_t>& cluster_id);
+
+    /// Stage 4: per-cluster summaries (count, centroid, boxes, height above the terrain
+    /// model) of the clusters of the last assignIds().
+    void summarize(const TriGridField& field, const TerrainModel& terrain,
+                   std::vector<ClusterSummary>& clusters);
 
     std::size_t numRuns() const { return run_first_.size(); }
 
@@ -77,14 +85,14 @@ class RunClustering {
     std::vector<uint32_t> root_size_, root_first_;
     std::vector<int32_t> root_order_;
     std::vector<uint32_t> root_id_;
+    std::vector<int32_t> run_root_;
+    std::vector<uint32_t> point_id_;  // cluster id of each sorted point
+    struct Sums {
+        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
+        float cos_yaw = 1, sin_yaw = 0;
+        Eigen::Vector4f extent{0.f, 0.f, 0.f, 0.f};
+    };
+    std::vector<Sums> sums_;
 };
-
-/// Per-cluster summaries (count, centroid, boxes, height above the terrain model).
-/// `ground_height(x, y)` gives the terrain height or NaN.
-class TriGridField;
-struct TerrainModel;
-void summarizeClusters(const AlignedCloud& cloud, const std::vector<uint32_t>& cluster_id,
-                       const TriGridField& field, const TerrainModel& terrain,
-                       std::vector<ClusterSummary>& clusters);
 
 }  // namespace travel
