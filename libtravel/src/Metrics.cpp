@@ -13,20 +13,6 @@ constexpr uint32_t kUnlabeled = 0;
 constexpr uint32_t kOutlier = 1;
 constexpr uint32_t kVegetation = 70;
 
-bool isGroundClass(uint32_t semantic) {
-    switch (semantic) {
-        case 40:  // road
-        case 44:  // parking
-        case 48:  // sidewalk
-        case 49:  // other-ground
-        case 60:  // lane-marking
-        case 72:  // terrain
-            return true;
-        default:
-            return false;
-    }
-}
-
 // 100 * num / den, or `if_empty` when den = 0.
 double percent(uint64_t num, uint64_t den, double if_empty) {
     return den == 0 ? if_empty : 100.0 * static_cast<double>(num) / static_cast<double>(den);
@@ -69,7 +55,7 @@ ConfusionCounts countGround(const std::vector<PointClass>& pred,
             // Low vegetation (grass) is ground under protocol A.
             truly_ground = static_cast<double>(z[i]) < vegetation_ground_below;
         } else {
-            truly_ground = isGroundClass(semantic);
+            truly_ground = isSemanticKittiGround(semantic);
         }
         if (truly_ground) {
             ++(predicted_ground ? counts.tp : counts.fn);

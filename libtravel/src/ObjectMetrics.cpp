@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/ObjectMetrics.hpp"
 
+#include "travel/Metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,23 +14,9 @@ namespace travel {
 
 namespace {
 
-bool isGroundClass(uint32_t semantic) {
-    switch (semantic) {
-        case 40:  // road
-        case 44:  // parking
-        case 48:  // sidewalk
-        case 49:  // other-ground
-        case 60:  // lane-marking
-        case 72:  // terrain
-            return true;
-        default:
-            return false;
-    }
-}
-
 // Everything that is neither ground nor without truth (0 unlabeled, 1 outlier).
 bool isObjectClass(uint32_t semantic) {
-    return semantic != 0 && semantic != 1 && !isGroundClass(semantic);
+    return semantic != 0 && semantic != 1 && !isSemanticKittiGround(semantic);
 }
 
 bool isThingClass(uint32_t semantic) {

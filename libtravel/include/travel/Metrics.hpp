@@ -22,6 +22,22 @@
 
 namespace travel {
 
+/// SemanticKITTI ground classes: 40 road, 44 parking, 48 sidewalk, 49 other-ground,
+/// 60 lane-marking, 72 terrain (semantic = label & 0xFFFF).
+inline bool isSemanticKittiGround(uint32_t semantic) {
+    switch (semantic) {
+        case 40:
+        case 44:
+        case 48:
+        case 49:
+        case 60:
+        case 72:
+            return true;
+        default:
+            return false;
+    }
+}
+
 enum class GroundProtocol { A, B };
 
 /// "A (Patchwork benchmark)" or "B (Patchwork++)".
