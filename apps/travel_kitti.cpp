@@ -60,11 +60,11 @@ int run(int argc, char** argv) {
         "as ground, unlabeled points predicted ground count as TP) and protocol B (Patchwork++: "
         "classes 0, 1, 70 not scored).",
         ' ', "0.1");
-    TCLAP::ValueArg<std::string> scans(
-        "", "scans", "Directory of KITTI .bin scans (float32 x y z i); required", false, "",
-        "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Output directory for .label files (created); required", false,
-                                     "", "DIR", cmd);
+    TCLAP::ValueArg<std::string> scans("", "scans",
+                                       "Directory of KITTI .bin scans (float32 x y z i); required",
+                                       false, "", "DIR", cmd);
+    TCLAP::ValueArg<std::string> out(
+        "", "out", "Output directory for .label files (created); required", false, "", "DIR", cmd);
     TCLAP::ValueArg<std::string> labels(
         "", "labels", "SemanticKITTI labels directory: enables the metrics", false, "", "DIR", cmd);
     TCLAP::ValueArg<std::string> preset("", "preset",
@@ -123,10 +123,10 @@ int run(int argc, char** argv) {
     const travel::GroundProtocol protocols[2] = {travel::GroundProtocol::A,
                                                  travel::GroundProtocol::B};
     std::vector<double> f1[2], precision[2], recall[2], accuracy[2];
-    StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}},    {"node_fitting", {}},
-                            {"graph_search", {}}, {"ttmf", {}},         {"labelling", {}},
-                            {"ground_total", {}}, {"range_image", {}},  {"horizontal", {}},
-                            {"vertical", {}},     {"clusters", {}},     {"objects_total", {}},
+    StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}},   {"node_fitting", {}},
+                            {"graph_search", {}}, {"ttmf", {}},        {"labelling", {}},
+                            {"ground_total", {}}, {"range_image", {}}, {"horizontal", {}},
+                            {"vertical", {}},     {"clusters", {}},    {"objects_total", {}},
                             {"total", {}}};
     constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
     travel::ObjectScoreAccumulator object_scores;
@@ -151,10 +151,18 @@ int run(int argc, char** argv) {
         travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
 
         const travel::StageTimings& t = result.timings;
-        const double stage_ms[] = {t.preprocess,   t.embedding,   t.node_fitting,
-                                   t.graph_search, t.ttmf,        t.labelling,
-                                   t.ground_total, t.range_image, t.horizontal,
-                                   t.vertical,     t.clusters,    t.objects_total,
+        const double stage_ms[] = {t.preprocess,
+                                   t.embedding,
+                                   t.node_fitting,
+                                   t.graph_search,
+                                   t.ttmf,
+                                   t.labelling,
+                                   t.ground_total,
+                                   t.range_image,
+                                   t.horizontal,
+                                   t.vertical,
+                                   t.clusters,
+                                   t.objects_total,
                                    t.ground_total + t.objects_total};
         for (int s = 0; s < kNumStages; ++s) stages[s].ms.push_back(stage_ms[s]);
 

@@ -52,7 +52,8 @@ Segmented segment(const sim::Scene& scene, sim::LidarModel lidar, double yaw_deg
     lidar.seed = 3;
     lidar.max_range = 80;
     Segmented out;
-    out.scan = sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, yaw_deg));
+    out.scan =
+        sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, yaw_deg));
     Params params;
     params.sensor_height = kSensorHeight;
     Pipeline pipeline(params);
@@ -166,7 +167,8 @@ TEST(Clustering, UnclusteredPointsBelongToTooSmallGroups) {
     const sim::Scene scene = sim::mixed();
     sim::LidarModel lidar = sim::LidarModel::hdl64();
     lidar.max_range = 80;
-    const sim::Scan scan = sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, 0));
+    const sim::Scan scan =
+        sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, 0));
     Params params;
     params.min_cluster_size = 1;
     Pipeline pipeline(params);
@@ -183,8 +185,8 @@ TEST(Clustering, UnclusteredPointsBelongToTooSmallGroups) {
 
 TEST(Clustering, IdenticalIdsAcrossRunsAndInstances) {
     const sim::Scene scene = sim::urbanObjects();
-    const sim::Scan scan =
-        sim::scan(scene, sim::LidarModel::hdl64(), sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, 0));
+    const sim::Scan scan = sim::scan(scene, sim::LidarModel::hdl64(),
+                                     sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, 0));
     Params params;
     Pipeline first(params), second(params);
     Result a, b, c;

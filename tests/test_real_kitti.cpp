@@ -88,17 +88,18 @@ TEST(RealKitti, ObjectsCoverageAndPurityMeetTheTargets) {
     ObjectScoreAccumulator scores;
     for (int i = 0; i < 3; ++i) {
         readKittiBin((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud);
-        const std::vector<uint32_t> gt =
-            readLabelFile((kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
+        const std::vector<uint32_t> gt = readLabelFile(
+            (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
         pipeline.process(cloud, {}, result);
         EXPECT_EQ(pipeline.rangeImage().source(), RingSource::ScanOrder) << frameName(i);
         scores.add(evaluateObjects(result.cluster_id, result.labels, gt, cloud));
     }
     const ObjectSummary s = scores.summary();
-    std::printf("instances %zu: coverage %.3f purity %.3f (split %zu, merged %zu); USE %.2f OSE "
-                "%.2f per frame\n",
-                s.instances, s.mean_coverage, s.mean_purity, s.split, s.merged, s.use_per_frame,
-                s.ose_per_frame);
+    std::printf(
+        "instances %zu: coverage %.3f purity %.3f (split %zu, merged %zu); USE %.2f OSE "
+        "%.2f per frame\n",
+        s.instances, s.mean_coverage, s.mean_purity, s.split, s.merged, s.use_per_frame,
+        s.ose_per_frame);
     EXPECT_EQ(s.instances, 33u);
     EXPECT_GE(s.mean_coverage, 0.93);
     EXPECT_GE(s.mean_purity, 0.99);

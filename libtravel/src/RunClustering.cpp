@@ -295,7 +295,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
     // changes, instead of chaining every += through the cluster's memory.
     struct Acc {
         uint32_t n = 0;
-        Eigen::Array3f lo, hi;
+        Eigen::Array3f lo = Eigen::Array3f::Constant(std::numeric_limits<float>::infinity());
+        Eigen::Array3f hi = Eigen::Array3f::Constant(-std::numeric_limits<float>::infinity());
         double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
     };
     auto flush = [&](uint32_t id, const Acc& a) {
@@ -315,7 +316,6 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             flush(current, acc);
             current = id;
             acc = Acc{};
-            acc.lo.setConstant(inf), acc.hi.setConstant(-inf);
         }
         if (id == 0) continue;
         const Eigen::Array3f p(px_[k], py_[k], pz_[k]);

@@ -18,8 +18,8 @@
 #include "travel/KittiIO.hpp"
 #include "travel/NodeFitting.hpp"
 #include "travel/ParamsIO.hpp"
-#include "travel/RunClustering.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/RunClustering.hpp"
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
 #include "travel/sim/Scenes.hpp"
@@ -58,8 +58,12 @@ void runKitti(benchmark::State& state, bool objects) {
     state.counters["ground"] = static_cast<double>(result.count(PointClass::Ground));
     state.counters["clusters"] = static_cast<double>(result.clusters.size());
 }
-void BM_Ground_KITTI(benchmark::State& state) { runKitti(state, false); }
-void BM_Travel_KITTI(benchmark::State& state) { runKitti(state, true); }
+void BM_Ground_KITTI(benchmark::State& state) {
+    runKitti(state, false);
+}
+void BM_Travel_KITTI(benchmark::State& state) {
+    runKitti(state, true);
+}
 BENCHMARK(BM_Ground_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Travel_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
@@ -179,8 +183,12 @@ void runSynthetic(benchmark::State& state, bool objects) {
     }
     state.counters["points"] = static_cast<double>(scan.cloud.size());
 }
-void BM_Ground_Synthetic(benchmark::State& state) { runSynthetic(state, false); }
-void BM_Travel_Synthetic(benchmark::State& state) { runSynthetic(state, true); }
+void BM_Ground_Synthetic(benchmark::State& state) {
+    runSynthetic(state, false);
+}
+void BM_Travel_Synthetic(benchmark::State& state) {
+    runSynthetic(state, true);
+}
 BENCHMARK(BM_Ground_Synthetic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Travel_Synthetic)->Unit(benchmark::kMillisecond);
 

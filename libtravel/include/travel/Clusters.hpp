@@ -11,9 +11,9 @@
 namespace travel {
 
 struct ClusterSummary {
-    uint32_t id = 0;               ///< > 0, equal to Result::cluster_id of its points
+    uint32_t id = 0;  ///< > 0, equal to Result::cluster_id of its points
     uint32_t num_points = 0;
-    uint32_t first_point = 0;      ///< smallest input index: ids are ordered by it
+    uint32_t first_point = 0;  ///< smallest input index: ids are ordered by it
     Eigen::Vector3f centroid{0.f, 0.f, 0.f};
     Eigen::Vector3f aabb_min{0.f, 0.f, 0.f}, aabb_max{0.f, 0.f, 0.f};
     /// Oriented box: yaw of its length axis [rad], centre, and full extents (length >= width,

@@ -30,7 +30,7 @@ const char* toString(RingSource source);
 std::vector<double> elevationTableDeg(const Params& params);
 
 class RangeImage {
-public:
+  public:
     /// Assigns row (ring, 0 = lowest elevation) and column to every point with valid[i] != 0;
     /// other points get row = col = -1. `cloud` is in the sensor frame (as acquired: the
     /// beams are fixed there). Reuses its buffers across frames.
@@ -42,13 +42,13 @@ public:
     const std::vector<int16_t>& row() const { return row_; }
     const std::vector<int32_t>& col() const { return col_; }
 
-private:
+  private:
     int rows_ = 0, cols_ = 0;
     RingSource source_ = RingSource::None;
     std::vector<int16_t> row_;
     std::vector<int32_t> col_;
-    std::vector<double> table_deg_;   // cached elevation table
-    std::vector<float> table_mid_;    // decision boundaries between table beams [rad]
+    std::vector<double> table_deg_;  // cached elevation table
+    std::vector<float> table_mid_;   // decision boundaries between table beams [rad]
 };
 
 }  // namespace travel

@@ -13,18 +13,18 @@ namespace travel {
 
 /// Wall-clock milliseconds spent in each stage of the last frame.
 struct StageTimings {
-    double preprocess = 0;    ///< validity, alignment, deskew
-    double embedding = 0;     ///< tri-grid field: points to nodes
-    double node_fitting = 0;  ///< node-wise PCA terrain model
-    double graph_search = 0;  ///< B-TGS
-    double ttmf = 0;          ///< corner fitting
-    double labelling = 0;     ///< per-point labels (eq. 5)
-    double ground_total = 0;  ///< sum of the above
-    double range_image = 0;   ///< rings and columns (AOS, Sec. IV-A)
-    double horizontal = 0;    ///< runs along rings, circular and skipped linkage
-    double vertical = 0;      ///< merges across rings
-    double clusters = 0;      ///< ids, size filter, summaries
-    double objects_total = 0; ///< sum of the four above
+    double preprocess = 0;     ///< validity, alignment, deskew
+    double embedding = 0;      ///< tri-grid field: points to nodes
+    double node_fitting = 0;   ///< node-wise PCA terrain model
+    double graph_search = 0;   ///< B-TGS
+    double ttmf = 0;           ///< corner fitting
+    double labelling = 0;      ///< per-point labels (eq. 5)
+    double ground_total = 0;   ///< sum of the above
+    double range_image = 0;    ///< rings and columns (AOS, Sec. IV-A)
+    double horizontal = 0;     ///< runs along rings, circular and skipped linkage
+    double vertical = 0;       ///< merges across rings
+    double clusters = 0;       ///< ids, size filter, summaries
+    double objects_total = 0;  ///< sum of the four above
 };
 
 /// The result of one frame. Vectors are indexed like the input cloud: every input point has
