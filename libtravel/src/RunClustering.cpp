@@ -198,13 +198,19 @@ void RunClustering::vertical(const Params& params) {
     // few longer runs (walls, kerbs) are listed per row and always checked, so one long run cannot
     // turn the search into a scan of the whole row.
     constexpr int kLongSpan = 8;
-    long_runs_.clear();
+    long_runs_.clear(), long_reach_.clear();
     long_runs_begin_.assign(rows + 1, 0);
     for (int r = 0; r < rows; ++r) {
         long_runs_begin_[r] = static_cast<uint32_t>(long_runs_.size());
-        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b)
-            if (run_col_end_[b] - run_col_begin_[b] > kLongSpan)
-                long_runs_.push_back(static_cast<int32_t>(b));
+        int32_t reach = std::numeric_limits<int32_t>::min();
+        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b) {
+            if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan) continue;
+            long_runs_.push_back(static_cast<int32_t>(b));
+            // Running max of the long runs' last columns (non-decreasing): every long run
+            // before the first one reaching lo ends before lo.
+            reach = std::max(reach, run_col_end_[b]);
+            long_reach_.push_back(reach);
+        }
     }
     long_runs_begin_[rows] = static_cast<uint32_t>(long_runs_.size());
 
@@ -224,9 +230,13 @@ void RunClustering::vertical(const Params& params) {
     // only moves forward: one pointer per lower row instead of a binary search per query.
     const int span = params.vertical_ring_span;
     window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
+    long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
     for (int r = 1; r < rows; ++r) {
         const int lowest = std::max(0, r - span);
-        for (int rr = lowest; rr < r; ++rr) window_start_[r - 1 - rr] = row_runs_begin_[rr];
+        for (int rr = lowest; rr < r; ++rr) {
+            window_start_[r - 1 - rr] = row_runs_begin_[rr];
+            long_start_[r - 1 - rr] = long_runs_begin_[rr];
+        }
         for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
             for (int rr = r - 1; rr >= lowest; --rr) {
@@ -236,9 +246,13 @@ void RunClustering::vertical(const Params& params) {
                 for (uint32_t b = start; b < end && run_col_begin_[b] <= hi; ++b)
                     if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan)
                         consider(static_cast<int>(a), static_cast<int>(b), lo);
-                // Long runs are in first-column order too: stop at the first beyond hi.
-                for (uint32_t l = long_runs_begin_[rr];
-                     l < long_runs_begin_[rr + 1] && run_col_begin_[long_runs_[l]] <= hi; ++l)
+                // Long runs are in first-column order too: start at the first that can reach lo
+                // (forward-moving, as lo only grows) and stop at the first beyond hi.
+                uint32_t& long_start = long_start_[r - 1 - rr];
+                const uint32_t long_end = long_runs_begin_[rr + 1];
+                while (long_start < long_end && long_reach_[long_start] < lo) ++long_start;
+                for (uint32_t l = long_start; l < long_end && run_col_begin_[long_runs_[l]] <= hi;
+                     ++l)
                     consider(static_cast<int>(a), long_runs_[l], lo);
             }
         }

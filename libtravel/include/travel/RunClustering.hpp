@@ -73,8 +73,10 @@ class RunClustering {
     std::vector<RunBox> run_box_;
     std::vector<int32_t> long_runs_;  // runs spanning many columns, by row
     std::vector<uint32_t> long_runs_begin_;
+    std::vector<int32_t> long_reach_;     // running max of the long runs' last columns
     std::vector<uint32_t> window_start_;  // per lower row, during the vertical update
-    std::vector<int32_t> point_run_;      // run of each sorted point
+    std::vector<uint32_t> long_start_;
+    std::vector<int32_t> point_run_;  // run of each sorted point
     // Points grouped by run (in column order): offsets and sorted-point positions.
     std::vector<uint32_t> run_points_begin_, run_points_;
     std::vector<int32_t> parent_;
