@@ -4,6 +4,7 @@
 //   BM_Ground_KITTI/<frame>   ground segmentation (TGS) only, SemanticKITTI seq 00 frames 0-2
 //                             (when ../shared/data is present; otherwise reports an error)
 //   BM_Travel_KITTI/<frame>   TGS + object segmentation (AOS), the whole pipeline
+//   BM_Objects_KITTI/<frame>  the AOS stages' own time inside the whole pipeline
 //   BM_Stage_KITTI/<stage>    each stage alone on frame 000000
 //   BM_Ground_Synthetic, BM_Travel_Synthetic: a synthetic HDL-64E frame (always available)
 // Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
@@ -66,6 +67,25 @@ void BM_Travel_KITTI(benchmark::State& state) {
 }
 BENCHMARK(BM_Ground_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Travel_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// The object stage alone, inside the whole pipeline (same cache state as in use): each
+// iteration runs ground + objects and reports the objects' own time (manual timing).
+void BM_Objects_KITTI(benchmark::State& state) {
+    PointCloud cloud;
+    if (!loadKittiFrame(static_cast<int>(state.range(0)), cloud)) {
+        state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
+        return;
+    }
+    Pipeline pipeline(loadPreset("hdl64"));
+    Result result;
+    pipeline.process(cloud, {}, result);
+    for (auto _ : state) {
+        pipeline.process(cloud, {}, result);
+        state.SetIterationTime(result.timings.objects_total / 1000.0);
+    }
+    state.counters["clusters"] = static_cast<double>(result.clusters.size());
+}
+BENCHMARK(BM_Objects_KITTI)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // Each stage alone, on the state the previous stages leave.
 enum Stage {
