@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -142,8 +143,15 @@ int run(int argc, char** argv) {
     for (std::size_t f = 0; f < files.size(); ++f) {
         const fs::path bin(files[f]);
         const std::string stem = bin.stem().string();
-        travel::readKittiBin(files[f], cloud);
-        pipeline.process(cloud, {}, result);
+        try {
+            travel::readKittiBin(files[f], cloud);
+            pipeline.process(cloud, {}, result);
+        } catch (const std::exception& e) {
+            // Name the scan in every error (the pipeline's own messages do not know it).
+            const std::string what = e.what();
+            throw std::runtime_error(
+                what.find(files[f]) == std::string::npos ? files[f] + ": " + what : what);
+        }
 
         encoded.resize(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -122,6 +122,28 @@ TEST(Clustering, ObjectAcrossTheAzimuthSeamIsOneCluster) {
     }
 }
 
+TEST(Clustering, LongRunAcrossTheSeamWithManyRunsAfterItIsOneCluster) {
+    // A wall behind the sensor crosses the seam (azimuth 180 deg); fourteen poles in front of
+    // it on the seam's late side create more than T_skip + 1 runs after the wall's run began.
+    // The wall's run is still open at the end of the ring and must be linked across the seam.
+    sim::Scene scene = sim::flatGround();
+    sim::Wall wall;
+    wall.id = 1, wall.a = {-20.0, -15.0}, wall.b = {-20.0, 15.0}, wall.thickness = 0.3;
+    wall.height = 2.5;
+    scene.walls = {wall};
+    for (int k = 0; k < 14; ++k) {  // every ring sees them all: 14 runs after the wall's
+        sim::Pole pole;
+        pole.id = 10 + k, pole.centre = {-10.0, 0.6 + 0.45 * k}, pole.radius = 0.1;
+        pole.height = 4.0;
+        scene.poles.push_back(pole);
+    }
+    const Segmented s = segment(scene, sim::LidarModel::hdl64());
+    const ObjectScore score = s.score(1);
+    ASSERT_GT(score.points, 1000u);
+    EXPECT_GE(score.coverage, 0.95);
+    EXPECT_GE(score.purity, 0.95);
+}
+
 TEST(Clustering, SparseFarObjectIsFound) {
     // A car 53 m ahead, its rear facing the sensor: about 10 columns x 5 rings. (Seen at a
     // grazing angle, a car's side gives points 0.6-1 m apart along the ring, which no

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "travel/Errors.hpp"
 #include "travel/Pipeline.hpp"
@@ -70,6 +71,67 @@ TEST(TriGridField, PointsGoToTheTriangleThatContainsThem) {
     EXPECT_FLOAT_EQ(x1, 4.f);
     EXPECT_FLOAT_EQ(x2, 4.f);
     EXPECT_FLOAT_EQ(std::fabs(y1 - y2), 4.f);
+}
+
+TEST(TriGridField, EmbeddingAgreesWithNodeOfUpToTheGridEdge) {
+    // Points in the outermost half-cell must land in the same triangle as nodeOf() says.
+    const Params p = smallGrid();  // grid [-20, 20)
+    TriGridField field;
+    field.configure(p);
+    // All within the 20 m range window (3-D, z = -1), in the outer half-cells and corners.
+    const float probes[][2] = {{19.f, 0.5f},  {19.8f, -1.f}, {0.5f, 19.f},   {-1.f, 19.8f},
+                               {14.f, 13.9f}, {-19.8f, 0.f}, {2.5f, -19.6f}, {10.f, 10.f}};
+    for (const auto& xy : probes) {
+        PointCloud cloud;
+        cloud.push_back(xy[0], xy[1], -1.f);
+        AlignedCloud aligned;
+        preprocess(cloud, p, {}, aligned);
+        TerrainModel model;
+        field.embed(aligned, model);
+        int embedded = -1;
+        for (int k = 0; k < field.numNodes(); ++k)
+            if (model.nodes[k].count == 1) embedded = k;
+        EXPECT_EQ(embedded, field.nodeOf(xy[0], xy[1])) << xy[0] << ", " << xy[1];
+    }
+}
+
+TEST(TriGridField, HugeAndNonFiniteCoordinatesAreOutside) {
+    TriGridField field;
+    field.configure(smallGrid());
+    EXPECT_EQ(field.nodeOf(1e30f, 0.f), -1);
+    EXPECT_EQ(field.nodeOf(0.f, -1e30f), -1);
+    EXPECT_EQ(field.nodeOf(std::numeric_limits<float>::infinity(), 0.f), -1);
+    EXPECT_EQ(field.nodeOf(0.f, std::nanf("")), -1);
+}
+
+TEST(Preprocessing, DeskewWithAbsurdTimesMakesPointsInvalidNotWild) {
+    // Absolute timestamps mistaken for relative ones move points by kilometres: they must be
+    // invalid afterwards, and the pipeline must not fail.
+    PointCloud cloud;
+    for (int k = 0; k < 100; ++k) {
+        cloud.push_back(5.f + 0.1f * k, 0.f, -1.7f);
+        cloud.time.push_back(k < 50 ? 0.001f * k : 1.0e9f);
+    }
+    FrameInput input;
+    input.linear_velocity = Eigen::Vector3d(10, 0, 0);
+    input.angular_velocity = Eigen::Vector3d(0, 0, 0.5);
+    AlignedCloud out;
+    preprocess(cloud, Params{}, input, out);
+    EXPECT_EQ(out.num_valid, 50u);
+    for (int k = 50; k < 100; ++k) EXPECT_EQ(out.valid[k], 0) << k;
+    Pipeline pipeline(Params{});
+    Result result;
+    pipeline.process(cloud, input, result);
+    EXPECT_EQ(result.count(PointClass::Invalid), 50u);
+}
+
+TEST(Pipeline, MismatchedFieldSizesAreAnError) {
+    PointCloud cloud;
+    cloud.push_back(1, 2, 3);
+    cloud.y.push_back(4);  // y longer than x
+    Pipeline pipeline(Params{});
+    Result result;
+    EXPECT_THROW(pipeline.process(cloud, {}, result), std::invalid_argument);
 }
 
 TEST(Preprocessing, InvalidPointsAreFlagged) {

@@ -2,6 +2,8 @@
 #include "travel/Pipeline.hpp"
 
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 #include "travel/GroundLabelling.hpp"
 #include "travel/NodeFitting.hpp"
@@ -25,6 +27,11 @@ Pipeline::Pipeline(const Params& params) : params_(params) {
 }
 
 void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result& result) {
+    if (cloud.y.size() != cloud.x.size() || cloud.z.size() != cloud.x.size())
+        throw std::invalid_argument("travel::Pipeline::process: x, y and z differ in size (" +
+                                    std::to_string(cloud.x.size()) + ", " +
+                                    std::to_string(cloud.y.size()) + ", " +
+                                    std::to_string(cloud.z.size()) + ")");
     StageTimings& t = result.timings;
     Clock::time_point clock = Clock::now();
     preprocess(cloud, params_, input, aligned_);

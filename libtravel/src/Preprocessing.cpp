@@ -99,6 +99,15 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         } else {
             out.x[i] = px, out.y[i] = py, out.z[i] = pz;
         }
+        if (deskew) {
+            // A bad time (e.g. absolute instead of relative) can move a point anywhere: the
+            // moved point must still be inside the range window, else it is invalid.
+            const float m2 = out.x[i] * out.x[i] + out.y[i] * out.y[i] + out.z[i] * out.z[i];
+            if (!(std::isfinite(m2) && m2 <= max_r2)) {
+                out.valid[i] = 0, --num_valid;
+                out.x[i] = out.y[i] = out.z[i] = 0.f;
+            }
+        }
     }
     out.num_valid = num_valid;
 }

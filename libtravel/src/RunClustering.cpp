@@ -15,8 +15,10 @@
 //   also continues an open run when the gap is at most occlusion_max_gap, the two ends' ranges
 //   differ by less than T_horz, and every point seen in between is nearer than both ends by
 //   more than T_horz (it is in front: an occluder, not a gap in the object).
-// * Circular linkage: the last runs of a ring (up to T_skip + 1) are compared with its first
-//   runs across the 0/360-degree seam; this also covers rings with one or two runs.
+// * Circular linkage: the runs still open at the end of a ring (up to T_skip + 1) are compared
+//   with its first runs across the 0/360-degree seam; this also covers rings with one or two
+//   runs. (Runs are not linked vertically across the seam: an object seen on one side of it
+//   in one ring and only on the other side in the next stays split; rare, not handled.)
 // * Merges through union-find with path halving; the root of a set is its smallest run index.
 #include "travel/RunClustering.hpp"
 
@@ -137,12 +139,13 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
-        // Circular linkage across the seam: the ring's last runs against its first runs.
+        // Circular linkage across the seam: the runs still open at the end of the ring (the
+        // ones that reach it, whenever they started) against the ring's first runs.
         const int begin = static_cast<int>(row_runs_begin_[r]);
         const int end = static_cast<int>(run_first_.size());
-        const int span = static_cast<int>(std::min<std::size_t>(max_open, end - begin));
-        for (int late = end - span; late < end; ++late)
-            for (int early = begin; early < begin + span; ++early)
+        const int first_runs = static_cast<int>(std::min<std::size_t>(max_open, end - begin));
+        for (const int late : open_runs_)
+            for (int early = begin; early < begin + first_runs; ++early)
                 if (late != early && dist2(run_last_[late], run_first_[early]) < merge2)
                     unite(late, early);
     }

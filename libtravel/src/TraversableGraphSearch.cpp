@@ -73,8 +73,9 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
 int TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
                                            const TerrainModel& model, float max_dist2) const {
     const int n = field.cellsPerSide();
-    const int cell = field.nodeOf(cand.mean.x(), cand.mean.y()) / 4;
-    if (cell < 0) return -1;
+    const int node = field.nodeOf(cand.mean.x(), cand.mean.y());
+    if (node < 0) return -1;
+    const int cell = node / 4;
     const int cx = cell % n, cy = cell / n;
     const int max_ring = static_cast<int>(std::ceil(std::sqrt(max_dist2) / field.resolution())) + 1;
     int nearest = -1;
@@ -147,6 +148,7 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
             const float gap = planeHeightAt(ref.normal, ref.d, mid.x(), mid.y()) -
                               planeHeightAt(cand.normal, cand.d, mid.x(), mid.y());
             if (std::fabs(gap) > params.reseed_max_height_diff) continue;
+            if (component == std::numeric_limits<int16_t>::max()) break;  // ids are int16
             searchFrom(id, component++, field, params, model);
             accepted_any = true;
         }

@@ -84,8 +84,8 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     int32_t* point_node = point_node_.data();
     uint32_t* start = node_start_.data();
     // Node of every point: the same arithmetic as nodeOf(), written as selects so that it
-    // vectorises (with -fno-trapping-math, see CMakeLists). Coordinates are clamped before the
-    // float->int conversion, so NaN and huge values stay defined.
+    // vectorises (with -fno-trapping-math, see CMakeLists). Coordinates outside the grid are
+    // replaced before the float->int conversion, so NaN and huge values stay defined.
     const float inv_r = 1.f / resolution_, origin = origin_;
     const float limit = static_cast<float>(cells_per_side_);
     const int side = cells_per_side_;
@@ -93,8 +93,10 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
         const float gx = (px[i] - origin) * inv_r, gy = (py[i] - origin) * inv_r;
         const int inside = (valid[i] != 0 ? 1 : 0) & (gx >= 0.f ? 1 : 0) & (gy >= 0.f ? 1 : 0) &
                            (gx < limit ? 1 : 0) & (gy < limit ? 1 : 0);
-        const float cx = gx < 0.f ? 0.f : (gx > limit - 0.5f ? limit - 0.5f : gx);
-        const float cy = gy < 0.f ? 0.f : (gy > limit - 0.5f ? limit - 0.5f : gy);
+        // Outside points (dropped below) are moved to 0 so the conversion stays defined;
+        // inside points keep their exact position (same triangle as nodeOf()).
+        const float cx = gx >= 0.f && gx < limit ? gx : 0.f;
+        const float cy = gy >= 0.f && gy < limit ? gy : 0.f;
         const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
         const float u = cx - (static_cast<float>(ix) + 0.5f);
         const float v = cy - (static_cast<float>(iy) + 0.5f);

@@ -75,9 +75,10 @@ class TriGridField {
 inline int TriGridField::nodeOf(float x, float y) const {
     const float inv_r = 1.f / resolution_;
     const float gx = (x - origin_) * inv_r, gy = (y - origin_) * inv_r;
-    if (!(gx >= 0.f && gy >= 0.f)) return -1;  // also rejects NaN
+    // Bounds before the float->int conversion (huge values would be undefined); NaN fails too.
+    const float limit = static_cast<float>(cells_per_side_);
+    if (!(gx >= 0.f && gy >= 0.f && gx < limit && gy < limit)) return -1;
     const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
-    if (ix >= cells_per_side_ || iy >= cells_per_side_) return -1;
     // Which of the 4 triangles: compare the offsets from the cell centre (diagonals |u| = |v|).
     const float u = gx - (static_cast<float>(ix) + 0.5f);
     const float v = gy - (static_cast<float>(iy) + 0.5f);
