@@ -23,6 +23,7 @@
 #include "travel/ObjectMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/eval/Segmenter.hpp"
 
 namespace fs = std::filesystem;
 
@@ -81,6 +82,12 @@ int run(int argc, char** argv) {
                                      false, "", "FILE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Process at most this many scans", false, -1,
                                     "N", cmd);
+    TCLAP::ValueArg<std::string> method(
+        "", "method",
+        "Segmentation method: travel (default), travel-no-ttmf, tgs (ground only), ransac, gpf, "
+        "gpf+slr, tgs+slr, tgs+euclidean, gpf+euclidean (baselines written from their papers; "
+        "see README)",
+        false, "travel", "NAME", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
     TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
                           cmd);
@@ -93,6 +100,9 @@ int run(int argc, char** argv) {
     }
     if (!scans.isSet() || !out.isSet())
         throw TCLAP::CmdLineParseException("--scans DIR and --out DIR are required", "--scans");
+    // Configuration errors first, before any file is touched.
+    const std::unique_ptr<travel::eval::Segmenter> segmenter =
+        travel::eval::makeSegmenter(method.getValue(), params);
     std::vector<std::string> files = travel::listFiles(scans.getValue(), ".bin");
     if (files.empty()) throw travel::InputError("no .bin files in " + scans.getValue());
     if (max_frames.getValue() >= 0 &&
@@ -117,9 +127,8 @@ int run(int argc, char** argv) {
                    "ms_clusters,ms_objects_total,ms_total\n";
     }
 
-    travel::Pipeline pipeline(params);
     travel::PointCloud cloud;
-    travel::Result result;
+    travel::eval::Segmentation result;
     std::vector<uint32_t> encoded;
     const travel::GroundProtocol protocols[2] = {travel::GroundProtocol::A,
                                                  travel::GroundProtocol::B};
@@ -130,6 +139,7 @@ int run(int argc, char** argv) {
                             {"vertical", {}},     {"clusters", {}},    {"objects_total", {}},
                             {"total", {}}};
     constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
+    constexpr int kObjectsStage = 11;  // "objects_total"
     travel::ObjectScoreAccumulator object_scores;
     std::vector<double> ose_sum, use_sum;
     std::size_t unlabelled_frames = 0;
@@ -145,7 +155,7 @@ int run(int argc, char** argv) {
         const std::string stem = bin.stem().string();
         try {
             travel::readKittiBin(files[f], cloud);
-            pipeline.process(cloud, {}, result);
+            segmenter->segment(cloud, result);
         } catch (const std::exception& e) {
             // Name the scan in every error (the pipeline's own messages do not know it).
             const std::string what = e.what();
@@ -158,7 +168,16 @@ int run(int argc, char** argv) {
             encoded[i] = travel::encodeLabel(result.labels[i], result.cluster_id[i]);
         travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
 
-        const travel::StageTimings& t = result.timings;
+        std::size_t counts[4] = {0, 0, 0, 0};
+        for (const travel::PointClass c : result.labels) ++counts[static_cast<int>(c)];
+        const uint32_t num_clusters =
+            result.cluster_id.empty()
+                ? 0
+                : *std::max_element(result.cluster_id.begin(), result.cluster_id.end());
+        auto count = [&](travel::PointClass c) { return counts[static_cast<int>(c)]; };
+        travel::StageTimings t = result.stages;  // per stage for TRAVEL's ground stage
+        t.ground_total = result.ground_ms;
+        t.objects_total = result.objects_ms;
         const double stage_ms[] = {t.preprocess,
                                    t.embedding,
                                    t.node_fitting,
@@ -201,7 +220,7 @@ int run(int argc, char** argv) {
         }
         if (verbose) {
             std::printf("%-8s %7zu %6zu %5zu %6.2f", stem.c_str(), cloud.size(),
-                        result.count(travel::PointClass::Ground), result.clusters.size(),
+                        count(travel::PointClass::Ground), std::size_t{num_clusters},
                         t.ground_total + t.objects_total);
             for (int p = 0; p < 2 && scored; ++p)
                 std::printf(" | %5.2f %5.2f %5.2f %5.2f", scores[p].precision, scores[p].recall,
@@ -214,11 +233,10 @@ int run(int argc, char** argv) {
             std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
         }
         if (csv_out) {
-            csv_out << stem << ',' << cloud.size() << ','
-                    << result.count(travel::PointClass::Invalid) << ','
-                    << result.count(travel::PointClass::Ground) << ','
-                    << result.count(travel::PointClass::NonGround) << ','
-                    << result.count(travel::PointClass::Outlier);
+            csv_out << stem << ',' << cloud.size() << ',' << count(travel::PointClass::Invalid)
+                    << ',' << count(travel::PointClass::Ground) << ','
+                    << count(travel::PointClass::NonGround) << ','
+                    << count(travel::PointClass::Outlier);
             for (int p = 0; p < 2; ++p) {
                 if (scored)
                     csv_out << ',' << scores[p].precision << ',' << scores[p].recall << ','
@@ -226,7 +244,7 @@ int run(int argc, char** argv) {
                 else
                     csv_out << ",,,,";
             }
-            csv_out << ',' << result.clusters.size();
+            csv_out << ',' << std::size_t{num_clusters};
             if (scored)
                 csv_out << ',' << objects.entropy.ose_sum << ',' << objects.entropy.use_sum << ','
                         << objects.entropy.ose_mean << ',' << objects.entropy.use_mean << ','
@@ -240,8 +258,9 @@ int run(int argc, char** argv) {
     }
     if (!verbose && tty) std::fprintf(stderr, "\n");
 
-    std::printf("\n%zu scans processed (preset %s), labels written to %s\n", files.size(),
-                preset.getValue().c_str(), out.getValue().c_str());
+    std::printf("\n%zu scans processed (method %s, preset %s), labels written to %s\n",
+                files.size(), method.getValue().c_str(), preset.getValue().c_str(),
+                out.getValue().c_str());
     if (labels.isSet()) {
         if (unlabelled_frames)
             std::printf("%zu scans had no .label file and are not in the metrics\n",
@@ -255,21 +274,32 @@ int run(int argc, char** argv) {
                 travel::protocolName(protocols[p]), F.n, P.mean, P.std, R.mean, R.std, F.mean,
                 F.std, A.mean, A.std);
         }
-        const travel::ObjectSummary o = object_scores.summary();
-        const auto ose = travel::meanStd(ose_sum), use = travel::meanStd(use_sum);
-        std::printf(
-            "Objects over %zu frames: USE %.2f +- %.2f, OSE %.2f +- %.2f (per-frame sums, "
-            "paper eqs. 6-7); per object: OSE %.3f, USE %.3f per cluster\n",
-            o.frames, use.mean, use.std, ose.mean, ose.std, o.ose_per_object, o.use_per_cluster);
-        std::printf(
-            "Thing instances (>= 50 points): %zu, mean coverage %.3f, mean purity %.3f, "
-            "split %zu, merged %zu\n",
-            o.instances, o.mean_coverage, o.mean_purity, o.split, o.merged);
+        const bool clusters_objects =
+            std::any_of(stages[kObjectsStage].ms.begin(), stages[kObjectsStage].ms.end(),
+                        [](double ms) { return ms > 0.0; });
+        if (!clusters_objects) {
+            std::printf("Objects: not evaluated (%s segments ground only)\n",
+                        method.getValue().c_str());
+        } else {
+            const travel::ObjectSummary o = object_scores.summary();
+            const auto ose = travel::meanStd(ose_sum), use = travel::meanStd(use_sum);
+            std::printf(
+                "Objects over %zu frames: USE %.2f +- %.2f, OSE %.2f +- %.2f (per-frame sums, "
+                "paper eqs. 6-7); per object: OSE %.3f, USE %.3f per cluster\n",
+                o.frames, use.mean, use.std, ose.mean, ose.std, o.ose_per_object,
+                o.use_per_cluster);
+            std::printf(
+                "Thing instances (>= 50 points): %zu, mean coverage %.3f, mean purity %.3f, "
+                "split %zu, merged %zu\n",
+                o.instances, o.mean_coverage, o.mean_purity, o.split, o.merged);
+        }
     }
     std::printf("Milliseconds per frame (single thread):\n");
-    for (const StageSeries& s : stages)
-        std::printf("  %-13s median %7.3f  max %7.3f\n", s.name, median(s.ms),
-                    s.ms.empty() ? 0.0 : *std::max_element(s.ms.begin(), s.ms.end()));
+    for (const StageSeries& s : stages) {
+        const double max = s.ms.empty() ? 0.0 : *std::max_element(s.ms.begin(), s.ms.end());
+        if (max == 0.0) continue;  // a stage this method does not have
+        std::printf("  %-13s median %7.3f  max %7.3f\n", s.name, median(s.ms), max);
+    }
     return 0;
 }
 

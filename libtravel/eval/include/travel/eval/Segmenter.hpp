@@ -1,0 +1,57 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// One interface for TRAVEL and the baselines it is compared with in the paper, so that an
+// evaluation loop runs any of them by name:
+//
+//   auto seg = travel::eval::makeSegmenter("gpf+slr", params);  // throws ConfigError
+//   travel::eval::Segmentation out;
+//   seg->segment(cloud, out);  // out.labels[i], out.cluster_id[i] for every input point i
+//
+// Every method labels every input point (Invalid for the points travel::preprocess rejects),
+// clusters only NonGround points, and numbers its clusters 1..K by their first point (input
+// index), keeping clusters of min_cluster_size..max_cluster_size points (others get id 0).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "travel/Params.hpp"
+#include "travel/PointCloud.hpp"
+#include "travel/Result.hpp"
+
+namespace travel::eval {
+
+struct Segmentation {
+    std::vector<PointClass> labels;    ///< one per input point
+    std::vector<uint32_t> cluster_id;  ///< one per input point, 0 = no cluster
+    double ground_ms = 0;              ///< pre-processing + ground segmentation
+    double objects_ms = 0;             ///< clustering (0 for ground-only methods)
+    /// Per-stage times when the ground stage is TRAVEL's (zeros for the baselines).
+    StageTimings stages;
+};
+
+class Segmenter {
+  public:
+    virtual ~Segmenter() = default;
+    virtual const char* name() const = 0;
+    /// Segments one frame (sensor frame, as acquired). Buffers are reused across frames.
+    virtual void segment(const PointCloud& cloud, Segmentation& out) = 0;
+};
+
+/// Methods by name: "travel", "travel-no-ttmf", "tgs", "ransac", "gpf", "gpf+slr", "tgs+slr",
+/// "tgs+euclidean", "gpf+euclidean". Throws ConfigError (listing the valid names) for any
+/// other name, and for invalid params.
+std::unique_ptr<Segmenter> makeSegmenter(const std::string& method, const Params& params);
+
+/// The valid method names, in the order above.
+std::vector<std::string> methodNames();
+
+/// Shared by the clusterers: turns raw component labels (0 = none, otherwise any value in
+/// [1, max_label]) into ids 1..K ordered by each component's first point; components with
+/// fewer than min_size or more than max_size points get 0. `count` and `new_id` are scratch.
+void renumberClusters(std::vector<uint32_t>& ids, uint32_t max_label, int min_size, int max_size,
+                      std::vector<uint32_t>& count, std::vector<uint32_t>& new_id);
+
+}  // namespace travel::eval
