@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "CommandLine.hpp"
 #include "travel/Errors.hpp"
 #include "travel/KittiIO.hpp"
 #include "travel/Metrics.hpp"
@@ -91,7 +92,7 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
     TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
                           cmd);
-    cmd.parse(argc, argv);
+    if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
     const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
     if (dump.getValue()) {

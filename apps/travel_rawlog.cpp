@@ -25,16 +25,19 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "CommandLine.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/Attitude.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
 namespace fs = std::filesystem;
@@ -81,6 +84,7 @@ std::string where(const std::string& file, long record = -1) {
 // Command line.
 
 struct Options {
+    std::optional<int> exit_code;  // set when the command line says stop (--help, error)
     std::string input, output, config, preset, sensor_label_regex, png_prefix, csv;
     std::vector<std::string> overrides;
     bool quiet = false;
@@ -165,9 +169,10 @@ Options parseCommandLine(int argc, char** argv) {
                                  "each observation's sensorPose",
                                  cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary (errors only)", cmd);
-    cmd.parse(argc, argv);
-
     Options o;
+    o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
+    if (o.exit_code) return o;
+
     o.input = input.getValue();
     o.output = output.getValue();
     o.config = config.getValue();
@@ -323,7 +328,8 @@ class ClassCloudPool {
 };
 
 // ------------------------------------------------------------------------------------------
-// Pictures: bird's-eye PNG and coloured PLY, both from the aligned (levelled) coordinates.
+// Pictures: bird's-eye PNG (travel_mrpt::renderBirdsEye) and coloured PLY, both from the
+// aligned (levelled) coordinates.
 
 struct Rgb {
     uint8_t r, g, b;
@@ -343,78 +349,6 @@ const Rgb* colourOf(PointClass c) {
     }
     return nullptr;
 }
-
-mrpt::img::TColor toTColor(const Rgb& c) {
-    return mrpt::img::TColor(c.r, c.g, c.b);
-}
-
-/// Largest of 1, 2, 5 x 10^k metres not longer than `max_metres`.
-double niceLength(double max_metres) {
-    double best = 0.1;
-    for (double decade = 0.1; decade <= 1e4; decade *= 10)
-        for (double m : {1.0, 2.0, 5.0})
-            if (m * decade <= max_metres) best = m * decade;
-    return best;
-}
-
-class BirdsEyeView {
-  public:
-    BirdsEyeView(int size_px, double metres_per_pixel)
-        : size_(size_px), mpp_(metres_per_pixel), image_(size_px, size_px, mrpt::img::CH_RGB) {}
-
-    void save(const std::string& path, const travel::AlignedCloud& aligned,
-              const std::vector<PointClass>& labels, const std::string& title) {
-        const mrpt::img::TColor white(255, 255, 255), grey(210, 210, 210), black(0, 0, 0);
-        image_.filledRectangle(0, 0, size_ - 1, size_ - 1, white);
-        const int centre = size_ / 2;
-        const double bar_m = niceLength(0.25 * size_ * mpp_);
-        // Range rings every scale-bar length help reading distances.
-        for (int k = 1; k * bar_m / mpp_ < size_; ++k)
-            image_.drawCircle(centre, centre, static_cast<int>(k * bar_m / mpp_), grey, 1);
-
-        // Ground first so that obstacles stay visible on top of it.
-        for (PointClass pass : {PointClass::Ground, PointClass::Outlier, PointClass::NonGround}) {
-            const mrpt::img::TColor colour = toTColor(*colourOf(pass));
-            for (std::size_t i = 0; i < labels.size(); ++i) {
-                if (labels[i] != pass) continue;
-                // Image up = +x (forward), image left = +y (left).
-                const int u = centre - static_cast<int>(std::lround(aligned.y[i] / mpp_));
-                const int v = centre - static_cast<int>(std::lround(aligned.x[i] / mpp_));
-                if (u < 1 || v < 1 || u >= size_ - 1 || v >= size_ - 1) continue;
-                image_.filledRectangle(u - 1, v - 1, u, v, colour);
-            }
-        }
-        // Sensor: a black mark with a heading tick.
-        image_.filledRectangle(centre - 3, centre - 3, centre + 3, centre + 3, black);
-        image_.line(centre, centre, centre, centre - 14, black, 2);
-
-        image_.selectTextFont("9x15");
-        image_.textOut(8, 6, title, black);
-        const std::array<std::pair<const char*, Rgb>, 3> legend = {
-            {{"ground", kGroundColour},
-             {"non-ground", kNonGroundColour},
-             {"outlier", kOutlierColour}}};
-        for (std::size_t k = 0; k < legend.size(); ++k) {
-            const int y = 28 + 18 * static_cast<int>(k);
-            image_.filledRectangle(8, y + 2, 20, y + 12, toTColor(legend[k].second));
-            image_.textOut(26, y, legend[k].first, black);
-        }
-        // Scale bar, bottom left.
-        const int bar_px = static_cast<int>(std::lround(bar_m / mpp_));
-        const int y_bar = size_ - 14;
-        image_.filledRectangle(10, y_bar - 2, 10 + bar_px, y_bar + 1, black);
-        char text[64];
-        std::snprintf(text, sizeof text, "%g m   (1 px = %g m, up = forward)", bar_m, mpp_);
-        image_.textOut(10, y_bar - 20, text, black);
-
-        if (!image_.saveToFile(path)) throw AppError(path + ": cannot write PNG");
-    }
-
-  private:
-    int size_;
-    double mpp_;
-    mrpt::img::CImage image_;
-};
 
 void writePly(const std::string& path, const travel::AlignedCloud& aligned,
               const std::vector<PointClass>& labels) {
@@ -503,8 +437,8 @@ class RawlogSegmenter {
           csv_(options.csv) {
         if (!options.png_prefix.empty()) {
             createParentDirectory(options.png_prefix + "_x");
-            birds_eye_ =
-                std::make_unique<BirdsEyeView>(options.png_size, options.png_metres_per_pixel);
+            birds_eye_.size_px = options.png_size;
+            birds_eye_.metres_per_pixel = options.png_metres_per_pixel;
         }
     }
 
@@ -544,7 +478,7 @@ class RawlogSegmenter {
         totals_.process_ms.push_back(process_ms);
         totals_.convert_ms.push_back(convert_ms);
         csv_.add(frame, obs, result_, cloud_.size(), convert_ms, process_ms);
-        if (birds_eye_) writePictures(frame, obs, pipeline.aligned());
+        if (!options_.png_prefix.empty()) writePictures(frame, obs, pipeline.aligned());
     }
 
     /// Outputs of an earlier run (<label>_ground ... of a label we process now) are dropped:
@@ -597,7 +531,11 @@ class RawlogSegmenter {
                       obs.sensorLabel.c_str(), cloud_.size(),
                       100.0 * result_.count(PointClass::Ground) / total,
                       100.0 * result_.count(PointClass::NonGround) / total);
-        birds_eye_->save(stem + ".png", aligned, result_.labels, title);
+        // Class colours only (no cluster ids, no terrain): the picture shows what the output
+        // rawlog holds.
+        birds_eye_.title = title;
+        travel_mrpt::renderBirdsEye(aligned, result_.labels, {}, nullptr, birds_eye_, image_);
+        if (!image_.saveToFile(stem + ".png")) throw AppError(stem + ".png: cannot write PNG");
         writePly(stem + ".ply", aligned, result_.labels);
     }
 
@@ -610,7 +548,8 @@ class RawlogSegmenter {
     travel::Params base_params_;
     std::regex label_filter_;
     CsvLog csv_;
-    std::unique_ptr<BirdsEyeView> birds_eye_;
+    travel_mrpt::BirdsEyeOptions birds_eye_;
+    mrpt::img::CImage image_;  // reused across frames
     std::map<std::string, Sensor> sensors_;
     std::set<std::string> notes_;
     ClassCloudPool pool_;
@@ -647,6 +586,7 @@ void printSummary(const Options& o, const Totals& t, long records, double second
 
 int run(int argc, char** argv) {
     const Options options = parseCommandLine(argc, argv);
+    if (options.exit_code) return *options.exit_code;
     const travel::Params params = loadParams(options);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))

@@ -20,6 +20,8 @@ expect_failure_mentioning("no_such_dir" ${TRAVEL_KITTI} --scans ${WORK_DIR}/no_s
 expect_failure_mentioning("nopreset" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --preset nopreset)
 # Misspelt parameter
 expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --set tgf_resolutoin=4)
+# An unknown option stops with an error (MRPT's TCLAP would carry on without the check)
+expect_failure_mentioning("--bogus" ${TRAVEL_KITTI} --bogus)
 # Unknown method: the message lists the valid ones
 expect_failure_mentioning("gpf+slr" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --method nope)
 # A .bin whose size is not a multiple of 16

@@ -1,0 +1,210 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel-view: bird's-eye picture of one KITTI scan segmented by one or two methods (side by
+// side), for looking at what a method does and comparing two of them on the same frame.
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/img/CImage.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CommandLine.hpp"
+#include "travel/Errors.hpp"
+#include "travel/KittiIO.hpp"
+#include "travel/ParamsIO.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel/Preprocessing.hpp"
+#include "travel/eval/Segmenter.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
+
+namespace fs = std::filesystem;
+using travel::PointClass;
+
+namespace {
+
+struct AppError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Options {
+    std::optional<int> exit_code;  // set when the command line says stop (--help, error)
+    std::string scan, out, config, preset;
+    std::vector<std::string> methods, overrides;
+    double mpp = 0.075;
+    int size = 800;
+    bool nodes = true;
+};
+
+std::vector<std::string> splitCommas(const std::string& s) {
+    std::vector<std::string> parts;
+    std::stringstream in(s);
+    std::string part;
+    while (std::getline(in, part, ','))
+        if (!part.empty()) parts.push_back(part);
+    return parts;
+}
+
+Options parseCommandLine(int argc, char** argv) {
+    TCLAP::CmdLine cmd(
+        "Bird's-eye PNG of one KITTI .bin scan segmented by one or two methods (two: side by "
+        "side). Ground green, each cluster its own colour, non-ground without cluster grey, "
+        "outliers blue; for the TGS-based methods (travel, travel-no-ttmf, tgs, tgs+...) the "
+        "traversable tri-grid nodes of the terrain model are outlined underneath. Points are "
+        "drawn in the aligned (levelled) frame, centred on the sensor, up = forward. Parameters: "
+        "HDL-64E/KITTI defaults, then --preset, then --config, then each --set.",
+        ' ', "0.1");
+    TCLAP::ValueArg<std::string> scan("", "scan", "KITTI scan (.bin: float32 x y z intensity)",
+                                      true, "", "FILE.bin", cmd);
+    TCLAP::ValueArg<std::string> out("", "out", "Output picture (.png; directories are created)",
+                                     true, "", "FILE.png", cmd);
+    TCLAP::ValueArg<std::string> methods(
+        "", "methods", "One or two methods, comma-separated (see travel-kitti --help for names)",
+        false, "travel", "M1[,M2]", cmd);
+    TCLAP::ValueArg<std::string> preset("", "preset", "Start from this sensor preset", false, "",
+                                        "NAME", cmd);
+    TCLAP::ValueArg<std::string> config("", "config", "YAML or ini parameter file", false, "",
+                                        "FILE", cmd);
+    TCLAP::MultiArg<std::string> set("", "set", "Override one parameter (repeatable)", false,
+                                     "KEY=VALUE", cmd);
+    TCLAP::ValueArg<double> mpp("", "mpp", "Metres per pixel (default 0.075: +/-30 m in 800 px)",
+                                false, 0.075, "M", cmd);
+    TCLAP::ValueArg<int> size("", "size", "Side of each panel in pixels", false, 800, "PX", cmd);
+    TCLAP::SwitchArg no_nodes("", "no-nodes", "Do not draw the terrain model's nodes", cmd);
+    Options o;
+    o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
+    if (o.exit_code) return o;
+
+    o.scan = scan.getValue();
+    o.out = out.getValue();
+    o.methods = splitCommas(methods.getValue());
+    o.preset = preset.getValue();
+    o.config = config.getValue();
+    o.overrides = set.getValue();
+    o.mpp = mpp.getValue();
+    o.size = size.getValue();
+    o.nodes = !no_nodes.getValue();
+    if (o.methods.empty() || o.methods.size() > 2)
+        throw AppError("--methods: give one or two method names, comma-separated");
+    if (!(o.mpp > 0) || !std::isfinite(o.mpp)) throw AppError("--mpp must be > 0");
+    if (o.size < 64 || o.size > 8192) throw AppError("--size must be in [64, 8192]");
+    return o;
+}
+
+travel::Params loadParams(const Options& o) {
+    travel::Params params;
+    if (!o.preset.empty()) params = travel::loadPreset(o.preset);
+    if (!o.config.empty()) travel::applyParamsFile(o.config, params);
+    for (const auto& kv : o.overrides) travel::applyOverride(kv, params);
+    params.validate();
+    return params;
+}
+
+/// The methods whose ground stage is TRAVEL's tri-grid search: they have a terrain model.
+bool usesTriGrid(const std::string& method) {
+    return method.rfind("travel", 0) == 0 || method.rfind("tgs", 0) == 0;
+}
+
+/// One panel: labels from the method's Segmenter (the same code travel-kitti evaluates), points
+/// in the aligned frame, and for tri-grid methods the terrain model of a Pipeline run with the
+/// same parameters (the Segmenter does not expose it; its ground labels are the same).
+void renderMethod(const std::string& method, const travel::Params& params,
+                  const travel::PointCloud& cloud, const Options& o, mrpt::img::CImage& panel) {
+    auto segmenter = travel::eval::makeSegmenter(method, params);
+    travel::eval::Segmentation seg;
+    segmenter->segment(cloud, seg);
+
+    travel::AlignedCloud aligned;
+    travel::preprocess(cloud, params, travel::FrameInput{}, aligned);
+    travel::Result result;
+    std::unique_ptr<travel::Pipeline> pipeline;
+    if (usesTriGrid(method) && o.nodes) {
+        travel::Params p = params;
+        p.ttmf = method != "travel-no-ttmf";
+        p.cluster_objects = false;  // only the terrain is needed
+        pipeline = std::make_unique<travel::Pipeline>(p);
+        pipeline->process(cloud, travel::FrameInput{}, result);
+    }
+
+    std::size_t valid = 0, ground = 0, outliers = 0;
+    uint32_t clusters = 0;
+    for (std::size_t i = 0; i < seg.labels.size(); ++i) {
+        valid += seg.labels[i] != PointClass::Invalid;
+        ground += seg.labels[i] == PointClass::Ground;
+        outliers += seg.labels[i] == PointClass::Outlier;
+    }
+    for (uint32_t id : seg.cluster_id) clusters = std::max(clusters, id);  // ids are 1..K
+    const double pct = valid ? 100.0 / valid : 0.0;
+
+    char title[200];
+    std::snprintf(title, sizeof title, "%s: ground %.1f%%  outlier %.1f%%  %u clusters",
+                  method.c_str(), ground * pct, outliers * pct, clusters);
+    travel_mrpt::BirdsEyeOptions opt;
+    opt.size_px = o.size;
+    opt.metres_per_pixel = o.mpp;
+    opt.title = title;
+    opt.draw_nodes = o.nodes;
+    travel_mrpt::renderBirdsEye(aligned, seg.labels, seg.cluster_id,
+                                pipeline ? &result.terrain : nullptr, opt, panel);
+}
+
+int run(int argc, char** argv) {
+    const Options o = parseCommandLine(argc, argv);
+    if (o.exit_code) return *o.exit_code;
+    const travel::Params params = loadParams(o);
+    // Unknown method names fail before any file is read (the message lists the valid ones).
+    for (const auto& method : o.methods) travel::eval::makeSegmenter(method, params);
+
+    std::error_code ec;
+    if (!fs::exists(o.scan, ec)) throw AppError(o.scan + ": no such file");
+    if (fs::is_directory(o.scan, ec)) throw AppError(o.scan + ": is a directory, not a scan");
+    travel::PointCloud cloud;
+    try {
+        travel::readKittiBin(o.scan, cloud);
+    } catch (const std::exception& e) {
+        const std::string what = e.what();
+        // Name the file even if the reader's message does not.
+        throw AppError(what.find(o.scan) == std::string::npos ? o.scan + ": " + what : what);
+    }
+    if (cloud.size() == 0) throw AppError(o.scan + ": empty scan");
+
+    std::vector<mrpt::img::CImage> panels(o.methods.size());
+    for (std::size_t k = 0; k < o.methods.size(); ++k)
+        renderMethod(o.methods[k], params, cloud, o, panels[k]);
+
+    const fs::path parent = fs::path(o.out).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    if (ec) throw AppError(parent.string() + ": cannot create directory: " + ec.message());
+    const std::string name = fs::path(o.scan).filename().string();
+    if (panels.size() == 1) {
+        travel_mrpt::savePicture(panels[0], o.out);
+    } else {
+        mrpt::img::CImage both;
+        travel_mrpt::sideBySide(panels[0], panels[1], name + " - " + o.methods[0],
+                                name + " - " + o.methods[1], both);
+        travel_mrpt::savePicture(both, o.out);
+    }
+    std::printf("travel-view: %s (%zu points) -> %s\n", o.scan.c_str(), cloud.size(),
+                o.out.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const travel::ConfigError& e) {
+        std::cerr << "travel-view: configuration error: " << e.what() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "travel-view: error: " << e.what() << "\n";
+    }
+    return 1;
+}

@@ -1,0 +1,80 @@
+# Command-line contract of travel-eval: bad methods and sweep specs are errors naming them; with
+# the real SemanticKITTI frames, a report writes both protocols' tables and one CSV row per
+# (method, frame), and a sweep writes its CSV and three non-empty PNG plots.
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR}/scans ${WORK_DIR}/labels)
+
+function(expect_failure_mentioning needle)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "expected failure: ${ARGN}\n${out}${err}")
+  endif()
+  string(FIND "${out}${err}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "message does not mention '${needle}':\n${out}${err}")
+  endif()
+endfunction()
+
+function(run_ok)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}${err}")
+  endif()
+endfunction()
+
+function(expect_nonempty_file path)
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "missing output ${path}")
+  endif()
+  file(SIZE ${path} size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "empty output ${path}")
+  endif()
+endfunction()
+
+set(io --scans ${WORK_DIR}/scans --labels ${WORK_DIR}/labels --out ${WORK_DIR}/out)
+# Configuration errors come before any file is read, so these need no data.
+# Unknown method: the message lists the valid ones
+expect_failure_mentioning("gpf+slr" ${TRAVEL_EVAL} report ${io} --methods travel,nope)
+# Sweep spec without '=', without values, with an unknown key, with a value out of range
+expect_failure_mentioning("foo" ${TRAVEL_EVAL} sweep ${io} --sweep foo)
+expect_failure_mentioning("tgf_resolution=" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=)
+expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolutoin=2,4)
+expect_failure_mentioning("tgf_resolution" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=2,-1)
+# Unknown subcommand; no labelled frame; missing directory
+expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
+expect_failure_mentioning("no labelled frames" ${TRAVEL_EVAL} report ${io})
+expect_failure_mentioning("no_such_dir" ${TRAVEL_EVAL} report --scans ${WORK_DIR}/no_such_dir
+                          --labels ${WORK_DIR}/labels --out ${WORK_DIR}/out)
+
+set(seq ${DATA_DIR}/semantickitti/sequences/00)
+if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
+  set(real --scans ${seq}/velodyne --labels ${seq}/labels --max-frames 1)
+
+  run_ok(${TRAVEL_EVAL} report ${real} --out ${WORK_DIR}/report --methods travel,gpf)
+  file(READ ${WORK_DIR}/report/report.md md)
+  foreach(needle "A (Patchwork benchmark)" "B (Patchwork++)" "| travel |" "| gpf |")
+    string(FIND "${md}" "${needle}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "report.md does not contain '${needle}':\n${md}")
+    endif()
+  endforeach()
+  # Header + one row per (method, frame): 2 methods x 1 frame.
+  file(STRINGS ${WORK_DIR}/report/frames.csv rows)
+  list(LENGTH rows n)
+  if(NOT n EQUAL 3)
+    message(FATAL_ERROR "frames.csv has ${n} lines, expected 3 (header + 2 rows)")
+  endif()
+
+  run_ok(${TRAVEL_EVAL} sweep ${real} --out ${WORK_DIR}/sweep --sweep tgf_resolution=4,8)
+  file(STRINGS ${WORK_DIR}/sweep/sweep_tgf_resolution.csv rows)
+  list(LENGTH rows n)
+  if(NOT n EQUAL 3)
+    message(FATAL_ERROR "sweep_tgf_resolution.csv has ${n} lines, expected 3 (header + 2 values)")
+  endif()
+  foreach(plot ground objects time)
+    expect_nonempty_file(${WORK_DIR}/sweep/sweep_tgf_resolution_${plot}.png)
+  endforeach()
+else()
+  message(STATUS "SemanticKITTI frames not found in ${seq}: real-data part skipped")
+endif()

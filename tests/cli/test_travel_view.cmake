@@ -1,0 +1,48 @@
+# Command-line contract of travel-view: a missing or corrupt scan is an error naming the file;
+# with a real scan, a two-method picture is written and is not empty.
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+function(expect_failure_mentioning needle)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "expected failure: ${ARGN}\n${out}${err}")
+  endif()
+  string(FIND "${out}${err}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "message does not mention '${needle}':\n${out}${err}")
+  endif()
+endfunction()
+
+# Missing scan
+expect_failure_mentioning("no_such_scan.bin" ${TRAVEL_VIEW} --scan ${WORK_DIR}/no_such_scan.bin --out ${WORK_DIR}/x.png)
+# A .bin whose size is not a multiple of 16
+file(WRITE ${WORK_DIR}/broken.bin "0123456789")
+expect_failure_mentioning("broken.bin" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png)
+# Unknown method: the message lists the valid ones
+expect_failure_mentioning("gpf+slr" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png --methods nope)
+# More than two methods
+expect_failure_mentioning("--methods" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png --methods travel,gpf,tgs)
+
+set(scan ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
+if(EXISTS ${scan})
+  set(png ${WORK_DIR}/pics/000000_travel_vs_gpfslr.png)
+  execute_process(COMMAND ${TRAVEL_VIEW} --scan ${scan} --methods travel,gpf+slr --out ${png}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "travel-view failed on a real scan:\n${out}${err}")
+  endif()
+  if(NOT EXISTS ${png})
+    message(FATAL_ERROR "travel-view did not write ${png}")
+  endif()
+  file(SIZE ${png} png_size)
+  if(png_size LESS 10000)
+    message(FATAL_ERROR "${png} is only ${png_size} bytes")
+  endif()
+  file(READ ${png} magic LIMIT 4 HEX)
+  if(NOT magic STREQUAL "89504e47")
+    message(FATAL_ERROR "${png} is not a PNG (starts with ${magic})")
+  endif()
+else()
+  message(STATUS "SemanticKITTI scan not found at ${scan}: real-scan part skipped")
+endif()
