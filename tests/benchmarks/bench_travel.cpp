@@ -6,6 +6,7 @@
 //   BM_Travel_KITTI/<frame>   TGS + object segmentation (AOS), the whole pipeline
 //   BM_Objects_KITTI/<frame>  the AOS stages' own time inside the whole pipeline
 //   BM_Stage_KITTI/<stage>    each stage alone on frame 000000
+//   BM_Stage_Synthetic/<stage> each stage alone on a synthetic HDL-64E frame
 //   BM_Ground_Synthetic, BM_Travel_Synthetic: a synthetic HDL-64E frame (always available)
 // Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
 //        --benchmark_report_aggregates_only=true --benchmark_out=bench_travel.json
@@ -101,12 +102,34 @@ enum Stage {
     kClusters
 };
 
+// A synthetic HDL-64E frame of the mixed scene (ramp, kerb, bumps, car, pole, wall; ~118k
+// points), available without ../shared/data.
+const PointCloud& syntheticFrame() {
+    static const PointCloud cloud = [] {
+        const sim::Scene scene = sim::mixed();
+        sim::LidarModel lidar = sim::LidarModel::hdl64();
+        lidar.range_noise_sigma = 0.02;
+        return sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, 1.73, 0, 0, 0)).cloud;
+    }();
+    return cloud;
+}
+
+void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage);
+
 void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
     PointCloud cloud;
     if (!loadKittiFrame(0, cloud)) {
         state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
         return;
     }
+    runStage(state, cloud, stage);
+}
+
+void BM_Stage_Synthetic(benchmark::State& state, Stage stage) {
+    runStage(state, syntheticFrame(), stage);
+}
+
+void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage) {
     const Params params = loadPreset("hdl64");
     AlignedCloud aligned;
     TriGridField field;
@@ -187,21 +210,28 @@ BENCHMARK_CAPTURE(BM_Stage_KITTI, range_image, kRangeImage)->Unit(benchmark::kMi
 BENCHMARK_CAPTURE(BM_Stage_KITTI, horizontal, kHorizontal)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Stage_KITTI, vertical, kVertical)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Stage_KITTI, clusters, kClusters)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, preprocess, kPreprocess)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, embedding, kEmbedding)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, node_fitting, kNodeFitting)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, graph_search, kGraphSearch)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, ttmf, kTtmf)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, labelling, kLabelling)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, range_image, kRangeImage)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, horizontal, kHorizontal)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, vertical, kVertical)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Stage_Synthetic, clusters, kClusters)->Unit(benchmark::kMicrosecond);
 
 void runSynthetic(benchmark::State& state, bool objects) {
-    const sim::Scene scene = sim::mixed();
-    sim::LidarModel lidar = sim::LidarModel::hdl64();
-    lidar.range_noise_sigma = 0.02;
-    const sim::Scan scan = sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, 1.73, 0, 0, 0));
+    const PointCloud& cloud = syntheticFrame();
     Params params;
     params.cluster_objects = objects;
     Pipeline pipeline(params);
     Result result;
     for (auto _ : state) {
-        pipeline.process(scan.cloud, {}, result);
+        pipeline.process(cloud, {}, result);
         benchmark::DoNotOptimize(result.labels.data());
     }
-    state.counters["points"] = static_cast<double>(scan.cloud.size());
+    state.counters["points"] = static_cast<double>(cloud.size());
 }
 void BM_Ground_Synthetic(benchmark::State& state) {
     runSynthetic(state, false);
