@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what TRAVEL needs on Debian bookworm (only the missing packages), then configures and
+# Installs what TRAVEL needs on Debian bookworm (only the missing packages; clang is for the fuzz
+# targets), then configures and
 # builds the project into ./build (Release, Ninja). Safe to run again: it installs nothing when
 # everything is present and the build is incremental.
 #
@@ -13,6 +14,7 @@ PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libmrpt-maps-dev libmrpt-nav-dev libmrpt-gui-dev libmrpt-tclap-dev
   liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev
+  clang libclang-rt-14-dev
 )
 
 log() { printf '[setup] %s\n' "$*"; }
