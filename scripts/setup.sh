@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
-# Installs what TRAVEL needs on Debian bookworm (only the missing packages; clang is for the fuzz
-# targets), then configures and
-# builds the project into ./build (Release, Ninja). Safe to run again: it installs nothing when
-# everything is present and the build is incremental.
+# Installs what TRAVEL needs on Debian bookworm (only the missing packages; clang for the fuzz
+# targets), then builds the project into ./build (Release, Ninja). Safe to run again: it installs
+# nothing when everything is present and the build is incremental.
 #
 #   scripts/setup.sh             install missing packages, then build
 #   scripts/setup.sh --no-build  install missing packages only
