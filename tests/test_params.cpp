@@ -434,7 +434,7 @@ TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
     EXPECT_CONTAINS(yaml, "(range [0, 100])\nsensor_height: 1.73\n");
     EXPECT_CONTAINS(yaml, "\nmax_range: 80.0\n");
     EXPECT_CONTAINS(yaml, "(true/false)\nttmf: true\n");
-    EXPECT_CONTAINS(yaml, "\nmax_grid_cells_per_side: 1024\n");
+    EXPECT_CONTAINS(yaml, "\nmax_grid_cells_per_side: 512\n");
     EXPECT_CONTAINS(yaml, "(one of auto|field|scan_order|table)\nring_source: auto\n");
     EXPECT_CONTAINS(yaml, "(one of hdl64|hdl32|vlp16|os128|uniform)\nelevation_table: hdl64\n");
     const Params defaults;

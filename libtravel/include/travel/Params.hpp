@@ -38,8 +38,9 @@ namespace travel {
     X(double, tgf_resolution, 4.0, "m", 0.25, 100.0,                                              \
       "r: side of a tri-grid cell; each cell holds 4 triangular nodes (paper: 8; 4 is better "    \
       "on SemanticKITTI, see README)")                                                            \
-    X(int, max_grid_cells_per_side, 1024, "", 1, 8192,                                            \
-      "Safety limit on 2 R / r; a larger grid is a configuration error, never an allocation")     \
+    X(int, max_grid_cells_per_side, 512, "", 1, 8192,                                             \
+      "Safety limit on 2 R / r; a larger grid is a configuration error, never an allocation. "    \
+      "512 cells per side is about 207 MB (1 km at r = 4 m fits)")                                \
     /* ---- Node-wise terrain model (Sec. III-B) ---- */                                          \
     X(int, lpr_num_points, 5, "", 1, 1000,                                                        \
       "Number of lowest points whose mean z is the node's lowest point representative (LPR)")     \

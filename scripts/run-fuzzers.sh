@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Coverage-guided fuzzing of libtravel (libFuzzer + ASan + UBSan), see tests/fuzz/.
+#
+#   scripts/run-fuzzers.sh [SECONDS_PER_TARGET]      (default 60; CI smoke run)
+#
+# Builds tests/fuzz (standalone CMake project) with clang into ./build-fuzz (-O1 -g), then runs
+# every target for SECONDS_PER_TARGET on a COPY of its seed corpus (tests/fuzz/corpus/<target>,
+# which is never modified). Exits non-zero if any target crashes, leaks, hits a sanitizer report
+# or a FUZZ_CHECK. Crash reproducers are kept in build-fuzz/findings/<target>/.
+#
+# Longer runs (nightly / before a release), e.g. one hour per target:
+#   scripts/run-fuzzers.sh 3600
+# Environment: FUZZ_TARGETS="fuzz_params fuzz_segmentation" (subset), FUZZ_JOBS=N (parallel
+# libFuzzer workers per target, default 1), TRAVEL_FUZZ_MRPT=OFF (skip fuzz_rawlog),
+# CXX (default clang++). Reproduce a finding: build-fuzz/<target> build-fuzz/findings/<target>/crash-*
+set -euo pipefail
+
+SECONDS_PER_TARGET="${1:-60}"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${ROOT}/build-fuzz"
+CXX="${CXX:-clang++}"
+MRPT="${TRAVEL_FUZZ_MRPT:-ON}"
+JOBS="${FUZZ_JOBS:-1}"
+
+generator=()
+command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+if [[ ! -f "${BUILD}/CMakeCache.txt" ]]; then
+    cmake -S "${ROOT}/tests/fuzz" -B "${BUILD}" "${generator[@]}" -DCMAKE_CXX_COMPILER="${CXX}" \
+        -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_FUZZ_MRPT="${MRPT}"
+fi
+cmake --build "${BUILD}" -j "$(nproc)"
+
+targets=(fuzz_kitti_bin fuzz_label_file fuzz_params fuzz_segmentation)
+[[ "${MRPT}" == "ON" ]] && targets+=(fuzz_rawlog)
+[[ -n "${FUZZ_TARGETS:-}" ]] && read -r -a targets <<<"${FUZZ_TARGETS}"
+
+export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:symbolize=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+
+failed=()
+summary=()
+for t in "${targets[@]}"; do
+    work="${BUILD}/fuzz-work/${t}"
+    findings="${BUILD}/findings/${t}"
+    rm -rf "${work}"
+    mkdir -p "${work}/corpus" "${findings}"
+    cp -r "${ROOT}/tests/fuzz/corpus/${t}/." "${work}/corpus/" 2>/dev/null || true
+    seeds=$(find "${work}/corpus" -type f | wc -l)
+    log="${work}/fuzz.log"
+    echo "=== ${t}: ${SECONDS_PER_TARGET} s, ${seeds} seeds"
+    status=0
+    extra=()
+    [[ "${JOBS}" -gt 1 ]] && extra=(-fork="${JOBS}" -ignore_crashes=0)
+    (cd "${work}" && "${BUILD}/${t}" "${work}/corpus" -max_total_time="${SECONDS_PER_TARGET}" \
+        -rss_limit_mb=2048 -timeout=60 -max_len=65536 -print_final_stats=1 \
+        -artifact_prefix="${findings}/" "${extra[@]}") >"${log}" 2>&1 || status=$?
+    runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "${log}" | grep -oE '[0-9]+$' | tail -1)
+    [[ -z "${runs}" ]] && runs=$(grep -oE '^#[0-9]+' "${log}" | tail -1 | tr -d '#')
+    cov=$(grep -oE 'cov: [0-9]+ ft: [0-9]+' "${log}" | tail -1)
+    corpus=$(find "${work}/corpus" -type f | wc -l)
+    if [[ ${status} -ne 0 ]] || grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|FUZZ_CHECK failed' "${log}"; then
+        result="FOUND SOMETHING (exit ${status}); see ${log} and ${findings}/"
+        failed+=("${t}")
+        grep -E 'ERROR:|runtime error:|FUZZ_CHECK|SUMMARY|Test unit written' "${log}" | head -8 || true
+    else
+        result="nothing found"
+    fi
+    line="${t}: runs ${runs:-?}, ${cov:-cov ?}, corpus ${seeds} -> ${corpus} files: ${result}"
+    echo "${line}"
+    summary+=("${line}")
+done
+
+echo
+echo "=== fuzzing summary (${SECONDS_PER_TARGET} s per target)"
+printf '%s\n' "${summary[@]}"
+if [[ ${#failed[@]} -gt 0 ]]; then
+    echo "FAILED: ${failed[*]}"
+    exit 1
+fi
+echo "all fuzz targets clean"
