@@ -28,7 +28,13 @@ if [[ ! -f "${BUILD}/CMakeCache.txt" ]]; then
     cmake -S "${ROOT}/tests/fuzz" -B "${BUILD}" "${generator[@]}" -DCMAKE_CXX_COMPILER="${CXX}" \
         -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_FUZZ_MRPT="${MRPT}"
 fi
-cmake --build "${BUILD}" -j "$(nproc)"
+# Serialise concurrent invocations' builds (two ninjas in one build tree clash).
+mkdir -p "${BUILD}"
+if command -v flock >/dev/null 2>&1; then
+    flock "${BUILD}/.build.lock" cmake --build "${BUILD}" -j "$(nproc)"
+else
+    cmake --build "${BUILD}" -j "$(nproc)"
+fi
 
 targets=(fuzz_kitti_bin fuzz_label_file fuzz_params fuzz_segmentation)
 [[ "${MRPT}" == "ON" ]] && targets+=(fuzz_rawlog)

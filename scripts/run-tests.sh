@@ -3,7 +3,8 @@
 #   1. scripts/setup.sh: installs the missing Debian packages and builds ./build (Release)
 #   2. the whole test suite of ./build with CTest
 #   3. libtravel's tests again under AddressSanitizer + UndefinedBehaviorSanitizer
-#      (./build-asan, libtravel only: the MRPT parts are tested in step 2)
+#      (./build-asan, libtravel only: the MRPT parts are tested in step 2), and the
+#      multi-threaded test under ThreadSanitizer (./build-tsan)
 #   4. clang-format check of every C++ file, when clang-format is installed
 # Tests that need ../shared/data (SemanticKITTI etc.) skip with a message when it is absent.
 set -euo pipefail
@@ -26,6 +27,14 @@ cmake --build build-asan -j2
 log "test suite under sanitizers"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-asan -j2 --output-on-failure
+
+log "thread sanitizer build (build-tsan/): one Pipeline per thread, identical results"
+tsan=(cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=thread
+      -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF)
+[[ -f build-tsan/CMakeCache.txt ]] || tsan+=(-G Ninja)
+"${tsan[@]}" >/dev/null
+cmake --build build-tsan -j2 --target test_robustness
+TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_robustness --gtest_filter='*Thread*'
 
 if command -v clang-format >/dev/null 2>&1; then
   log "clang-format check"
