@@ -5,7 +5,8 @@
 #   3. libtravel's tests again under AddressSanitizer + UndefinedBehaviorSanitizer
 #      (./build-asan, libtravel only: the MRPT parts are tested in step 2), and the
 #      multi-threaded test under ThreadSanitizer (./build-tsan)
-#   4. clang-format check of every C++ file, when clang-format is installed
+#   4. libFuzzer targets, 60 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
+#   5. clang-format check of every C++ file, when clang-format is installed
 # Tests that need ../shared/data (SemanticKITTI etc.) skip with a message when it is absent.
 set -euo pipefail
 
@@ -35,6 +36,11 @@ tsan=(cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITI
 "${tsan[@]}" >/dev/null
 cmake --build build-tsan -j2 --target test_robustness
 TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_robustness --gtest_filter='*Thread*'
+
+# Bounded fuzzing of every reader and the segmentation entry point (scripts/run-fuzzers.sh;
+# longer runs: scripts/run-fuzzers.sh 3600).
+log "fuzzing: ${TRAVEL_FUZZ_SECONDS:-60} s per target"
+bash "$ROOT_DIR/scripts/run-fuzzers.sh" "${TRAVEL_FUZZ_SECONDS:-60}"
 
 if command -v clang-format >/dev/null 2>&1; then
   log "clang-format check"

@@ -11,11 +11,78 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
+#include <malloc.h>
+
+#include <algorithm>
+#include <atomic>
 #include <memory>
+#include <new>
 
 #include "FuzzCommon.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
+
+// MRPT's deserializers allocate whatever size the stream announces (a corrupt length of 3.5 GB
+// is one mutation away). Without ASan that throws std::bad_alloc, which travel-rawlog reports as
+// "corrupt record"; under ASan, operator new aborts instead and libFuzzer calls it an OOM. Give
+// the harness the production behaviour: operator new throws std::bad_alloc above 256 MB in one
+// block, or when the live total through new passes 1 GB (CSensoryFrame reads a count and grows a
+// deque of that many pointers, in small blocks). It forwards to malloc/free, which ASan still
+// intercepts (overflows, use-after-free, leaks).
+namespace {
+constexpr std::size_t kMaxAlloc = std::size_t(256) << 20;
+constexpr std::size_t kMaxLive = std::size_t(1) << 30;
+std::atomic<std::size_t> g_live{0};
+void* fuzzNew(std::size_t n) {
+    if (n > kMaxAlloc || g_live.load(std::memory_order_relaxed) + n > kMaxLive)
+        throw std::bad_alloc();
+    if (void* p = std::malloc(n ? n : 1)) {
+        g_live += malloc_usable_size(p);
+        return p;
+    }
+    throw std::bad_alloc();
+}
+void fuzzFree(void* p) {
+    if (p) g_live -= malloc_usable_size(p);
+    std::free(p);
+}
+void* fuzzNewAligned(std::size_t n, std::align_val_t a) {
+    if (n > kMaxAlloc) throw std::bad_alloc();
+    const std::size_t al = static_cast<std::size_t>(a);
+    if (void* p = std::aligned_alloc(al, (std::max<std::size_t>(n, 1) + al - 1) / al * al)) {
+        g_live += malloc_usable_size(p);
+        return p;
+    }
+    throw std::bad_alloc();
+}
+}  // namespace
+void* operator new(std::size_t n) { return fuzzNew(n); }
+void* operator new[](std::size_t n) { return fuzzNew(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    try {
+        return fuzzNew(n);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    try {
+        return fuzzNew(n);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new(std::size_t n, std::align_val_t a) { return fuzzNewAligned(n, a); }
+void* operator new[](std::size_t n, std::align_val_t a) { return fuzzNewAligned(n, a); }
+void operator delete(void* p) noexcept { fuzzFree(p); }
+void operator delete[](void* p) noexcept { fuzzFree(p); }
+void operator delete(void* p, std::size_t) noexcept { fuzzFree(p); }
+void operator delete[](void* p, std::size_t) noexcept { fuzzFree(p); }
+void operator delete(void* p, std::align_val_t) noexcept { fuzzFree(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { fuzzFree(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { fuzzFree(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { fuzzFree(p); }
 
 namespace {
 constexpr std::size_t kMaxPoints = 20000;
