@@ -10,10 +10,10 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <malloc.h>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
-#include <malloc.h>
 
 #include <algorithm>
 #include <atomic>
@@ -57,8 +57,12 @@ void* fuzzNewAligned(std::size_t n, std::align_val_t a) {
     throw std::bad_alloc();
 }
 }  // namespace
-void* operator new(std::size_t n) { return fuzzNew(n); }
-void* operator new[](std::size_t n) { return fuzzNew(n); }
+void* operator new(std::size_t n) {
+    return fuzzNew(n);
+}
+void* operator new[](std::size_t n) {
+    return fuzzNew(n);
+}
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
     try {
         return fuzzNew(n);
@@ -73,16 +77,36 @@ void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
         return nullptr;
     }
 }
-void* operator new(std::size_t n, std::align_val_t a) { return fuzzNewAligned(n, a); }
-void* operator new[](std::size_t n, std::align_val_t a) { return fuzzNewAligned(n, a); }
-void operator delete(void* p) noexcept { fuzzFree(p); }
-void operator delete[](void* p) noexcept { fuzzFree(p); }
-void operator delete(void* p, std::size_t) noexcept { fuzzFree(p); }
-void operator delete[](void* p, std::size_t) noexcept { fuzzFree(p); }
-void operator delete(void* p, std::align_val_t) noexcept { fuzzFree(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { fuzzFree(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { fuzzFree(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { fuzzFree(p); }
+void* operator new(std::size_t n, std::align_val_t a) {
+    return fuzzNewAligned(n, a);
+}
+void* operator new[](std::size_t n, std::align_val_t a) {
+    return fuzzNewAligned(n, a);
+}
+void operator delete(void* p) noexcept {
+    fuzzFree(p);
+}
+void operator delete[](void* p) noexcept {
+    fuzzFree(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    fuzzFree(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    fuzzFree(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    fuzzFree(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    fuzzFree(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    fuzzFree(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    fuzzFree(p);
+}
 
 namespace {
 constexpr std::size_t kMaxPoints = 20000;

@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
     const auto scan64 = sim::scan(urban, sim::LidarModel::hdl64(256),
                                   sim::sensorPoseAt(urban, 0, 0, 1.73, 0, 0, 0));
     const auto flat = sim::flatGround();
-    const auto scan16 = sim::scan(flat, sim::LidarModel::vlp16(180),
-                                  sim::sensorPoseAt(flat, 0, 0, 1.0, 0, 0, 0));
+    const auto scan16 =
+        sim::scan(flat, sim::LidarModel::vlp16(180), sim::sensorPoseAt(flat, 0, 0, 1.0, 0, 0, 0));
 
     // fuzz_kitti_bin: KITTI .bin (16 B/point) and XYZIR (20 B/point), and an empty file.
     const PointCloud c50 = subsample(scan64.cloud, 50), c200 = subsample(scan64.cloud, 200);
@@ -126,8 +126,7 @@ int main(int argc, char** argv) {
     {
         const PointCloud c100 = subsample(scan64.cloud, 100);
         auto map = mrpt::maps::CPointsMapXYZI::Create();
-        for (std::size_t i = 0; i < c100.size(); ++i)
-            {
+        for (std::size_t i = 0; i < c100.size(); ++i) {
             map->insertPoint(c100.x[i], c100.y[i], c100.z[i]);
             map->setPointIntensity(i, 0.5f);
         }
@@ -151,7 +150,8 @@ int main(int argc, char** argv) {
         }
     }
     // A CObservationVelodyneScan cut down to 2 packets, if MRPT's sample dataset is installed
-    // (TRAVEL_VLP16_RAWLOG=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog); the seed is ~3 KB, not the dataset.
+    // (TRAVEL_VLP16_RAWLOG=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog); the seed is ~3 KB,
+    // not the dataset.
     if (const char* vlp = std::getenv("TRAVEL_VLP16_RAWLOG")) {
         mrpt::io::CFileGZInputStream in(vlp);
         auto a = mrpt::serialization::archiveFrom(in);
