@@ -6,6 +6,8 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <exception>
+#include <iostream>
 #include <optional>
 #include <string>
 
@@ -18,6 +20,20 @@ inline std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char**
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-h" || arg == "--help" || arg == "--version") return 0;
+    }
+    return 1;
+}
+
+/// The apps' main(): runs `run`, turning any exception into "<name>: error: ..." on stderr and
+/// exit code 1 (never a crash or an uncaught exception).
+template <class Run>
+int runMain(const char* name, Run&& run, int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const TCLAP::ArgException& e) {
+        std::cerr << name << ": " << e.error() << " (" << e.argId() << ")\n";
+    } catch (const std::exception& e) {
+        std::cerr << name << ": error: " << e.what() << "\n";
     }
     return 1;
 }

@@ -722,12 +722,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "travel-eval: " << e.error() << " (" << e.argId() << ")\n";
-    } catch (const std::exception& e) {
-        std::cerr << "travel-eval: error: " << e.what() << "\n";
-    }
-    return 1;
+    return travel::apps::runMain("travel-eval", run, argc, argv);
 }

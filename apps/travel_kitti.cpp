@@ -307,12 +307,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "travel-kitti: " << e.error() << " (" << e.argId() << ")\n";
-    } catch (const std::exception& e) {
-        std::cerr << "travel-kitti: error: " << e.what() << "\n";
-    }
-    return 1;
+    return travel::apps::runMain("travel-kitti", run, argc, argv);
 }

@@ -3,16 +3,7 @@
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
-function(expect_failure_mentioning needle)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(rc EQUAL 0)
-    message(FATAL_ERROR "expected failure: ${ARGN}\n${out}${err}")
-  endif()
-  string(FIND "${out}${err}" "${needle}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "message does not mention '${needle}':\n${out}${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 
 # Missing scan
 expect_failure_mentioning("no_such_scan.bin" ${TRAVEL_VIEW} --scan ${WORK_DIR}/no_such_scan.bin --out ${WORK_DIR}/x.png)
