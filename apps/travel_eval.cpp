@@ -47,15 +47,6 @@ constexpr travel::GroundProtocol kProtocols[2] = {travel::GroundProtocol::A,
 // ---------------------------------------------------------------------------------------------
 // Small helpers
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + mid, v.end());
-    const double hi = v[mid];
-    if (v.size() % 2) return hi;
-    return 0.5 * (hi + *std::max_element(v.begin(), v.begin() + mid));
-}
-
 std::vector<std::string> splitList(const std::string& text, char sep) {
     std::vector<std::string> items;
     std::stringstream ss(text);
@@ -273,8 +264,8 @@ Summary summarize(const MethodRun& run) {
     s.use = travel::meanStd(use);
     s.ose = travel::meanStd(ose);
     s.objects = run.objects.summary();
-    s.ground_ms = median(gms);
-    s.objects_ms = median(oms);
+    s.ground_ms = travel::median(gms);
+    s.objects_ms = travel::median(oms);
     s.clusters = run.clusters;
     return s;
 }

@@ -35,15 +35,6 @@ struct StageSeries {
     std::vector<double> ms;
 };
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + mid, v.end());
-    const double hi = v[mid];
-    if (v.size() % 2) return hi;
-    return 0.5 * (hi + *std::max_element(v.begin(), v.begin() + mid));
-}
-
 travel::Params loadParams(const std::string& preset, const std::string& config,
                           const std::vector<std::string>& overrides) {
     travel::Params params = travel::loadPreset(preset);
@@ -299,7 +290,7 @@ int run(int argc, char** argv) {
     for (const StageSeries& s : stages) {
         const double max = s.ms.empty() ? 0.0 : *std::max_element(s.ms.begin(), s.ms.end());
         if (max == 0.0) continue;  // a stage this method does not have
-        std::printf("  %-13s median %7.3f  max %7.3f\n", s.name, median(s.ms), max);
+        std::printf("  %-13s median %7.3f  max %7.3f\n", s.name, travel::median(s.ms), max);
     }
     return 0;
 }

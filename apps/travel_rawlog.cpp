@@ -34,6 +34,7 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
+#include "travel/Metrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/Attitude.hpp"
@@ -375,13 +376,6 @@ void writePly(const std::string& path, const travel::AlignedCloud& aligned,
 // ------------------------------------------------------------------------------------------
 // Statistics and CSV.
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + mid, v.end());
-    return v[mid];
-}
-
 struct Totals {
     std::size_t frames = 0, points = 0, skipped = 0;
     std::array<std::size_t, 4> per_class{};
@@ -576,8 +570,10 @@ void printSummary(const Options& o, const Totals& t, long records, double second
     if (t.frames) {
         std::printf(
             "  ms per frame: TRAVEL median %.2f max %.2f; conversion median %.2f max %.2f\n",
-            median(t.process_ms), *std::max_element(t.process_ms.begin(), t.process_ms.end()),
-            median(t.convert_ms), *std::max_element(t.convert_ms.begin(), t.convert_ms.end()));
+            travel::median(t.process_ms),
+            *std::max_element(t.process_ms.begin(), t.process_ms.end()),
+            travel::median(t.convert_ms),
+            *std::max_element(t.convert_ms.begin(), t.convert_ms.end()));
     }
     if (!o.csv.empty()) std::printf("  per-frame CSV: %s\n", o.csv.c_str());
     if (!o.png_prefix.empty())

@@ -171,3 +171,15 @@ TEST(Metrics, MeanStd) {
     EXPECT_DOUBLE_EQ(m.mean, 5.0);
     EXPECT_DOUBLE_EQ(m.std, 2.0);
 }
+
+namespace travel {
+namespace {
+
+TEST(Metrics, MedianOfOddEvenAndEmpty) {
+    EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0}), 2.0);
+    EXPECT_DOUBLE_EQ(median({4.0, 1.0, 3.0, 2.0}), 2.5);  // mean of the two middle values
+    EXPECT_DOUBLE_EQ(median({}), 0.0);
+}
+
+}  // namespace
+}  // namespace travel

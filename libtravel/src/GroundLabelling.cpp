@@ -27,7 +27,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float* sz = field.sz().data();
     const uint32_t* order = field.order().data();
     const float ground_dist = static_cast<float>(params.ground_dist);
-    const float outlier_dist = -static_cast<float>(params.outlier_dist);
+    const float outlier_dist = static_cast<float>(params.outlier_dist);
     for (const TriNode& node : model.nodes) {
         if (!node.traversable || node.count == 0) continue;
         const float s0 = node.refit_normal.x(), s1 = node.refit_normal.y();
@@ -41,10 +41,8 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         for (uint32_t i = node.begin; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
-            const float e = e_own >= outlier_dist ? std::min(e_refit, e_own) : e_refit;
-            labels[order[i]] = e < outlier_dist  ? PointClass::Outlier
-                               : e < ground_dist ? PointClass::Ground
-                                                 : PointClass::NonGround;
+            const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
+            labels[order[i]] = classifyByPlaneDistance(e, ground_dist, outlier_dist);
         }
     }
     std::array<std::size_t, 4> counts{};

@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/Metrics.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -74,6 +76,15 @@ GroundScores scoresFrom(const ConfusionCounts& c) {
     s.f1 = pr_sum > 0 ? 2.0 * s.precision * s.recall / pr_sum : 0.0;
     s.accuracy = percent(c.tp + c.tn, c.tp + c.tn + c.fp + c.fn, 100.0);
     return s;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    const std::size_t mid = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + mid, values.end());
+    const double upper = values[mid];
+    if (values.size() % 2) return upper;
+    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + mid));
 }
 
 MeanStd meanStd(const std::vector<double>& values) {

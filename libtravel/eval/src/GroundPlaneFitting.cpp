@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/eval/GroundPlaneFitting.hpp"
 
+#include "travel/GroundLabelling.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -106,9 +108,7 @@ void GroundPlaneFitting::segment(const AlignedCloud& cloud, const Params& params
             }
             const float d =
                 plane[0] * cloud.x[i] + plane[1] * cloud.y[i] + plane[2] * cloud.z[i] + plane[3];
-            labels[i] = d < -outlier  ? PointClass::Outlier
-                        : d < th_dist ? PointClass::Ground
-                                      : PointClass::NonGround;
+            labels[i] = classifyByPlaneDistance(d, th_dist, outlier);
         }
     }
 }

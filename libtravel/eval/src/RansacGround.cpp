@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/eval/RansacGround.hpp"
 
+#include "travel/GroundLabelling.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -70,9 +72,7 @@ void RansacGround::segment(const AlignedCloud& cloud, const Params& params,
         if (!cloud.valid[i]) continue;
         const float d =
             plane_[0] * cloud.x[i] + plane_[1] * cloud.y[i] + plane_[2] * cloud.z[i] + plane_[3];
-        labels[i] = d < -outlier ? PointClass::Outlier
-                    : d < inlier ? PointClass::Ground
-                                 : PointClass::NonGround;
+        labels[i] = classifyByPlaneDistance(d, inlier, outlier);
     }
 }
 

@@ -13,6 +13,14 @@
 
 namespace travel {
 
+/// Eq. 5 for one point: signed distance e to the ground plane -> Outlier below -outlier_dist,
+/// Ground below ground_dist, NonGround otherwise. Shared with the baselines (GPF, RANSAC).
+inline PointClass classifyByPlaneDistance(float e, float ground_dist, float outlier_dist) {
+    return e < -outlier_dist ? PointClass::Outlier
+           : e < ground_dist ? PointClass::Ground
+                             : PointClass::NonGround;
+}
+
 /// labels.size() == cloud size afterwards; every point gets exactly one class.
 /// Returns the number of points per class (indexed by PointClass value).
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,

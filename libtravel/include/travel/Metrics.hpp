@@ -83,4 +83,7 @@ struct MeanStd {
 };
 MeanStd meanStd(const std::vector<double>& values);
 
+/// Median (the mean of the two middle values for an even count); 0 for no values.
+double median(std::vector<double> values);
+
 }  // namespace travel
