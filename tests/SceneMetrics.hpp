@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <map>
 #include <vector>
 
 #include "travel/PointCloud.hpp"
@@ -40,6 +42,34 @@ inline SceneScores scoreScene(const sim::GroundTruth& gt, const std::vector<Poin
         if (!truth && !pred) ++s.tn;
         if (!truth && pred && gt.height_above_ground[i] > 0.3f) ++s.high_obstacle_as_ground;
     }
+    return s;
+}
+
+/// One ground-truth object: coverage = largest share of its non-ground-labelled points (the
+/// clustering's input) inside one cluster; purity = share of that cluster belonging to it.
+struct ObjectScore {
+    std::size_t points = 0;
+    uint32_t best_cluster = 0;
+    double coverage = 0, purity = 0;
+};
+
+inline ObjectScore scoreObject(const sim::GroundTruth& gt, const std::vector<PointClass>& labels,
+                               const std::vector<uint32_t>& cluster_id, uint32_t instance) {
+    ObjectScore s;
+    std::map<uint32_t, std::size_t> per_cluster;
+    for (std::size_t i = 0; i < gt.size(); ++i) {
+        if (gt.instance[i] != instance || labels[i] != PointClass::NonGround) continue;
+        ++s.points;
+        if (cluster_id[i]) ++per_cluster[cluster_id[i]];
+    }
+    std::size_t best = 0;
+    for (const auto& [id, count] : per_cluster)
+        if (count > best) best = count, s.best_cluster = id;
+    if (s.points == 0 || s.best_cluster == 0) return s;
+    s.coverage = double(best) / double(s.points);
+    std::size_t cluster_size = 0;
+    for (const uint32_t id : cluster_id) cluster_size += id == s.best_cluster;
+    s.purity = double(best) / double(cluster_size);
     return s;
 }
 

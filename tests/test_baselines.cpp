@@ -58,31 +58,10 @@ double groundRecall(const sim::Scan& scan, const eval::Segmentation& seg, double
     return truth ? double(found) / double(truth) : 0.0;
 }
 
-struct ObjectScore {
-    std::size_t points = 0;
-    uint32_t best_cluster = 0;
-    double coverage = 0, purity = 0;
-};
+using test::ObjectScore;
 
-// As in test_clustering.cpp: coverage = largest share of the object's non-ground points in one
-// cluster, purity = share of that cluster belonging to the object.
 ObjectScore scoreObject(const sim::Scan& scan, const eval::Segmentation& seg, uint32_t instance) {
-    ObjectScore s;
-    std::map<uint32_t, std::size_t> per_cluster;
-    for (std::size_t i = 0; i < scan.gt.size(); ++i) {
-        if (scan.gt.instance[i] != instance || seg.labels[i] != PointClass::NonGround) continue;
-        ++s.points;
-        if (seg.cluster_id[i]) ++per_cluster[seg.cluster_id[i]];
-    }
-    std::size_t best = 0;
-    for (const auto& [id, count] : per_cluster)
-        if (count > best) best = count, s.best_cluster = id;
-    if (s.points == 0 || s.best_cluster == 0) return s;
-    s.coverage = double(best) / double(s.points);
-    std::size_t cluster_size = 0;
-    for (const uint32_t id : seg.cluster_id) cluster_size += id == s.best_cluster;
-    s.purity = double(best) / double(cluster_size);
-    return s;
+    return test::scoreObject(scan.gt, seg.labels, seg.cluster_id, instance);
 }
 
 TEST(Baselines, UnknownMethodIsAConfigErrorNamingTheValidOnes) {

@@ -8,6 +8,7 @@
 
 #include <map>
 
+#include "SceneMetrics.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
@@ -17,33 +18,13 @@ namespace {
 
 constexpr double kSensorHeight = 1.73;
 
-struct ObjectScore {
-    std::size_t points = 0;  // object points labelled non-ground (the clustering's input)
-    uint32_t best_cluster = 0;
-    double coverage = 0, purity = 0;
-};
+using test::ObjectScore;
 
 struct Segmented {
     sim::Scan scan;
     Result result;
     ObjectScore score(uint32_t instance) const {
-        ObjectScore s;
-        std::map<uint32_t, std::size_t> per_cluster;
-        for (std::size_t i = 0; i < scan.gt.size(); ++i) {
-            if (scan.gt.instance[i] != instance || result.labels[i] != PointClass::NonGround)
-                continue;
-            ++s.points;
-            if (result.cluster_id[i]) ++per_cluster[result.cluster_id[i]];
-        }
-        std::size_t best = 0;
-        for (const auto& [id, count] : per_cluster)
-            if (count > best) best = count, s.best_cluster = id;
-        if (s.points == 0 || s.best_cluster == 0) return s;
-        s.coverage = double(best) / double(s.points);
-        std::size_t cluster_size = 0;
-        for (const uint32_t id : result.cluster_id) cluster_size += id == s.best_cluster;
-        s.purity = double(best) / double(cluster_size);
-        return s;
+        return test::scoreObject(scan.gt, result.labels, result.cluster_id, instance);
     }
 };
 
