@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "MemoryLimit.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Metrics.hpp"
 #include "travel/ParamsIO.hpp"
@@ -92,6 +93,7 @@ struct Options {
     bool ignore_sensor_pose = false;
     int png_size = 800;
     double png_metres_per_pixel = 0.075;
+    std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 
 std::string presetList() {
@@ -169,6 +171,13 @@ Options parseCommandLine(int argc, char** argv) {
                                  "Keep the mount_* parameters of the configuration instead of "
                                  "each observation's sensorPose",
                                  cmd);
+    TCLAP::ValueArg<long> max_memory(
+        "", "max-memory",
+        "Address-space ceiling of this process in MiB (0 = none). A corrupt rawlog can announce "
+        "gigabyte-sized objects that MRPT's reader would allocate; above the ceiling the record "
+        "is reported as corrupt instead. Default " +
+            std::to_string(travel::apps::kDefaultMemoryLimitMiB),
+        false, static_cast<long>(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary (errors only)", cmd);
     Options o;
     o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
@@ -186,6 +195,9 @@ Options parseCommandLine(int argc, char** argv) {
     o.csv = csv.getValue();
     o.quiet = quiet.getValue();
     o.ignore_sensor_pose = ignore_pose.getValue();
+    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
+        throw AppError("--max-memory must be 0 (no limit) or at least 256 MiB");
+    o.max_memory_mib = static_cast<std::size_t>(max_memory.getValue());
     if (!(o.png_metres_per_pixel > 0) || !std::isfinite(o.png_metres_per_pixel))
         throw AppError("--png-mpp must be > 0");
     if (o.png_size < 64 || o.png_size > 8192) throw AppError("--png-size must be in [64, 8192]");
@@ -236,7 +248,8 @@ class RawlogReader {
             throw AppError(where(path_, index_) + ": truncated (end of file inside the record)");
         } catch (const std::bad_alloc&) {
             throw AppError(where(path_, index_) +
-                           ": corrupt record (absurd size); is it a rawlog?");
+                           ": corrupt record (it announces more data than --max-memory allows); "
+                           "is it a rawlog?");
         } catch (const std::exception& e) {
             const std::string what = oneLine(e.what());
             // MRPT reports a short read inside an object as a generic error, not CExceptionEOF.
@@ -583,6 +596,9 @@ void printSummary(const Options& o, const Totals& t, long records, double second
 int run(int argc, char** argv) {
     const Options options = parseCommandLine(argc, argv);
     if (options.exit_code) return *options.exit_code;
+    const std::string limit_note = travel::apps::applyMemoryLimit(options.max_memory_mib);
+    if (!limit_note.empty() && !options.quiet)
+        std::cerr << "travel-rawlog: note: " << limit_note << "\n";
     const travel::Params params = loadParams(options);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))

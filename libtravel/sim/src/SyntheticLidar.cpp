@@ -378,14 +378,27 @@ Scan scan(const Scene& scene, const LidarModel& model,
     return out;
 }
 
-void scan(const Scene& scene, const LidarModel& model,
-          const Eigen::Isometry3d& sensor_pose_in_world, Scan& out) {
+namespace {
+
+// The ray caster behind scan() and scanMoving(): column_poses is null for a static sensor
+// (every column fired from sensor_pose_in_world), else one pose per column.
+void scanColumns(const Scene& scene, const LidarModel& model,
+                 const Eigen::Isometry3d& sensor_pose_in_world,
+                 const std::vector<Eigen::Isometry3d>* column_poses, Scan& out) {
     model.validate();
     scene.validate();
 
-    const Eigen::Vector3d origin = sensor_pose_in_world.translation();
-    const Eigen::Matrix3d rotation = sensor_pose_in_world.linear();
-    const PreparedScene world(scene, origin, model.max_range);
+    Eigen::Vector3d origin = sensor_pose_in_world.translation();
+    Eigen::Matrix3d rotation = sensor_pose_in_world.linear();
+    // The terrain bounds must cover every ray of the sweep, from wherever it is fired.
+    double reach = model.max_range;
+    if (column_poses) {
+        double farthest = 0.0;
+        for (const Eigen::Isometry3d& pose : *column_poses)
+            farthest = std::max(farthest, (pose.translation() - origin).head<2>().norm());
+        reach += farthest;
+    }
+    const PreparedScene world(scene, origin, reach);
 
     const std::vector<double> elevations = model.elevationsByRing();
     const int beams = static_cast<int>(elevations.size());
@@ -396,7 +409,7 @@ void scan(const Scene& scene, const LidarModel& model,
     }
     std::vector<double> cos_azimuth(model.columns), sin_azimuth(model.columns);
     for (int column = 0; column < model.columns; ++column) {
-        const double azimuth = 2.0 * kPi * column / model.columns;
+        const double azimuth = (model.clockwise ? -2.0 : 2.0) * kPi * column / model.columns;
         cos_azimuth[column] = std::cos(azimuth);
         sin_azimuth[column] = std::sin(azimuth);
     }
@@ -468,15 +481,42 @@ void scan(const Scene& scene, const LidarModel& model,
             static_cast<float>(hit.z() - scene.terrainHeight(hit.x(), hit.y())));
     };
 
+    const auto moveTo = [&](int column) {
+        if (!column_poses) return;
+        const Eigen::Isometry3d& pose = (*column_poses)[static_cast<std::size_t>(column)];
+        origin = pose.translation();
+        rotation = pose.linear();
+    };
     if (model.order == PointOrder::RingMajor) {
         for (int ring = 0; ring < beams; ++ring) {
-            for (int column = 0; column < model.columns; ++column) castRay(ring, column);
+            for (int column = 0; column < model.columns; ++column) {
+                moveTo(column);
+                castRay(ring, column);
+            }
         }
     } else {
         for (int column = 0; column < model.columns; ++column) {
+            moveTo(column);
             for (int ring = 0; ring < beams; ++ring) castRay(ring, column);
         }
     }
+}
+
+}  // namespace
+
+void scan(const Scene& scene, const LidarModel& model,
+          const Eigen::Isometry3d& sensor_pose_in_world, Scan& out) {
+    scanColumns(scene, model, sensor_pose_in_world, nullptr, out);
+}
+
+void scanMoving(const Scene& scene, const LidarModel& model,
+                const std::vector<Eigen::Isometry3d>& column_poses, Scan& out) {
+    model.validate();
+    if (column_poses.size() != static_cast<std::size_t>(model.columns))
+        throw std::invalid_argument("travel::sim::scanMoving: need one pose per column (" +
+                                    std::to_string(model.columns) + "), got " +
+                                    std::to_string(column_poses.size()));
+    scanColumns(scene, model, column_poses.front(), &column_poses, out);
 }
 
 }  // namespace travel::sim

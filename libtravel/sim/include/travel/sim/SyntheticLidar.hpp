@@ -37,6 +37,9 @@ struct LidarModel {
     bool emit_no_returns = false;    ///< true: rays without a hit give (0,0,0), NoReturn
     PointOrder order = PointOrder::RingMajor;
     uint32_t seed = 1;  ///< std::mt19937 seed of the range noise
+    /// true: column c fires at azimuth -2 pi c / columns (clockwise seen from above, like a
+    /// Velodyne); false (default): counter-clockwise as documented above.
+    bool clockwise = false;
 
     std::size_t numBeams() const { return elevations_deg.size(); }
     /// Elevations [deg] indexed by ring (ascending).
@@ -87,5 +90,12 @@ Scan scan(const Scene& scene, const LidarModel& model,
 /// Same, reusing the buffers of `out`.
 void scan(const Scene& scene, const LidarModel& model,
           const Eigen::Isometry3d& sensor_pose_in_world, Scan& out);
+
+/// One revolution during which the sensor moves: column c is fired from column_poses[c], the
+/// sensor pose in the world at that column's time (c / columns * sweep_period). Each point is
+/// in the sensor frame of its own column, as a real spinning LiDAR reports it (the skew that
+/// deskewing undoes). Throws std::invalid_argument unless column_poses.size() == columns.
+void scanMoving(const Scene& scene, const LidarModel& model,
+                const std::vector<Eigen::Isometry3d>& column_poses, Scan& out);
 
 }  // namespace travel::sim

@@ -1,0 +1,286 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel_mrpt/TravelFilter.hpp"
+
+#include <mrpt/containers/yaml.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "travel_mrpt/Attitude.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
+
+namespace travel_mrpt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double seconds(mrpt::Clock::time_point t) {
+    return mrpt::Clock::toDouble(t);
+}
+
+Eigen::Matrix3d rotationOf(const mrpt::poses::CPose3D& pose) {
+    return pose.getRotationMatrix().asEigen();
+}
+
+Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3D& pose) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = rotationOf(pose);
+    T.translation() = Eigen::Vector3d(pose.x(), pose.y(), pose.z());
+    return T;
+}
+
+/// Rz(yaw) Ry(pitch) Rx(roll), MRPT's CPose3D convention.
+Eigen::Matrix3d yawPitchRoll(double yaw, double pitch, double roll) {
+    return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+            Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+            Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+        .toRotationMatrix();
+}
+
+/// The rotation the pipeline uses for the sensor on the robot (params.mount_*).
+Eigen::Matrix3d mountRotation(const travel::Params& p) {
+    constexpr double kDeg = M_PI / 180.0;
+    return yawPitchRoll(p.mount_yaw_deg * kDeg, p.mount_pitch_deg * kDeg, p.mount_roll_deg * kDeg);
+}
+
+bool sameRotation(const mrpt::poses::CPose3D& a, const mrpt::poses::CPose3D& b) {
+    return (rotationOf(a) - rotationOf(b)).cwiseAbs().maxCoeff() < 1e-12;
+}
+
+}  // namespace
+
+TravelFilter::TravelFilter() : TravelFilter(TravelFilterOptions{}) {}
+
+TravelFilter::TravelFilter(const TravelFilterOptions& options)
+    : mrpt::system::COutputLogger("TravelFilter") {
+    setOptions(options);
+}
+
+TravelFilter::~TravelFilter() {
+    // CTimeLogger prints its table on destruction; callers who want it call dumpAllStats().
+    time_logger_.clear(true);
+}
+
+void TravelFilter::setOptions(const TravelFilterOptions& options) {
+    options.params.validate();
+    options.validate();
+    options_ = options;
+    label_regex_ = std::regex(options_.sensor_label, std::regex::ECMAScript);
+    pipelines_.clear();
+    noted_no_attitude_ = noted_no_velocity_ = noted_imu_time_ = noted_odometry_time_ = false;
+    motion_.setVelocitySource(options_.velocity_source);
+    motion_.setMaxAge(options_.max_motion_age);
+    reset();
+}
+
+void TravelFilter::initialize(const mrpt::containers::yaml& cfg) {
+    TravelFilterOptions options;
+    options.loadFromYaml(cfg);
+    setOptions(options);
+}
+
+void TravelFilter::loadConfigFile(const std::string& path) {
+    TravelFilterOptions options;
+    options.loadFromFile(path);
+    setOptions(options);
+}
+
+void TravelFilter::reset() {
+    motion_.reset();
+}
+
+void TravelFilter::noteOnce(bool& flag, const std::string& message,
+                            mrpt::system::VerbosityLevel level) {
+    if (flag) return;
+    flag = true;
+    logStr(level, message);
+}
+
+TravelFilter::SensorPipeline& TravelFilter::pipelineFor(const std::string& label,
+                                                        const mrpt::poses::CPose3D& pose) {
+    SensorPipeline& entry = pipelines_[label];
+    if (entry.pipeline && (!options_.use_sensor_pose || sameRotation(entry.mount, pose)))
+        return entry;
+    travel::Params params = options_.params;
+    if (options_.use_sensor_pose) setMountFromSensorPose(pose, params);
+    if (entry.pipeline)
+        logStr(mrpt::system::LVL_INFO,
+               "sensor '" + label + "' changed its mount: rebuilding its TRAVEL pipeline");
+    entry.pipeline = std::make_unique<travel::Pipeline>(params);
+    entry.mount = pose;
+    return entry;
+}
+
+bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
+                          std::string* why_not) {
+    const auto fail = [&](const std::string& reason) {
+        if (why_not) *why_not = reason;
+        return false;
+    };
+    if (!isLidarObservation(obs))
+        return fail("'" + obs.sensorLabel + "' (" + obs.GetRuntimeClass()->className +
+                    ") is not a 3-D LiDAR observation");
+    if (!std::regex_match(obs.sensorLabel, label_regex_))
+        return fail("sensor label '" + obs.sensorLabel + "' does not match sensor_label '" +
+                    options_.sensor_label + "'");
+
+    out.aligned = nullptr;
+    const Clock::time_point convert_start = Clock::now();
+    {
+        mrpt::system::CTimeLoggerEntry entry(time_logger_, "convert");
+        if (!toTravelCloud(obs, out.cloud, out.sensorPose, &why_scratch_))
+            return fail("'" + obs.sensorLabel + "': " + why_scratch_);
+    }
+    out.convert_ms = msSince(convert_start);
+    out.sensorLabel = obs.sensorLabel;
+    out.timestamp = obs.timestamp;
+
+    const Clock::time_point process_start = Clock::now();
+    mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
+    SensorPipeline& sensor = pipelineFor(obs.sensorLabel, out.sensorPose);
+    const travel::Params& params = sensor.pipeline->params();
+
+    // Motion at the frame's time zero (see the header): robot frame -> sensor frame.
+    travel::FrameInput input;
+    input.reference_time = 0.0;
+    out.levelled = out.deskewed = false;
+    out.sensorLinearVelocity.setZero();
+    out.sensorAngularVelocity.setZero();
+    const bool timed = obs.timestamp != INVALID_TIMESTAMP;
+    const MotionEstimate motion =
+        timed ? motion_.estimateAt(seconds(obs.timestamp)) : MotionEstimate{};
+    if (options_.use_robot_attitude && params.align_attitude) {
+        if (motion.attitude) {
+            setVehicleAttitude(
+                mrpt::poses::CPose3D::FromRotationAndTranslation(
+                    mrpt::math::CMatrixDouble33(*motion.attitude), mrpt::math::TVector3D(0, 0, 0)),
+                input);
+            out.levelled = true;
+        } else {
+            if (!noted_no_attitude_)
+                noteOnce(noted_no_attitude_,
+                         "no recent robot attitude (IMU or 3-D robot pose): "
+                         "frames are not levelled",
+                         mrpt::system::LVL_INFO);
+        }
+    }
+    if (params.deskew && options_.velocity_source != VelocitySource::None) {
+        if (!out.cloud.hasTime()) {
+            if (!sensor.noted_no_times)
+                noteOnce(sensor.noted_no_times,
+                         "'" + obs.sensorLabel + "' has no per-point times: no deskew",
+                         mrpt::system::LVL_INFO);
+        } else if (motion.linear_velocity && motion.angular_velocity) {
+            // v_s = R^T (v + w x t), w_s = R^T w for the sensor at (R, t) on the robot.
+            const Eigen::Matrix3d R = mountRotation(params);
+            const Eigen::Vector3d t(out.sensorPose.x(), out.sensorPose.y(), out.sensorPose.z());
+            const Eigen::Vector3d& v = *motion.linear_velocity;
+            const Eigen::Vector3d& w = *motion.angular_velocity;
+            out.sensorLinearVelocity = R.transpose() * (v + w.cross(t));
+            out.sensorAngularVelocity = R.transpose() * w;
+            input.linear_velocity = out.sensorLinearVelocity;
+            input.angular_velocity = out.sensorAngularVelocity;
+            out.deskewed = true;
+        } else {
+            if (!noted_no_velocity_)
+                noteOnce(noted_no_velocity_,
+                         std::string("no recent robot velocity (velocity_source=") +
+                             toString(options_.velocity_source) + "): frames are not deskewed",
+                         mrpt::system::LVL_INFO);
+        }
+    }
+
+    sensor.pipeline->process(out.cloud, input, out.result);
+    out.alignedRotation = sensor.pipeline->aligned().rotation;
+    out.aligned = &sensor.pipeline->aligned();
+    out.process_ms = msSince(process_start);
+    return true;
+}
+
+const travel::AlignedCloud& TravelFilter::aligned(const std::string& sensor_label) const {
+    const auto it = pipelines_.find(sensor_label);
+    if (it == pipelines_.end() || !it->second.pipeline)
+        throw std::out_of_range("TravelFilter::aligned: no frame processed yet for sensor '" +
+                                sensor_label + "'");
+    return it->second.pipeline->aligned();
+}
+
+void TravelFilter::processImu(const mrpt::obs::CObservationIMU& imu) {
+    using namespace mrpt::obs;
+    if (imu.timestamp == INVALID_TIMESTAMP) {
+        noteOnce(noted_imu_time_, "IMU '" + imu.sensorLabel + "' without timestamp: ignored",
+                 mrpt::system::LVL_WARN);
+        return;
+    }
+    const double t = seconds(imu.timestamp);
+    mrpt::poses::CPose3D imu_pose;
+    imu.getSensorPose(imu_pose);
+    const Eigen::Matrix3d robot_R_imu = rotationOf(imu_pose);
+    const auto has = [&](TIMUDataIndex i) { return imu.has(i); };
+
+    std::optional<Eigen::Matrix3d> world_R_imu;
+    if (has(IMU_ORI_QUAT_X) && has(IMU_ORI_QUAT_Y) && has(IMU_ORI_QUAT_Z) && has(IMU_ORI_QUAT_W)) {
+        Eigen::Quaterniond q(imu.get(IMU_ORI_QUAT_W), imu.get(IMU_ORI_QUAT_X),
+                             imu.get(IMU_ORI_QUAT_Y), imu.get(IMU_ORI_QUAT_Z));
+        if (q.norm() > 1e-9 && std::isfinite(q.norm()))
+            world_R_imu = q.normalized().toRotationMatrix();
+    } else if (has(IMU_ROLL) && has(IMU_PITCH)) {
+        // The world yaw reference does not change roll/pitch: 0 when the IMU has no yaw.
+        world_R_imu = yawPitchRoll(has(IMU_YAW) ? imu.get(IMU_YAW) : 0.0, imu.get(IMU_PITCH),
+                                   imu.get(IMU_ROLL));
+    }
+    if (world_R_imu && world_R_imu->allFinite())
+        motion_.addAttitude(t, *world_R_imu * robot_R_imu.transpose());
+
+    if (has(IMU_WX) && has(IMU_WY) && has(IMU_WZ)) {
+        const Eigen::Vector3d w_imu(imu.get(IMU_WX), imu.get(IMU_WY), imu.get(IMU_WZ));
+        if (w_imu.allFinite()) motion_.addAngularVelocity(t, robot_R_imu * w_imu);
+    }
+}
+
+void TravelFilter::processOdometry(const mrpt::obs::CObservationOdometry& odometry) {
+    if (odometry.timestamp == INVALID_TIMESTAMP) {
+        noteOnce(noted_odometry_time_,
+                 "odometry '" + odometry.sensorLabel + "' without timestamp: ignored",
+                 mrpt::system::LVL_WARN);
+        return;
+    }
+    const double t = seconds(odometry.timestamp);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = yawPitchRoll(odometry.odometry.phi(), 0, 0);
+    pose.translation() = Eigen::Vector3d(odometry.odometry.x(), odometry.odometry.y(), 0);
+    motion_.addOdometryPose(t, pose);
+    if (odometry.hasVelocities) {
+        const auto& v = odometry.velocityLocal;
+        motion_.addOdometryVelocity(t, Eigen::Vector3d(v.vx, v.vy, 0),
+                                    Eigen::Vector3d(0, 0, v.omega));
+    }
+}
+
+void TravelFilter::processAction(const mrpt::obs::CActionRobotMovement2D& action) {
+    if (!action.hasVelocities || action.timestamp == INVALID_TIMESTAMP) return;
+    const auto& v = action.velocityLocal;
+    motion_.addOdometryVelocity(seconds(action.timestamp), Eigen::Vector3d(v.vx, v.vy, 0),
+                                Eigen::Vector3d(0, 0, v.omega));
+}
+
+void TravelFilter::setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t) {
+    if (t == INVALID_TIMESTAMP) return;
+    motion_.addRobotPose(seconds(t), isometryOf(pose));
+}
+
+MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
+    return motion_.estimateAt(seconds(t));
+}
+
+}  // namespace travel_mrpt

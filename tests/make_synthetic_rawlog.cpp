@@ -1,0 +1,38 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// make_synthetic_rawlog OUT.rawlog [FRAMES]: writes the moving, tilted robot rawlog of
+// SyntheticRawlog.hpp (VLP-16 rotating scans + IMU + odometry), for command-line tests.
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "SyntheticRawlog.hpp"
+
+int main(int argc, char** argv) {
+    if (argc < 2 || argc > 3) {
+        std::fprintf(stderr, "usage: %s OUT.rawlog [FRAMES (default 10)]\n", argv[0]);
+        return 2;
+    }
+    try {
+        travel_test::SyntheticRawlogOptions options;
+        if (argc == 3) {
+            char* end = nullptr;
+            const long frames = std::strtol(argv[2], &end, 10);
+            if (*end != '\0' || frames < 1 || frames > 10000) {
+                std::fprintf(stderr, "FRAMES must be an integer in [1, 10000], got '%s'\n",
+                             argv[2]);
+                return 2;
+            }
+            options.frames = static_cast<int>(frames);
+        }
+        const travel_test::SyntheticRawlog rawlog = travel_test::makeSyntheticRawlog(options);
+        travel_test::writeRawlog(rawlog, argv[1]);
+        std::printf("%s: %zu records (%d LiDAR frames)\n", argv[1], rawlog.records.size(),
+                    options.frames);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "make_synthetic_rawlog: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
