@@ -1,15 +1,23 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// travel-rawlog: TRAVEL ground segmentation of the LiDAR observations of an MRPT rawlog.
-// Streams the input (observation format or SensoryFrame/action format, one record at a time),
-// copies every record to the output rawlog and adds, per processed observation, one plain
-// CObservationPointCloud per class. Optionally writes a per-frame CSV, bird's-eye PNGs and
-// coloured PLYs. See --help for the details of each output.
+// travel-rawlog: TRAVEL ground segmentation and object clustering of the LiDAR observations of
+// an MRPT rawlog, through travel_mrpt::TravelFilter. Streams the input (observation format or
+// SensoryFrame/action format, one record at a time), feeds IMU / odometry / odometry actions to
+// the filter's motion estimate (attitude levelling, deskew), copies every record to the output
+// rawlog and adds, per processed observation, one travel_mrpt::CObservationTravelLabels (shown
+// in colour by RawLogViewer with the plugin) and one plain CObservationPointCloud per class (for
+// readers without the plugin). Optionally writes a per-frame CSV, bird's-eye PNGs, coloured
+// PLYs and a label reference file. See --help for the details of each output.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
@@ -33,6 +41,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "LabelReference.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Metrics.hpp"
@@ -40,7 +49,10 @@
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
+#include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
+#include "travel_mrpt/Registration.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
 
 namespace fs = std::filesystem;
 using mrpt::obs::CObservation;
@@ -87,7 +99,8 @@ std::string where(const std::string& file, long record = -1) {
 
 struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
-    std::string input, output, config, preset, sensor_label_regex, png_prefix, csv;
+    std::string input, output, config, preset, sensor_label_regex, png_prefix, csv, label_reference;
+    bool plain_clouds = true;
     std::vector<std::string> overrides;
     bool quiet = false;
     bool ignore_sensor_pose = false;
@@ -109,26 +122,40 @@ std::string presetList() {
 
 Options parseCommandLine(int argc, char** argv) {
     TCLAP::CmdLine cmd(
-        "TRAVEL traversable-ground segmentation of the 3-D LiDAR observations of an MRPT rawlog "
-        "(CObservationVelodyneScan, CObservationRotatingScan, CObservationPointCloud, "
-        "CObservation3DRangeScan).\n"
+        "TRAVEL traversable-ground segmentation and object clustering of the 3-D LiDAR "
+        "observations of an MRPT rawlog (CObservationVelodyneScan, CObservationRotatingScan, "
+        "CObservationPointCloud, CObservation3DRangeScan).\n"
         "Outputs:\n"
         " (1) OUT.rawlog: every input record, unchanged, in the input's format; after each "
-        "processed observation, three CObservationPointCloud (CPointsMapXYZI, points in the "
-        "sensor frame, same sensorPose and timestamp, original intensity) labelled "
-        "<label>_ground, <label>_nonground and <label>_outlier; in SensoryFrame rawlogs they are "
-        "added to the observation's SensoryFrame. Invalid points (no return, out of range) are in "
-        "none of them.\n"
-        " (2) --csv: one line per frame: index, timestamp, label, point counts per class and "
-        "milliseconds per stage.\n"
+        "processed observation (in SensoryFrame rawlogs: inside its SensoryFrame) a "
+        "travel_mrpt::CObservationTravelLabels labelled <label>_travel (every point of the "
+        "source in the sensor frame with its class and cluster id, the cluster boxes and the "
+        "terrain model; RawLogViewer -l libtravel_mrpt_plugin.so shows it in colour, "
+        "rawlog-edit -p describes it) and, unless --no-plain-clouds, three "
+        "CObservationPointCloud (CPointsMapXYZI, same sensorPose and timestamp, original "
+        "intensity) labelled <label>_ground, <label>_nonground and <label>_outlier for readers "
+        "without the plugin. Invalid points (no return, out of range) are in none of the "
+        "three.\n"
+        " (2) --csv: one line per frame: index, timestamp, label, point counts per class, "
+        "clusters, whether the frame was levelled / deskewed, and milliseconds per stage.\n"
         " (3) --png: PREFIX_<frame>.png, a bird's-eye view centred on the sensor (up = forward; "
-        "ground green, non-ground red, outlier blue), and PREFIX_<frame>.ply, the valid points "
-        "coloured the same way (ASCII PLY: x y z red green blue, sensor-centred, levelled frame) "
-        "for CloudCompare/MeshLab.\n"
-        " (4) a summary on stdout.\n"
-        "Parameters: HDL-64E/KITTI defaults, then --preset, then --config, then each --set. "
-        "The mount_{roll,pitch,yaw}_deg parameters are taken from each observation's sensorPose "
-        "(unless --ignore-sensor-pose). Exit status: 0 on success, 1 on any error.",
+        "ground green, outliers blue, each cluster its own colour, unclustered non-ground grey, "
+        "traversable tri-grid nodes shaded), and PREFIX_<frame>.ply, the valid points in the "
+        "same colours (ASCII PLY: x y z red green blue, sensor-centred, levelled frame) for "
+        "CloudCompare/MeshLab.\n"
+        " (4) --label-reference: the class and cluster id of every point of every frame as text "
+        "(format in apps/LabelReference.hpp).\n"
+        " (5) a summary on stdout.\n"
+        "Motion: CObservationIMU (attitude, gyro), CObservationOdometry and "
+        "CActionRobotMovement2D (velocities) records are fed to the filter in rawlog order; a "
+        "LiDAR frame is levelled with the robot's roll/pitch and deskewed with the sensor's "
+        "velocity when recent motion data exists (config keys use_robot_attitude, "
+        "velocity_source, max_motion_age, deskew; see share/configs/travel_filter_example.yaml)."
+        "\n"
+        "Parameters: HDL-64E/KITTI defaults, then --preset, then --config (libtravel parameters "
+        "and the filter keys), then each --set. The mount_{roll,pitch,yaw}_deg parameters are "
+        "taken from each observation's sensorPose (unless --ignore-sensor-pose). Exit status: 0 "
+        "on success, 1 on any error.",
         ' ', "0.1");
     TCLAP::ValueArg<std::string> input("i", "input", "Input rawlog (.rawlog, gzip or plain)", true,
                                        "", "IN.rawlog", cmd);
@@ -136,25 +163,26 @@ Options parseCommandLine(int argc, char** argv) {
                                         "Output rawlog (gzip-compressed); written to OUT.part "
                                         "and renamed when complete",
                                         true, "", "OUT.rawlog", cmd);
-    TCLAP::ValueArg<std::string> config("", "config",
-                                        "YAML or ini parameter file (see share/presets/*.yaml), "
-                                        "applied after --preset",
-                                        false, "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> config(
+        "", "config",
+        "YAML (.yaml/.yml) or ini (.ini/.cfg, section [travel]) file of libtravel parameters "
+        "and filter keys (see share/presets/*.yaml, share/configs/*), applied after --preset",
+        false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> preset(
         "", "preset",
         "Start from this sensor preset instead of the HDL-64E defaults (" + presetList() + ")",
         false, "", "NAME", cmd);
     TCLAP::MultiArg<std::string> set("", "set",
-                                     "Override one parameter (repeatable), applied last, e.g. "
-                                     "--set sensor_height=2.24",
+                                     "Override one parameter or filter key (repeatable), "
+                                     "applied last, e.g. --set sensor_height=2.24",
                                      false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<std::string> label(
         "", "sensor-label",
-        "Only process LiDAR observations whose sensorLabel contains a match of this ECMAScript "
-        "regex (anchor with ^...$ for an exact match). Our own <label>_ground/_nonground/"
-        "_outlier outputs are never re-processed; when the input already has them (an earlier "
-        "output) they are replaced.",
-        false, ".*", "REGEX", cmd);
+        "Only process LiDAR observations whose whole sensorLabel matches this ECMAScript regex "
+        "(the filter key sensor_label; default: the config's, else .*). Our own outputs "
+        "(<label>_travel, _ground, _nonground, _outlier) are never re-processed; when the "
+        "input already has them (an earlier output) they are replaced.",
+        false, "", "REGEX", cmd);
     TCLAP::ValueArg<std::string> png("", "png",
                                      "Write PREFIX_<frame>.png and PREFIX_<frame>.ply per frame "
                                      "(directories are created)",
@@ -167,6 +195,12 @@ Options parseCommandLine(int argc, char** argv) {
                                   "PIXELS", cmd);
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame counts and timings to this CSV",
                                      false, "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> reference(
+        "", "label-reference",
+        "Write the class and cluster id of every point of every frame to this text file", false, "",
+        "FILE", cmd);
+    TCLAP::SwitchArg no_plain("", "no-plain-clouds",
+                              "Do not add the three per-class CObservationPointCloud", cmd);
     TCLAP::SwitchArg ignore_pose("", "ignore-sensor-pose",
                                  "Keep the mount_* parameters of the configuration instead of "
                                  "each observation's sensorPose",
@@ -195,6 +229,8 @@ Options parseCommandLine(int argc, char** argv) {
     o.csv = csv.getValue();
     o.quiet = quiet.getValue();
     o.ignore_sensor_pose = ignore_pose.getValue();
+    o.label_reference = reference.getValue();
+    o.plain_clouds = !no_plain.getValue();
     if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
         throw AppError("--max-memory must be 0 (no limit) or at least 256 MiB");
     o.max_memory_mib = static_cast<std::size_t>(max_memory.getValue());
@@ -204,13 +240,34 @@ Options parseCommandLine(int argc, char** argv) {
     return o;
 }
 
-travel::Params loadParams(const Options& o) {
-    travel::Params params;  // HDL-64E on KITTI
-    if (!o.preset.empty()) params = travel::loadPreset(o.preset);
-    if (!o.config.empty()) travel::applyParamsFile(o.config, params);
-    for (const auto& kv : o.overrides) travel::applyOverride(kv, params);  // errors quote kv
-    params.validate();
-    return params;
+bool isFilterKey(const std::string& key) {
+    std::size_t n = 0;
+    const char* const* keys = travel_mrpt::TravelFilterOptions::filterKeys(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (key == keys[i]) return key != "preset";
+    return false;
+}
+
+travel_mrpt::TravelFilterOptions loadFilterOptions(const Options& o) {
+    travel_mrpt::TravelFilterOptions options;  // HDL-64E on KITTI
+    if (!o.preset.empty()) options.params = travel::loadPreset(o.preset);
+    if (!o.config.empty()) options.loadFromFile(o.config);
+    for (const auto& kv : o.overrides) {
+        const std::size_t eq = kv.find('=');
+        const std::string key = eq == std::string::npos ? kv : kv.substr(0, eq);
+        if (isFilterKey(key)) {
+            // Same rules as a config file: through a one-key ini section.
+            mrpt::config::CConfigFileMemory ini("[travel]\n" + kv + "\n");
+            options.loadFromConfigFile(ini, "travel");
+        } else {
+            travel::applyOverride(kv, options.params);  // errors quote kv
+        }
+    }
+    if (!o.sensor_label_regex.empty()) options.sensor_label = o.sensor_label_regex;
+    if (o.ignore_sensor_pose) options.use_sensor_pose = false;
+    options.params.validate();
+    options.validate();
+    return options;
 }
 
 void createParentDirectory(const std::string& path) {
@@ -279,12 +336,19 @@ class RawlogReader {
 constexpr std::array<PointClass, 3> kOutputClasses = {PointClass::Ground, PointClass::NonGround,
                                                       PointClass::Outlier};
 constexpr std::array<const char*, 3> kOutputSuffixes = {"_ground", "_nonground", "_outlier"};
+constexpr const char* kLabelsSuffix = "_travel";
 
-bool isOurOutputLabel(const std::string& label) {
-    for (const char* suffix : kOutputSuffixes) {
-        const std::size_t n = std::char_traits<char>::length(suffix);
-        if (label.size() > n && label.compare(label.size() - n, n, suffix) == 0) return true;
-    }
+bool endsWith(const std::string& label, const char* suffix) {
+    const std::size_t n = std::char_traits<char>::length(suffix);
+    return label.size() > n && label.compare(label.size() - n, n, suffix) == 0;
+}
+
+/// An observation this program writes: the labels object, or a per-class cloud.
+bool isOurOutput(const CObservation& obs) {
+    if (dynamic_cast<const travel_mrpt::CObservationTravelLabels*>(&obs)) return true;
+    if (!dynamic_cast<const CObservationPointCloud*>(&obs)) return false;
+    for (const char* suffix : kOutputSuffixes)
+        if (endsWith(obs.sensorLabel, suffix)) return true;
     return false;
 }
 
@@ -345,42 +409,47 @@ class ClassCloudPool {
 // Pictures: bird's-eye PNG (travel_mrpt::renderBirdsEye) and coloured PLY, both from the
 // aligned (levelled) coordinates.
 
-struct Rgb {
-    uint8_t r, g, b;
-};
-constexpr Rgb kGroundColour{0, 170, 0}, kNonGroundColour{220, 0, 0}, kOutlierColour{0, 60, 255};
-
-const Rgb* colourOf(PointClass c) {
+/// The colour of point i (0xRRGGBB) as in the bird's-eye pictures and RawLogViewer, or
+/// nothing for invalid points.
+std::optional<uint32_t> pointColour(PointClass c, uint32_t cluster_id, bool any_cluster) {
     switch (c) {
         case PointClass::Ground:
-            return &kGroundColour;
-        case PointClass::NonGround:
-            return &kNonGroundColour;
+            return travel_mrpt::kGroundColour;
         case PointClass::Outlier:
-            return &kOutlierColour;
+            return travel_mrpt::kOutlierColour;
+        case PointClass::NonGround:
+            if (cluster_id != 0) return travel_mrpt::clusterColour(cluster_id);
+            return any_cluster ? travel_mrpt::kUnclusteredColour : travel_mrpt::kNonGroundColour;
         case PointClass::Invalid:
             break;
     }
-    return nullptr;
+    return std::nullopt;
 }
 
 void writePly(const std::string& path, const travel::AlignedCloud& aligned,
-              const std::vector<PointClass>& labels) {
+              const travel::Result& result) {
+    const auto& labels = result.labels;
+    const bool any_cluster = !result.clusters.empty();
+    const auto id = [&](std::size_t i) {
+        return result.cluster_id.size() == labels.size() ? result.cluster_id[i] : 0u;
+    };
     std::size_t n = 0;
-    for (PointClass c : labels) n += colourOf(c) != nullptr;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        n += pointColour(labels[i], id(i), any_cluster).has_value();
     std::FILE* f = std::fopen(path.c_str(), "w");
     if (!f) throw AppError(path + ": cannot open for writing");
     std::fprintf(f,
-                 "ply\nformat ascii 1.0\ncomment TRAVEL labels: green ground, red non-ground, "
-                 "blue outlier; sensor-centred levelled frame\nelement vertex %zu\n"
+                 "ply\nformat ascii 1.0\ncomment TRAVEL labels: green ground, blue outlier, one "
+                 "colour per cluster, grey unclustered non-ground; sensor-centred levelled "
+                 "frame\nelement vertex %zu\n"
                  "property float x\nproperty float y\nproperty float z\n"
                  "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n",
                  n);
     for (std::size_t i = 0; i < labels.size(); ++i) {
-        const Rgb* c = colourOf(labels[i]);
+        const auto c = pointColour(labels[i], id(i), any_cluster);
         if (!c) continue;
         std::fprintf(f, "%.3f %.3f %.3f %u %u %u\n", aligned.x[i], aligned.y[i], aligned.z[i],
-                     unsigned{c->r}, unsigned{c->g}, unsigned{c->b});
+                     (*c >> 16) & 0xFFu, (*c >> 8) & 0xFFu, *c & 0xFFu);
     }
     const bool ok = std::ferror(f) == 0;
     if (std::fclose(f) != 0 || !ok) throw AppError(path + ": write error");
@@ -390,7 +459,7 @@ void writePly(const std::string& path, const travel::AlignedCloud& aligned,
 // Statistics and CSV.
 
 struct Totals {
-    std::size_t frames = 0, points = 0, skipped = 0;
+    std::size_t frames = 0, points = 0, skipped = 0, clusters = 0, levelled = 0, deskewed = 0;
     std::array<std::size_t, 4> per_class{};
     std::vector<double> process_ms, convert_ms;
 };
@@ -402,23 +471,27 @@ class CsvLog {
         createParentDirectory(path);
         file_.open(path);
         if (!file_) throw AppError(path + ": cannot open for writing");
-        file_ << "frame,timestamp,sensor_label,points,invalid,ground,nonground,outlier,"
-                 "convert_ms,preprocess_ms,embedding_ms,node_fitting_ms,graph_search_ms,ttmf_ms,"
-                 "labelling_ms,total_ms\n";
+        file_ << "frame,timestamp,sensor_label,points,invalid,ground,nonground,outlier,clusters,"
+                 "levelled,deskewed,convert_ms,preprocess_ms,embedding_ms,node_fitting_ms,"
+                 "graph_search_ms,ttmf_ms,labelling_ms,range_image_ms,horizontal_ms,vertical_ms,"
+                 "clusters_ms,total_ms\n";
     }
 
-    void add(std::size_t frame, const CObservation& obs, const travel::Result& r,
-             std::size_t points, double convert_ms, double total_ms) {
+    void add(std::size_t frame, const CObservation& obs, const travel_mrpt::TravelFrame& f) {
         if (!file_.is_open()) return;
+        const travel::Result& r = f.result;
         const auto& t = r.timings;
-        char line[512];
-        std::snprintf(line, sizeof line,
-                      "%zu,%.6f,%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
-                      frame, mrpt::Clock::toDouble(obs.timestamp), obs.sensorLabel.c_str(), points,
-                      r.count(PointClass::Invalid), r.count(PointClass::Ground),
-                      r.count(PointClass::NonGround), r.count(PointClass::Outlier), convert_ms,
-                      t.preprocess, t.embedding, t.node_fitting, t.graph_search, t.ttmf,
-                      t.labelling, total_ms);
+        char line[640];
+        std::snprintf(
+            line, sizeof line,
+            "%zu,%.6f,%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,"
+            "%.3f,%.3f,%.3f,%.3f,%.3f\n",
+            frame, mrpt::Clock::toDouble(obs.timestamp), obs.sensorLabel.c_str(), f.cloud.size(),
+            r.count(PointClass::Invalid), r.count(PointClass::Ground),
+            r.count(PointClass::NonGround), r.count(PointClass::Outlier), r.clusters.size(),
+            f.levelled ? 1 : 0, f.deskewed ? 1 : 0, f.convert_ms, t.preprocess, t.embedding,
+            t.node_fitting, t.graph_search, t.ttmf, t.labelling, t.range_image, t.horizontal,
+            t.vertical, t.clusters, f.process_ms);
         file_ << line;
         if (!file_) throw AppError(path_ + ": write error");
     }
@@ -431,17 +504,49 @@ class CsvLog {
 // ------------------------------------------------------------------------------------------
 // The job.
 
-double msSince(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+/// The label reference file (--label-reference), written frame by frame.
+class ReferenceLog {
+  public:
+    explicit ReferenceLog(const std::string& path) : path_(path) {
+        if (path.empty()) return;
+        createParentDirectory(path);
+        file_.open(path);
+        if (!file_) throw AppError(path + ": cannot open for writing");
+        travel::label_reference::writeHeader(file_);
+    }
+    void add(const travel::Result& r) {
+        if (!file_.is_open()) return;
+        travel::label_reference::writeFrame(file_, frames_++, r.labels, r.cluster_id);
+        if (!file_) throw AppError(path_ + ": write error");
+    }
+    void finish() {
+        if (!file_.is_open()) return;
+        travel::label_reference::writeFooter(file_, frames_);
+        file_.close();
+        if (!file_) throw AppError(path_ + ": write error");
+    }
+
+  private:
+    std::string path_;
+    std::ofstream file_;
+    std::size_t frames_ = 0;
+};
 
 class RawlogSegmenter {
   public:
-    RawlogSegmenter(const Options& options, const travel::Params& params)
+    RawlogSegmenter(const Options& options, const travel_mrpt::TravelFilterOptions& filter_options)
         : options_(options),
-          base_params_(params),
-          label_filter_(options.sensor_label_regex),
-          csv_(options.csv) {
+          label_filter_(filter_options.sensor_label),
+          filter_(filter_options),
+          csv_(options.csv),
+          reference_(options.label_reference) {
+        // Notes from the filter (no motion data, ...) once each, in our own format.
+        filter_.setMinLoggingLevel(options.quiet ? mrpt::system::LVL_ERROR
+                                                 : mrpt::system::LVL_INFO);
+        filter_.logging_enable_console_output = false;
+        filter_.logRegisterCallback(
+            [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,
+                   const mrpt::Clock::time_point&) { noteOnce(std::string(msg)); });
         if (!options.png_prefix.empty()) {
             createParentDirectory(options.png_prefix + "_x");
             birds_eye_.size_px = options.png_size;
@@ -449,101 +554,108 @@ class RawlogSegmenter {
         }
     }
 
-    /// Processes every selected observation of the record, appending the outputs to `added`.
+    /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
+    void processMotion(const mrpt::serialization::CSerializable& record) {
+        if (auto* imu = dynamic_cast<const mrpt::obs::CObservationIMU*>(&record)) {
+            filter_.processImu(*imu);
+        } else if (auto* odo = dynamic_cast<const mrpt::obs::CObservationOdometry*>(&record)) {
+            filter_.processOdometry(*odo);
+        } else if (auto* actions = dynamic_cast<const mrpt::obs::CActionCollection*>(&record)) {
+            if (auto move = actions->getActionByClass<mrpt::obs::CActionRobotMovement2D>())
+                filter_.processAction(*move);
+        }
+    }
+
+    /// Processes one observation of the record, appending the outputs to `added`.
     void processObservation(const CObservation& obs, long record,
                             std::vector<CObservation::Ptr>& added) {
-        if (!travel_mrpt::isLidarObservation(obs)) return;
-        if (dynamic_cast<const CObservationPointCloud*>(&obs) && isOurOutputLabel(obs.sensorLabel))
-            return;  // an output of ours (kept when its source label is not selected)
-        if (!std::regex_search(obs.sensorLabel, label_filter_)) {
-            noteOnce("ignored (does not match --sensor-label): " + obs.sensorLabel);
-            return;
-        }
-        const auto t0 = Clock::now();
+        processMotion(obs);
+        if (!travel_mrpt::isLidarObservation(obs) || isOurOutput(obs)) return;
         std::string why_not;
-        if (!travel_mrpt::toTravelCloud(obs, cloud_, sensor_pose_, &why_not)) {
+        if (!filter_.filter(obs, frame_, &why_not)) {
+            if (!std::regex_match(obs.sensorLabel, label_filter_)) {
+                noteOnce("ignored (does not match the sensor label regex): " + obs.sensorLabel);
+                return;
+            }
             ++totals_.skipped;
             noteOnce("skipped " + obs.sensorLabel + " (" + why_not + ")");
             return;
         }
-        const double convert_ms = msSince(t0);
-
-        travel::Pipeline& pipeline = pipelineFor(obs.sensorLabel, sensor_pose_);
-        const auto t1 = Clock::now();
-        pipeline.process(cloud_, travel::FrameInput{}, result_);
-        const double process_ms = msSince(t1);
-        if (result_.labels.size() != cloud_.size())
+        const travel::Result& result = frame_.result;
+        if (result.labels.size() != frame_.cloud.size())
             throw AppError(where(options_.input, record) + ": pipeline returned " +
-                           std::to_string(result_.labels.size()) + " labels for " +
-                           std::to_string(cloud_.size()) + " points");
+                           std::to_string(result.labels.size()) + " labels for " +
+                           std::to_string(frame_.cloud.size()) + " points");
 
-        for (const auto& out : pool_.fill(obs, sensor_pose_, cloud_, result_)) added.push_back(out);
+        added.push_back(labelsFor(obs));
+        if (options_.plain_clouds)
+            for (const auto& out : pool_.fill(obs, frame_.sensorPose, frame_.cloud, result))
+                added.push_back(out);
 
         const std::size_t frame = totals_.frames++;
-        totals_.points += cloud_.size();
-        for (std::size_t c = 0; c < 4; ++c) totals_.per_class[c] += result_.class_counts[c];
-        totals_.process_ms.push_back(process_ms);
-        totals_.convert_ms.push_back(convert_ms);
-        csv_.add(frame, obs, result_, cloud_.size(), convert_ms, process_ms);
-        if (!options_.png_prefix.empty()) writePictures(frame, obs, pipeline.aligned());
+        totals_.points += frame_.cloud.size();
+        for (std::size_t c = 0; c < 4; ++c) totals_.per_class[c] += result.class_counts[c];
+        totals_.clusters += result.clusters.size();
+        totals_.levelled += frame_.levelled;
+        totals_.deskewed += frame_.deskewed;
+        totals_.process_ms.push_back(frame_.process_ms);
+        totals_.convert_ms.push_back(frame_.convert_ms);
+        csv_.add(frame, obs, frame_);
+        reference_.add(result);
+        if (!options_.png_prefix.empty() && frame_.aligned)
+            writePictures(frame, obs, *frame_.aligned);
     }
 
-    /// Outputs of an earlier run (<label>_ground ... of a label we process now) are dropped:
-    /// they are regenerated, and keeping them would duplicate the labels.
+    /// Outputs of an earlier run (<label>_travel, <label>_ground ... of a label we process
+    /// now) are dropped: they are regenerated, and keeping them would duplicate the labels.
     bool isStaleOutput(const CObservation& obs) {
-        if (!dynamic_cast<const CObservationPointCloud*>(&obs) ||
-            !isOurOutputLabel(obs.sensorLabel))
-            return false;
+        if (!isOurOutput(obs)) return false;
         const std::string base = obs.sensorLabel.substr(0, obs.sensorLabel.rfind('_'));
-        if (!std::regex_search(base, label_filter_)) return false;
+        if (!std::regex_match(base, label_filter_)) return false;
         noteOnce("replacing the TRAVEL outputs of an earlier run: " + base + "_*");
         return true;
     }
 
-    void startRecord() { pool_.startRecord(); }
+    void startRecord() {
+        pool_.startRecord();
+        labels_used_ = 0;
+    }
+    void finish() { reference_.finish(); }
     const Totals& totals() const { return totals_; }
 
   private:
-    struct Sensor {
-        std::unique_ptr<travel::Pipeline> pipeline;
-        mrpt::poses::CPose3D pose;
-    };
-
-    /// One pipeline per sensor label: the mount angles come from that sensor's pose, and a
-    /// pipeline's buffers are sized for its sensor. Rebuilt only if the pose changes.
-    travel::Pipeline& pipelineFor(const std::string& label, const mrpt::poses::CPose3D& pose) {
-        Sensor& sensor = sensors_[label];
-        if (!sensor.pipeline || !(sensor.pose == pose)) {
-            travel::Params params = base_params_;
-            if (!options_.ignore_sensor_pose) travel_mrpt::setMountFromSensorPose(pose, params);
-            try {
-                sensor.pipeline = std::make_unique<travel::Pipeline>(params);
-            } catch (const travel::ConfigError& e) {
-                throw travel::ConfigError("sensor " + label + ": " + e.what());
-            }
-            sensor.pose = pose;
-        }
-        return *sensor.pipeline;
+    /// The CObservationTravelLabels of the current frame. Serialized as soon as its record is
+    /// written, so the objects are reused for the next records (one per observation of a record).
+    CObservation::Ptr labelsFor(const CObservation& source) {
+        if (labels_used_ == labels_pool_.size())
+            labels_pool_.push_back(travel_mrpt::CObservationTravelLabels::Create());
+        auto& labels = *labels_pool_[labels_used_];
+        labels.assign(frame_.cloud, frame_.result, frame_.alignedRotation);
+        labels.sensorPose = frame_.sensorPose;
+        labels.sourceClass = source.GetRuntimeClass()->className;
+        labels.timestamp = source.timestamp;
+        labels.sensorLabel = source.sensorLabel + kLabelsSuffix;
+        return labels_pool_[labels_used_++];
     }
 
     void writePictures(std::size_t frame, const CObservation& obs,
                        const travel::AlignedCloud& aligned) {
+        const travel::Result& result = frame_.result;
         char suffix[32];
         std::snprintf(suffix, sizeof suffix, "_%06zu", frame);
         const std::string stem = options_.png_prefix + suffix;
-        const auto total = std::max<std::size_t>(1, cloud_.size());
+        const auto total = std::max<std::size_t>(1, frame_.cloud.size());
         char title[256];
         std::snprintf(title, sizeof title,
-                      "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%", frame,
-                      obs.sensorLabel.c_str(), cloud_.size(),
-                      100.0 * result_.count(PointClass::Ground) / total,
-                      100.0 * result_.count(PointClass::NonGround) / total);
-        // Class colours only (no cluster ids, no terrain): the picture shows what the output
-        // rawlog holds.
+                      "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%  %zu clusters",
+                      frame, obs.sensorLabel.c_str(), frame_.cloud.size(),
+                      100.0 * result.count(PointClass::Ground) / total,
+                      100.0 * result.count(PointClass::NonGround) / total, result.clusters.size());
         birds_eye_.title = title;
-        travel_mrpt::renderBirdsEye(aligned, result_.labels, {}, nullptr, birds_eye_, image_);
+        travel_mrpt::renderBirdsEye(aligned, result.labels, result.cluster_id, &result.terrain,
+                                    birds_eye_, image_);
         if (!image_.saveToFile(stem + ".png")) throw AppError(stem + ".png: cannot write PNG");
-        writePly(stem + ".ply", aligned, result_.labels);
+        writePly(stem + ".ply", aligned, result);
     }
 
     void noteOnce(const std::string& note) {
@@ -552,19 +664,18 @@ class RawlogSegmenter {
     }
 
     const Options& options_;
-    travel::Params base_params_;
     std::regex label_filter_;
+    travel_mrpt::TravelFilter filter_;
     CsvLog csv_;
+    ReferenceLog reference_;
     travel_mrpt::BirdsEyeOptions birds_eye_;
     mrpt::img::CImage image_;  // reused across frames
-    std::map<std::string, Sensor> sensors_;
     std::set<std::string> notes_;
     ClassCloudPool pool_;
+    std::vector<travel_mrpt::CObservationTravelLabels::Ptr> labels_pool_;
+    std::size_t labels_used_ = 0;
     Totals totals_;
-    // Reused across frames.
-    travel::PointCloud cloud_;
-    travel::Result result_;
-    mrpt::poses::CPose3D sensor_pose_;
+    travel_mrpt::TravelFrame frame_;  // reused across frames
 };
 
 void printSummary(const Options& o, const Totals& t, long records, double seconds) {
@@ -580,6 +691,9 @@ void printSummary(const Options& o, const Totals& t, long records, double second
         count(PointClass::NonGround), pct(count(PointClass::NonGround)), count(PointClass::Outlier),
         pct(count(PointClass::Outlier)), count(PointClass::Invalid),
         pct(count(PointClass::Invalid)));
+    std::printf("  clusters: %zu (%.1f per frame); frames levelled %zu, deskewed %zu\n", t.clusters,
+                t.frames ? static_cast<double>(t.clusters) / t.frames : 0.0, t.levelled,
+                t.deskewed);
     if (t.frames) {
         std::printf(
             "  ms per frame: TRAVEL median %.2f max %.2f; conversion median %.2f max %.2f\n",
@@ -589,6 +703,8 @@ void printSummary(const Options& o, const Totals& t, long records, double second
             *std::max_element(t.convert_ms.begin(), t.convert_ms.end()));
     }
     if (!o.csv.empty()) std::printf("  per-frame CSV: %s\n", o.csv.c_str());
+    if (!o.label_reference.empty())
+        std::printf("  label reference: %s\n", o.label_reference.c_str());
     if (!o.png_prefix.empty())
         std::printf("  pictures: %s_NNNNNN.png / .ply\n", o.png_prefix.c_str());
 }
@@ -599,13 +715,15 @@ int run(int argc, char** argv) {
     const std::string limit_note = travel::apps::applyMemoryLimit(options.max_memory_mib);
     if (!limit_note.empty() && !options.quiet)
         std::cerr << "travel-rawlog: note: " << limit_note << "\n";
-    const travel::Params params = loadParams(options);
+    // Our own classes (CObservationTravelLabels) must be readable: inputs may be earlier outputs.
+    travel_mrpt::registerClasses();
+    const travel_mrpt::TravelFilterOptions filter_options = loadFilterOptions(options);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");
 
     RawlogReader reader(options.input);
-    RawlogSegmenter segmenter(options, params);
+    RawlogSegmenter segmenter(options, filter_options);
 
     createParentDirectory(options.output);
     const std::string partial = options.output + ".part";
@@ -636,7 +754,8 @@ int run(int argc, char** argv) {
                 out << *obs;
                 for (const auto& extra : added) out << *extra;
             } else {
-                out << *record;  // actions and anything else: copied unchanged
+                segmenter.processMotion(*record);  // odometry actions
+                out << *record;                    // copied unchanged
             }
 
             if (!options.quiet && Clock::now() - last_progress > std::chrono::milliseconds(500)) {
@@ -647,7 +766,14 @@ int run(int argc, char** argv) {
                 progress_shown = true;
             }
         }
-        if (reader.index() == 0) throw AppError(options.input + ": empty file, not a rawlog");
+        if (reader.index() == 0) {
+            std::error_code ec;
+            throw AppError(options.input + (fs::file_size(options.input, ec) == 0
+                                                ? ": empty file, not a rawlog"
+                                                : ": no record could be read (not an MRPT rawlog, "
+                                                  "or a corrupt gzip stream)"));
+        }
+        segmenter.finish();
     } catch (...) {
         if (progress_shown) std::fputc('\n', stderr);
         out_file.close();

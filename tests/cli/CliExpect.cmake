@@ -10,3 +10,12 @@ function(expect_failure_mentioning needle)
     message(FATAL_ERROR "message does not mention '${needle}': ${ARGN}\n${out}${err}")
   endif()
 endfunction()
+
+# Run a command that must succeed; its stdout + stderr are left in `last_output`.
+function(expect_success)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "expected success: ${ARGN}\n${out}${err}")
+  endif()
+  set(last_output "${out}${err}" PARENT_SCOPE)
+endfunction()

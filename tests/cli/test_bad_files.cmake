@@ -11,14 +11,6 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 
-function(expect_success)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "expected success: ${ARGN}\n${out}${err}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
-
 # Bytes [first, last] of `src` into `dst` (binary-safe).
 function(copy_range src first last dst)
   file(DOWNLOAD "file://${src}" "${dst}" RANGE_START ${first} RANGE_END ${last} STATUS st)

@@ -16,7 +16,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "LabelReference.hpp"
+#include "../../apps/LabelReference.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
 
 namespace {

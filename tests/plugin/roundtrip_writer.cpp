@@ -10,7 +10,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "LabelReference.hpp"
+#include "../../apps/LabelReference.hpp"
 #include "SampleLabelling.hpp"
 
 int main(int argc, char** argv) {

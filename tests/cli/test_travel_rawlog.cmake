@@ -1,0 +1,77 @@
+# travel-rawlog end to end (cmake -P):
+#  1. the README's main job on mrpt-common's VLP-16 sample: summary, CSV, PNG, PLY, label
+#     reference; the output rawlog is read back in ANOTHER process that only knows our class
+#     through the plugin (travel_plugin_roundtrip_reader) and every label is compared;
+#  2. a second run on that output replaces the earlier outputs instead of duplicating them;
+#  3. the synthetic moving, tilted robot rawlog (VLP-16 rotating scans + IMU + odometry): every
+#     frame is levelled and deskewed from the IMU/odometry records, and none when disabled.
+# Variables: TRAVEL_RAWLOG, READER, PLUGIN, MAKE_SYNTHETIC, CONFIG, SAMPLE, WORK_DIR.
+include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+function(expect_in text needle)
+  string(FIND "${text}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "expected '${needle}' in:\n${text}")
+  endif()
+endfunction()
+
+if(EXISTS ${SAMPLE})
+  set(out ${WORK_DIR}/vlp16_travel.rawlog)
+  expect_success(${TRAVEL_RAWLOG} -i ${SAMPLE} -o ${out} --config ${CONFIG}
+                 --csv ${WORK_DIR}/vlp16.csv --png ${WORK_DIR}/png/vlp16
+                 --label-reference ${WORK_DIR}/vlp16.reference)
+  expect_in("${last_output}" "LiDAR frames processed: 1")
+  expect_in("${last_output}" "clusters: ")
+  foreach(f vlp16.csv png/vlp16_000000.png png/vlp16_000000.ply vlp16.reference)
+    if(NOT EXISTS ${WORK_DIR}/${f})
+      message(FATAL_ERROR "travel-rawlog did not write ${f}")
+    endif()
+  endforeach()
+  file(STRINGS ${WORK_DIR}/vlp16.csv csv)
+  list(LENGTH csv csv_lines)
+  if(NOT csv_lines EQUAL 2)
+    message(FATAL_ERROR "vlp16.csv: expected a header and one frame, got ${csv_lines} lines")
+  endif()
+
+  execute_process(COMMAND ${READER} ${PLUGIN} ${out} ${WORK_DIR}/vlp16.reference
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "plugin-only reader failed on travel-rawlog's output:\n${o}${e}")
+  endif()
+  expect_in("${o}" "1 labelled frames and 11305 points compared, 0 mismatches")
+
+  # Re-running on the output: the old _travel/_ground/... observations are replaced.
+  expect_success(${TRAVEL_RAWLOG} -i ${out} -o ${WORK_DIR}/again.rawlog --config ${CONFIG}
+                 --label-reference ${WORK_DIR}/again.reference)
+  expect_in("${last_output}" "replacing the TRAVEL outputs of an earlier run")
+  expect_in("${last_output}" "LiDAR frames processed: 1")
+  execute_process(COMMAND ${READER} ${PLUGIN} ${WORK_DIR}/again.rawlog
+                          ${WORK_DIR}/again.reference
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "plugin-only reader failed on the re-run output:\n${o}${e}")
+  endif()
+  expect_in("${o}" "1 labelled frames")
+else()
+  message(STATUS "${SAMPLE} not found (mrpt-common): sample cases skipped")
+endif()
+
+# The moving robot: 10 VLP-16 frames, IMU at 100 Hz, odometry at 50 Hz.
+execute_process(COMMAND ${MAKE_SYNTHETIC} ${WORK_DIR}/moving.rawlog 10 RESULT_VARIABLE rc
+                OUTPUT_VARIABLE o ERROR_VARIABLE e)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "make_synthetic_rawlog failed:\n${o}${e}")
+endif()
+set(moving_config --preset vlp16 --set sensor_height=1.8 --set min_range=2 --set max_range=60)
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/moving_out.rawlog
+               ${moving_config})
+expect_in("${last_output}" "LiDAR frames processed: 10")
+expect_in("${last_output}" "frames levelled 10, deskewed 10")
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/moving_plain.rawlog
+               ${moving_config} --set use_robot_attitude=false --set velocity_source=none)
+expect_in("${last_output}" "frames levelled 0, deskewed 0")
+# A filter key with a bad value is rejected naming the key.
+expect_failure_mentioning("velocity_source" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
+                          -o ${WORK_DIR}/x.rawlog --set velocity_source=gps)
