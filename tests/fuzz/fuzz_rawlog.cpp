@@ -1,7 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 // bytes -> file -> travel-rawlog's read loop (CFileGZInputStream: plain or gzip) -> for every
-// LiDAR observation (also inside CSensoryFrames) toTravelCloud + Pipeline. Exceptions from MRPT's
-// deserialization are expected; crashes and sanitizer reports are findings.
+// LiDAR observation (also inside CSensoryFrames) toTravelCloud + Pipeline; our own
+// CObservationTravelLabels (registered here) is deserialized, checked, described and drawn.
+// Exceptions from MRPT's deserialization are expected; crashes and sanitizer reports are findings.
 // MRPT itself is not instrumented (distribution packages): coverage guidance is for the
 // adapters and libtravel, ASan still sees every heap access made through malloc.
 #include <mrpt/io/CFileGZInputStream.h>
@@ -20,7 +21,13 @@
 #include <memory>
 #include <new>
 
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/rtti/CObject.h>
+
+#include <sstream>
+
 #include "FuzzCommon.hpp"
+#include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
 // MRPT's deserializers allocate whatever size the stream announces (a corrupt length of 3.5 GB
@@ -112,7 +119,26 @@ namespace {
 constexpr std::size_t kMaxPoints = 20000;
 constexpr int kMaxRecords = 32;
 
+/// A labels object that deserialized must be self-consistent (the reader validates it).
+void checkLabels(const travel_mrpt::CObservationTravelLabels& labels) {
+    const std::size_t n = labels.size();
+    FUZZ_CHECK(labels.y.size() == n && labels.z.size() == n && labels.intensity.size() == n);
+    FUZZ_CHECK(labels.labels.size() == n && labels.clusterId.size() == n);
+    for (std::size_t i = 0; i < n; ++i) {
+        FUZZ_CHECK(labels.labels[i] <= 3);
+        FUZZ_CHECK(labels.clusterId[i] <= labels.clusters.size());
+    }
+    std::ostringstream text;
+    labels.getDescriptionAsText(text);
+    mrpt::opengl::CSetOfObjects scene;
+    labels.getVisualizationInto(scene);
+}
+
 void processObservation(const mrpt::obs::CObservation& obs) {
+    if (auto* labels = dynamic_cast<const travel_mrpt::CObservationTravelLabels*>(&obs)) {
+        checkLabels(*labels);
+        return;
+    }
     static travel::Params params;
     static travel::Pipeline pipeline(params);
     static travel::PointCloud cloud;
@@ -131,6 +157,12 @@ void processObservation(const mrpt::obs::CObservation& obs) {
     travel_fuzz::checkResult(cloud, params, result);
 }
 }  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    // Only our labels class (not registerClasses(), which would pull in every class of ours).
+    mrpt::rtti::registerClass(CLASS_ID(travel_mrpt::CObservationTravelLabels));
+    return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::string& path = travel_fuzz::tempPath(".rawlog");
