@@ -2,9 +2,11 @@
 #include "SyntheticRawlog.hpp"
 
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/obs/VelodyneCalibration.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
@@ -283,6 +285,24 @@ void writeRawlog(const SyntheticRawlog& rawlog, const std::string& path) {
     if (!file.open(path)) throw std::runtime_error("cannot write rawlog '" + path + "'");
     auto archive = mrpt::serialization::archiveFrom(file);
     for (const auto& record : rawlog.records) archive << *record;
+    file.close();
+}
+
+void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path) {
+    mrpt::io::CFileGZOutputStream file;
+    if (!file.open(path)) throw std::runtime_error("cannot write rawlog '" + path + "'");
+    auto archive = mrpt::serialization::archiveFrom(file);
+    mrpt::obs::CSensoryFrame frame;
+    const mrpt::obs::CActionCollection no_actions;
+    for (const auto& record : rawlog.records) {
+        auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(record);
+        if (!obs) continue;
+        frame.insert(obs);
+        if (dynamic_cast<const mrpt::obs::CObservationRotatingScan*>(obs.get())) {
+            archive << no_actions << frame;
+            frame.clear();
+        }
+    }
     file.close();
 }
 

@@ -70,4 +70,9 @@ SyntheticRawlog makeSyntheticRawlog(const SyntheticRawlogOptions& options = {});
 /// naming the path on failure.
 void writeRawlog(const SyntheticRawlog& rawlog, const std::string& path);
 
+/// Writes the records in the "SensoryFrame" format (gz): per LiDAR frame, an empty
+/// CActionCollection then one CSensoryFrame holding the IMU / odometry records since the previous
+/// frame and the LiDAR observation. Throws std::runtime_error naming the path on failure.
+void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path);
+
 }  // namespace travel_test

@@ -1,7 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// make_synthetic_rawlog OUT.rawlog [FRAMES]: writes the moving, tilted robot rawlog of
-// SyntheticRawlog.hpp (VLP-16 rotating scans + IMU + odometry), for command-line tests.
+// make_synthetic_rawlog OUT.rawlog [FRAMES] [--sensory-frames]: writes the moving, tilted robot
+// rawlog of SyntheticRawlog.hpp (VLP-16 rotating scans + IMU + odometry), for command-line tests,
+// in the observations format (default) or the SensoryFrame format.
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -10,8 +11,14 @@
 #include "SyntheticRawlog.hpp"
 
 int main(int argc, char** argv) {
+    bool sensory_frames = false;
+    if (argc >= 3 && std::string(argv[argc - 1]) == "--sensory-frames") {
+        sensory_frames = true;
+        --argc;
+    }
     if (argc < 2 || argc > 3) {
-        std::fprintf(stderr, "usage: %s OUT.rawlog [FRAMES (default 10)]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s OUT.rawlog [FRAMES (default 10)] [--sensory-frames]\n",
+                     argv[0]);
         return 2;
     }
     try {
@@ -27,7 +34,10 @@ int main(int argc, char** argv) {
             options.frames = static_cast<int>(frames);
         }
         const travel_test::SyntheticRawlog rawlog = travel_test::makeSyntheticRawlog(options);
-        travel_test::writeRawlog(rawlog, argv[1]);
+        if (sensory_frames)
+            travel_test::writeSensoryFrameRawlog(rawlog, argv[1]);
+        else
+            travel_test::writeRawlog(rawlog, argv[1]);
         std::printf("%s: %zu records (%d LiDAR frames)\n", argv[1], rawlog.records.size(),
                     options.frames);
     } catch (const std::exception& e) {

@@ -75,3 +75,44 @@ expect_in("${last_output}" "frames levelled 0, deskewed 0")
 # A filter key with a bad value is rejected naming the key.
 expect_failure_mentioning("velocity_source" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
                           -o ${WORK_DIR}/x.rawlog --set velocity_source=gps)
+
+# The same robot in the SensoryFrame format (action collection + sensory frame per sweep): the
+# labels go into each frame's SensoryFrame and read back through the plugin.
+execute_process(COMMAND ${MAKE_SYNTHETIC} ${WORK_DIR}/moving_sf.rawlog 10 --sensory-frames
+                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "make_synthetic_rawlog --sensory-frames failed:\n${o}${e}")
+endif()
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving_sf.rawlog -o ${WORK_DIR}/moving_sf_out.rawlog
+               ${moving_config} --label-reference ${WORK_DIR}/moving_sf.reference)
+expect_in("${last_output}" "records: 20, LiDAR frames processed: 10")
+expect_in("${last_output}" "frames levelled 10, deskewed 10")
+execute_process(COMMAND ${READER} ${PLUGIN} ${WORK_DIR}/moving_sf_out.rawlog
+                        ${WORK_DIR}/moving_sf.reference
+                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "plugin-only reader failed on the SensoryFrame output:\n${o}${e}")
+endif()
+expect_in("${o}" "10 labelled frames")
+expect_in("${o}" " 0 mismatches")
+
+# Bad inputs: a class this build does not know (a renamed class in an uncompressed copy of the
+# sample), a rawlog without any LiDAR observation, a config with an unknown key.
+if(EXISTS ${SAMPLE})
+  execute_process(COMMAND sh -c "gzip -dc '${SAMPLE}' | LC_ALL=C sed 's/CObservationVelodyneScan/CObservationVelodyneScaX/' > '${WORK_DIR}/unknown_class.rawlog'"
+                  RESULT_VARIABLE rc)
+  expect_failure_mentioning("unknown_class.rawlog: record 0" ${TRAVEL_RAWLOG}
+                            -i ${WORK_DIR}/unknown_class.rawlog -o ${WORK_DIR}/x.rawlog)
+  expect_failure_mentioning("CObservationVelodyneScaX' which is not registered" ${TRAVEL_RAWLOG}
+                            -i ${WORK_DIR}/unknown_class.rawlog -o ${WORK_DIR}/x.rawlog)
+  if(EXISTS ${WORK_DIR}/x.rawlog)
+    message(FATAL_ERROR "a failed run left an output rawlog behind")
+  endif()
+endif()
+# Only IMU / odometry: the sensor label regex selects nothing LiDAR.
+expect_failure_mentioning("no LiDAR observation processed" ${TRAVEL_RAWLOG}
+                          -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/x.rawlog ${moving_config}
+                          --sensor-label IMU)
+file(WRITE ${WORK_DIR}/typo.yaml "preset: vlp16\nsensor_heigth: 1.8\n")
+expect_failure_mentioning("sensor_heigth" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
+                          -o ${WORK_DIR}/x.rawlog --config ${WORK_DIR}/typo.yaml)

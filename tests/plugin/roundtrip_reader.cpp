@@ -9,6 +9,7 @@
 // label and cluster id matched and at least one frame was compared.
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/registerAllClasses.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/os.h>
@@ -64,28 +65,38 @@ int main(int argc, char** argv) {
                 break;
             }
             ++objects;
-            if (std::string(object->GetRuntimeClass()->className) != kClass) continue;
-            const auto& labels = static_cast<const travel_mrpt::CObservationTravelLabels&>(*object);
-            if (frames >= reference.size())
-                return fail("more labelled frames in the rawlog than in the reference (" +
-                            std::to_string(reference.size()) + ")");
-            const auto& expected = reference[frames];
-            if (labels.labels.size() != expected.labels.size() ||
-                labels.clusterId.size() != expected.cluster_id.size())
-                return fail("frame " + std::to_string(frames) + ": " +
-                            std::to_string(labels.labels.size()) + " points, reference has " +
-                            std::to_string(expected.labels.size()));
-            for (std::size_t i = 0; i < expected.labels.size(); ++i)
-                if (labels.labels[i] != expected.labels[i] ||
-                    labels.clusterId[i] != expected.cluster_id[i]) {
-                    if (mismatches++ < 10)
-                        std::cerr << "frame " << frames << " point " << i << ": label "
-                                  << int(labels.labels[i]) << " cluster " << labels.clusterId[i]
-                                  << ", reference " << int(expected.labels[i]) << " / "
-                                  << expected.cluster_id[i] << "\n";
-                }
-            points += expected.labels.size();
-            ++frames;
+            // Labels stand alone (observations format) or inside a SensoryFrame.
+            std::vector<const mrpt::serialization::CSerializable*> candidates{object.get()};
+            if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
+                candidates.clear();
+                for (const auto& obs : *sf) candidates.push_back(obs.get());
+            }
+            for (const auto* candidate : candidates) {
+                if (!candidate || std::string(candidate->GetRuntimeClass()->className) != kClass)
+                    continue;
+                const auto& labels =
+                    static_cast<const travel_mrpt::CObservationTravelLabels&>(*candidate);
+                if (frames >= reference.size())
+                    return fail("more labelled frames in the rawlog than in the reference (" +
+                                std::to_string(reference.size()) + ")");
+                const auto& expected = reference[frames];
+                if (labels.labels.size() != expected.labels.size() ||
+                    labels.clusterId.size() != expected.cluster_id.size())
+                    return fail("frame " + std::to_string(frames) + ": " +
+                                std::to_string(labels.labels.size()) + " points, reference has " +
+                                std::to_string(expected.labels.size()));
+                for (std::size_t i = 0; i < expected.labels.size(); ++i)
+                    if (labels.labels[i] != expected.labels[i] ||
+                        labels.clusterId[i] != expected.cluster_id[i]) {
+                        if (mismatches++ < 10)
+                            std::cerr << "frame " << frames << " point " << i << ": label "
+                                      << int(labels.labels[i]) << " cluster " << labels.clusterId[i]
+                                      << ", reference " << int(expected.labels[i]) << " / "
+                                      << expected.cluster_id[i] << "\n";
+                    }
+                points += expected.labels.size();
+                ++frames;
+            }
         }
         std::cout << "roundtrip_reader: " << objects << " objects read, " << frames
                   << " labelled frames and " << points << " points compared, " << mismatches
