@@ -38,3 +38,25 @@ if(load_error EQUAL -1)
   message(FATAL_ERROR "RawLogViewer did not report a missing plugin; output:\n${out}")
 endif()
 message(STATUS "RawLogViewer loaded the plugin and the rawlog and kept running")
+
+# A screenshot of the loaded rawlog (the tree lists our class; the statistics panel counts it),
+# when the X tools are installed: WORK_DIR/rawlogviewer.png.
+find_program(XDOTOOL xdotool)
+find_program(XWD xwd)
+find_program(XWDTOPNM xwdtopnm)
+if(XDOTOOL AND XWD AND XWDTOPNM)
+  set(shot ${WORK_DIR}/rawlogviewer.png)
+  file(REMOVE ${shot})
+  execute_process(
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x1000x24"
+            sh ${CMAKE_CURRENT_LIST_DIR}/rawlogviewer_screenshot.sh ${RAWLOG_VIEWER} ${PLUGIN}
+               ${shot} ${RAWLOG}
+    OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc TIMEOUT 90)
+  file(SIZE ${shot} shot_size)
+  if(NOT rc EQUAL 0 OR shot_size LESS 20000)
+    message(FATAL_ERROR "RawLogViewer screenshot failed (exit ${rc}, ${shot_size} bytes):\n${out}${err}")
+  endif()
+  message(STATUS "RawLogViewer screenshot: ${shot} (${shot_size} bytes)")
+else()
+  message(STATUS "xdotool / xwd / netpbm not installed: no screenshot")
+endif()
