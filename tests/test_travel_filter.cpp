@@ -22,6 +22,8 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
@@ -330,6 +332,39 @@ TEST(TravelFilter, ReusesItsBuffersFrameAfterFrame) {
     EXPECT_EQ(frame.aligned->x.data(), aligned_x);
     EXPECT_EQ(frame.cloud.x.capacity(), capacity);
     EXPECT_EQ(frame.result.labels, first_labels);  // and the same result
+}
+
+// One filter per thread (the supported way to use several cores or sensors): every thread gets
+// the single-threaded labels and cluster ids, frame after frame. The observation is shared
+// read-only. (ThreadSanitizer runs the libtravel version of this test in CI; MRPT's libraries
+// are not instrumented, so this one runs in the plain and ASan builds.)
+TEST(TravelFilter, OneFilterPerThreadGivesIdenticalResults) {
+    if (!mrpt::system::fileExists(kSampleRawlog))
+        GTEST_SKIP() << kSampleRawlog << " not found (Debian package mrpt-common)";
+    const auto obs = firstLidarOf(kSampleRawlog);
+    ASSERT_TRUE(obs);
+    TravelFilter reference_filter;
+    reference_filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    reference_filter.loadConfigFile(kSampleConfig);
+    travel_mrpt::TravelFrame reference;
+    ASSERT_TRUE(reference_filter.filter(*obs, reference));
+
+    constexpr int kThreads = 4, kFrames = 5;
+    std::vector<int> identical(kThreads, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            TravelFilter filter;
+            filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+            filter.loadConfigFile(kSampleConfig);
+            travel_mrpt::TravelFrame frame;
+            for (int k = 0; k < kFrames; ++k)
+                if (filter.filter(*obs, frame) && frame.result.labels == reference.result.labels &&
+                    frame.result.cluster_id == reference.result.cluster_id)
+                    ++identical[t];
+        });
+    for (auto& thread : threads) thread.join();
+    for (int t = 0; t < kThreads; ++t) EXPECT_EQ(identical[t], kFrames) << "thread " << t;
 }
 
 TEST(TravelFilter, SelectsSensorsByLabelRegex) {
