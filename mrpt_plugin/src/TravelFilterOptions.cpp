@@ -17,11 +17,16 @@
 #include <utility>
 #include <vector>
 
+#include "ConfigText.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 
 namespace travel_mrpt {
 namespace {
+using config_text::exactText;
+using config_text::lower;
+using config_text::parseBool;
+using config_text::parseNumber;
 
 using KeyValues = std::vector<std::pair<std::string, std::string>>;
 
@@ -29,41 +34,11 @@ constexpr const char* kFilterKeys[] = {"preset",          "sensor_label",
                                        "use_sensor_pose", "use_robot_attitude",
                                        "velocity_source", "max_motion_age"};
 
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 bool isLibtravelKey(const std::string& key) {
     bool found = false;
     travel::Params probe;
     travel::visitParams(probe, [&](const char* name, auto&&...) { found = found || key == name; });
     return found;
-}
-
-bool parseBool(const std::string& text, const std::string& where) {
-    const std::string v = lower(text);
-    if (v == "true" || v == "yes" || v == "on" || v == "1") return true;
-    if (v == "false" || v == "no" || v == "off" || v == "0") return false;
-    throw travel::ConfigError(where + ": expected true/false, got '" + text + "'");
-}
-
-double parseNumber(const std::string& text, const std::string& where) {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-        throw travel::ConfigError(where + ": expected a number, got '" + text + "'");
-    return v;
-}
-
-/// Shortest decimal text that reads back to exactly `v`.
-std::string exactText(double v) {
-    char buf[40];
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
 }
 
 template <class T>

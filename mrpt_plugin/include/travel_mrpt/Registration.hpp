@@ -8,7 +8,8 @@
 
 namespace travel_mrpt {
 
-/// Registers every serializable class of travel_mrpt (CObservationTravelLabels) with
+/// Registers every serializable class of travel_mrpt (CObservationTravelLabels, and the map
+/// layer CTraversabilityMap with its CMultiMetricMap factory entry) with
 /// mrpt::rtti. Idempotent and thread-safe.
 void registerClasses();
 

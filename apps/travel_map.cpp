@@ -1,0 +1,434 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel-map: builds a travel_mrpt::CTraversabilityMap (2-D traversability grid + OctoMap)
+// from an MRPT rawlog or a KITTI sequence and writes every export (see --help).
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/CPointsMapXYZI.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <octomap/OcTree.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CommandLine.hpp"
+#include "MemoryLimit.hpp"
+#include "travel/KittiIO.hpp"
+#include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/MapExport.hpp"
+#include "travel_mrpt/PoseFiles.hpp"
+#include "travel_mrpt/Registration.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace fs = std::filesystem;
+using mrpt::poses::CPose3D;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Options {
+    std::string input, output_dir, config, poses, calib;
+    std::vector<std::string> sets;
+    std::string extent;
+    double resolution = 0;
+    long max_frames = 0;
+    bool quiet = false;
+    std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
+};
+
+CPose3D toPose(const Eigen::Isometry3d& T) {
+    mrpt::math::CMatrixDouble44 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
+    return CPose3D(m);
+}
+
+/// The map's options: defaults, --config (ini section [travel] or [traversabilityMap] of map
+/// and TRAVEL keys; YAML: TRAVEL keys), --extent / --resolution, then each --set.
+travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
+    travel_mrpt::TraversabilityMapOptions options;
+    options.geometry = {-40, 40, -40, 40, 0.2};
+    if (!o.config.empty()) {
+        const std::string ext = fs::path(o.config).extension().string();
+        if (ext == ".yaml" || ext == ".yml") {
+            options.travel.loadFromFile(o.config);
+        } else {
+            if (!fs::exists(o.config)) throw std::runtime_error(o.config + ": no such file");
+            mrpt::config::CConfigFileMemory ini;
+            std::ifstream in(o.config);
+            std::stringstream text;
+            text << in.rdbuf();
+            ini.setContent(text.str());
+            bool any = false;
+            for (const char* section : {"travel", "traversabilityMap"})
+                if (ini.sectionExists(section)) {
+                    try {
+                        options.loadFromConfigFile(ini, section);
+                    } catch (const std::exception& e) {
+                        throw std::runtime_error(o.config + ": " + e.what());
+                    }
+                    any = true;
+                }
+            if (!any)
+                throw std::runtime_error(o.config + ": no [travel] or [traversabilityMap] section");
+        }
+    }
+    std::string overrides = "[cli]\n";
+    if (!o.extent.empty()) {
+        double v[4];
+        char tail = 0;
+        if (std::sscanf(o.extent.c_str(), "%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &tail) !=
+            4)
+            throw std::runtime_error("--extent: expected MIN_X,MAX_X,MIN_Y,MAX_Y in metres, got '" +
+                                     o.extent + "'");
+        options.geometry = {v[0], v[1], v[2], v[3], options.geometry.resolution};
+    }
+    if (o.resolution > 0) options.geometry.resolution = o.resolution;
+    for (const std::string& kv : o.sets) {
+        if (kv.find('=') == std::string::npos)
+            throw std::runtime_error("--set: expected KEY=VALUE, got '" + kv + "'");
+        overrides += kv + "\n";
+    }
+    mrpt::config::CConfigFileMemory ini(overrides);
+    try {
+        options.loadFromConfigFile(ini, "cli");  // also validates
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("--set/--extent/--resolution: ") + e.what());
+    }
+    return options;
+}
+
+class Progress {
+  public:
+    explicit Progress(bool enabled) : tty_(enabled && isatty(STDERR_FILENO)) {}
+    void update(std::size_t frames, std::size_t total, double seconds) {
+        if (!tty_) return;
+        if (total)
+            std::fprintf(stderr, "\r  frame %zu/%zu  %.1f s   ", frames, total, seconds);
+        else
+            std::fprintf(stderr, "\r  frame %zu  %.1f s   ", frames, seconds);
+        std::fflush(stderr);
+    }
+    void done() {
+        if (tty_) std::fprintf(stderr, "\n");
+    }
+
+  private:
+    bool tty_;
+};
+
+struct Stats {
+    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
+    std::string pose_source;
+};
+
+/// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.
+struct PoseFileSource {
+    travel_mrpt::PoseTrajectory trajectory;
+    std::optional<CPose3D> at(double t, std::size_t frame) const {
+        if (trajectory.timed()) {
+            const auto T = travel_mrpt::poseAt(trajectory, t);
+            return T ? std::optional<CPose3D>(toPose(*T)) : std::nullopt;
+        }
+        if (frame < trajectory.size()) return toPose(trajectory.poses[frame]);
+        return std::nullopt;
+    }
+};
+
+void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+               const std::optional<PoseFileSource>& pose_file) {
+    if (!fs::exists(o.input)) throw std::runtime_error(o.input + ": no such file");
+    mrpt::io::CFileGZInputStream file;
+    if (!file.open(o.input)) throw std::runtime_error(o.input + ": cannot open for reading");
+    auto archive = mrpt::serialization::archiveFrom(file);
+    Progress progress(!o.quiet);
+    const auto start = Clock::now();
+    CPose3D odometry_pose;  // integrated from SensoryFrame actions
+    bool have_odometry = false;
+    const auto insert = [&](const mrpt::obs::CObservation& obs) {
+        std::optional<CPose3D> pose;
+        if (pose_file)
+            pose = pose_file->at(mrpt::Clock::toDouble(obs.timestamp), stats.lidar);
+        else if (have_odometry)
+            pose = odometry_pose;
+        if (pose_file && !pose) {
+            ++stats.no_pose;
+            return;
+        }
+        if (map.insertObservation(obs, pose ? *pose : CPose3D())) {
+            ++stats.inserted;
+            ++stats.lidar;
+        } else {
+            ++stats.rejected;
+        }
+    };
+    for (;;) {
+        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
+        mrpt::serialization::CSerializable::Ptr object;
+        const uint64_t before = file.getPosition();
+        try {
+            object = archive.ReadObject();
+        } catch (const mrpt::serialization::CExceptionEOF&) {
+            if (file.getPosition() == before) break;
+            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
+                                     ": truncated (end of file inside the record)");
+        } catch (const std::bad_alloc&) {
+            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
+                                     ": corrupt (announces more data than --max-memory allows)");
+        } catch (const std::exception& e) {
+            std::string what = e.what();
+            what = what.substr(0, what.find('\n'));
+            throw std::runtime_error(
+                o.input + ": record " + std::to_string(stats.records) + ": cannot read" +
+                (stats.records == 0 ? " (is it an MRPT rawlog?)" : "") + ": " + what);
+        }
+        ++stats.records;
+        if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object)) {
+            if (auto move = actions->getBestMovementEstimation()) {
+                odometry_pose = odometry_pose + CPose3D(move->poseChange->getMeanVal());
+                have_odometry = true;
+            }
+        } else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
+            for (const auto& obs : *sf) insert(*obs);
+        } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
+            odometry_pose = CPose3D(odo->odometry);
+            have_odometry = true;
+            map.filter().processOdometry(*odo);
+        } else if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(object)) {
+            map.filter().processImu(*imu);
+        } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
+            insert(*obs);
+        }
+        progress.update(stats.inserted, 0,
+                        std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    progress.done();
+    stats.pose_source = pose_file       ? "pose file " + o.poses
+                        : have_odometry ? "odometry in the rawlog"
+                                        : "none (identity poses)";
+}
+
+void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+              std::optional<PoseFileSource> pose_file) {
+    const fs::path dir(o.input);
+    const fs::path scans = fs::exists(dir / "velodyne") ? dir / "velodyne" : dir;
+    std::vector<std::string> files = travel::listFiles(scans.string(), ".bin");
+    if (files.empty()) throw std::runtime_error(scans.string() + ": no .bin scans");
+    std::string calib = o.calib;
+    if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
+    if (pose_file && !pose_file->trajectory.timed()) {
+        if (!calib.empty())
+            travel_mrpt::kittiCameraToLidar(pose_file->trajectory,
+                                            travel_mrpt::readKittiCalibTr(calib));
+        else
+            std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
+        if (pose_file->trajectory.size() < files.size())
+            std::cerr << "travel-map: warning: " << pose_file->trajectory.size() << " poses for "
+                      << files.size() << " scans: the scans without a pose are skipped\n";
+    }
+    Progress progress(!o.quiet);
+    const auto start = Clock::now();
+    travel::PointCloud cloud;
+    auto obs = mrpt::obs::CObservationPointCloud::Create();
+    auto points = mrpt::maps::CPointsMapXYZI::Create();
+    obs->pointcloud = points;
+    obs->sensorLabel = "velodyne";
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
+        ++stats.records;
+        std::optional<CPose3D> pose;
+        if (pose_file) {
+            pose = pose_file->at(0.1 * double(k), k);
+            if (!pose) {
+                ++stats.no_pose;
+                continue;
+            }
+        }
+        travel::readKittiBin(files[k], cloud);  // errors name the file
+        points->clear();
+        points->reserve(cloud.size());
+        for (std::size_t i = 0; i < cloud.size(); ++i)
+            points->insertPointFast(cloud.x[i], cloud.y[i], cloud.z[i]);
+        points->mark_as_modified();
+        obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
+        ++stats.lidar;
+        if (map.insertObservation(*obs, pose ? *pose : CPose3D()))
+            ++stats.inserted;
+        else
+            ++stats.rejected;
+        progress.update(k + 1, files.size(),
+                        std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    progress.done();
+    stats.pose_source = pose_file ? "pose file " + o.poses : "none (identity poses)";
+}
+
+int run(int argc, char** argv) {
+    TCLAP::CmdLine cmd(
+        "Builds a traversability map (travel_mrpt::CTraversabilityMap) from 3-D LiDAR: every "
+        "frame is segmented by TRAVEL and fused, at its robot pose, into a 2-D traversability "
+        "grid (traversable / obstacle / unknown per cell, log-odds, ground height and spread, "
+        "slope, step height) and an OctoMap of obstacle voxels with free space carved along the "
+        "rays.\n"
+        "Inputs: (a) an MRPT rawlog: robot poses from SensoryFrame actions "
+        "(CActionRobotMovement2D, integrated) or CObservationOdometry records, or from --poses "
+        "(TUM: by observation timestamp; KITTI: by LiDAR frame index); IMU records level the "
+        "frames; (b) a KITTI sequence directory (velodyne/*.bin, or the .bin files directly): "
+        "poses from --poses or DIR/poses.txt (cam0 poses, turned into LiDAR poses with the Tr "
+        "of --calib or DIR/calib.txt). Without any pose source every frame is mapped at the "
+        "identity pose, with a warning.\n"
+        "Outputs in OUT_DIR (NAME = input file name without extension): NAME.bt (OctoMap, for "
+        "octovis), NAME_grid.gridmap.gz (COccupancyGridMap2D: traversable free, obstacle "
+        "occupied, unknown 0.5), NAME_height.gridmap.gz (CHeightGridMap2D), "
+        "NAME_traversability.png (green traversable, red obstacle, light grey observed but "
+        "undecided, dark grey unseen; north up), NAME_occupancy.png, NAME_height.png (jet), "
+        "NAME.3Dscene (SceneViewer3D), NAME.travelmap (the serialized map). Exit status 0 on "
+        "success, 1 on any error.",
+        ' ', "0.1");
+    TCLAP::ValueArg<std::string> input("i", "input", "Rawlog file or KITTI sequence directory",
+                                       true, "", "IN", cmd);
+    TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created)", true, "",
+                                        "OUT_DIR", cmd);
+    TCLAP::ValueArg<std::string> config(
+        "c", "config",
+        "YAML file of TRAVEL keys (libtravel parameters, filter keys, preset), or ini file "
+        "with a [travel] and/or [traversabilityMap] section of TRAVEL and map keys (docs/map.md)",
+        false, "", "FILE", cmd);
+    TCLAP::MultiArg<std::string> set("", "set",
+                                     "Map or TRAVEL key (repeatable, applied last), e.g. --set "
+                                     "preset=vlp16 --set max_step_height=0.15",
+                                     false, "KEY=VALUE", cmd);
+    TCLAP::ValueArg<std::string> extent(
+        "", "extent", "Grid extent in metres, world frame (default -40,40,-40,40)", false, "",
+        "MIN_X,MAX_X,MIN_Y,MAX_Y", cmd);
+    TCLAP::ValueArg<double> resolution("", "resolution", "Grid cell side [m] (default 0.2)", false,
+                                       0, "M", cmd);
+    TCLAP::ValueArg<std::string> poses("", "poses", "Pose file (TUM or KITTI format)", false, "",
+                                       "FILE", cmd);
+    TCLAP::ValueArg<std::string> calib("", "calib", "KITTI calib.txt (Tr: velodyne -> cam0)", false,
+                                       "", "FILE", cmd);
+    TCLAP::ValueArg<long> max_frames("", "max-frames", "Stop after this many frames (0 = all)",
+                                     false, 0, "N", cmd);
+    TCLAP::ValueArg<long> max_memory(
+        "", "max-memory",
+        "Address-space ceiling in MiB (0 = none); a corrupt rawlog record that announces more "
+        "is reported instead of exhausting memory",
+        false, long(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary", cmd);
+    if (auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
+
+    Options o;
+    o.input = input.getValue();
+    o.output_dir = output.getValue();
+    o.config = config.getValue();
+    o.sets = set.getValue();
+    o.extent = extent.getValue();
+    o.resolution = resolution.getValue();
+    o.poses = poses.getValue();
+    o.calib = calib.getValue();
+    o.max_frames = max_frames.getValue();
+    o.quiet = quiet.getValue();
+    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
+        throw std::runtime_error("--max-memory must be 0 (no limit) or at least 256 MiB");
+    if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
+    const std::string note = travel::apps::applyMemoryLimit(std::size_t(max_memory.getValue()));
+    if (!note.empty() && !o.quiet) std::cerr << "travel-map: " << note << "\n";
+
+    travel_mrpt::registerClasses();
+    const auto start = Clock::now();
+    travel_mrpt::CTraversabilityMap map(mapOptions(o));
+    const bool kitti = fs::is_directory(o.input);
+    std::string pose_path = o.poses;
+    if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))
+        pose_path = (fs::path(o.input) / "poses.txt").string();
+    std::optional<PoseFileSource> pose_file;
+    if (!pose_path.empty()) pose_file = PoseFileSource{travel_mrpt::readPoseFile(pose_path)};
+    o.poses = pose_path;
+
+    std::error_code ec;
+    fs::create_directories(o.output_dir, ec);
+    if (ec) throw std::runtime_error(o.output_dir + ": cannot create directory: " + ec.message());
+
+    Stats stats;
+    if (kitti)
+        mapKitti(o, map, stats, pose_file);
+    else
+        mapRawlog(o, map, stats, pose_file);
+    const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (stats.pose_source.rfind("none", 0) == 0 && !o.quiet)
+        std::cerr << "travel-map: warning: " << o.input
+                  << " has no robot poses (no actions, odometry or pose file): every frame is "
+                     "mapped at the identity pose\n";
+    if (stats.inserted == 0 && stats.no_pose > 0)
+        throw std::runtime_error(o.poses + ": no pose for any of the " +
+                                 std::to_string(stats.no_pose) +
+                                 " LiDAR frames (TUM: timestamps outside the file's range or "
+                                 "more than 1 s between poses; KITTI: fewer lines than frames)");
+    if (stats.inserted == 0)
+        throw std::runtime_error(
+            o.input + ": no LiDAR frame could be mapped" +
+            (map.lastRejection().empty() ? "" : " (last: " + map.lastRejection() + ")"));
+
+    const std::string name =
+        kitti ? fs::path(o.input).filename().string() : fs::path(o.input).stem().string();
+    const std::string prefix = (fs::path(o.output_dir) / name).string();
+    const auto export_start = Clock::now();
+    std::vector<std::string> written = travel_mrpt::exportAll(map, prefix);
+    {
+        mrpt::io::CFileGZOutputStream out;
+        const std::string path = prefix + ".travelmap";
+        if (!out.open(path + ".part")) throw std::runtime_error(path + ": cannot write");
+        mrpt::serialization::archiveFrom(out) << map;
+        out.close();
+        fs::rename(path + ".part", path);
+        written.push_back(path);
+    }
+    const double export_seconds =
+        std::chrono::duration<double>(Clock::now() - export_start).count();
+
+    if (!o.quiet) {
+        std::size_t traversable = 0, obstacle = 0;
+        for (std::size_t c = 0; c < map.grid().cellCount(); ++c) {
+            traversable += map.state(long(c)) == travel_mrpt::CellState::Traversable;
+            obstacle += map.state(long(c)) == travel_mrpt::CellState::Obstacle;
+        }
+        std::printf("travel-map: %s -> %s\n", o.input.c_str(), o.output_dir.c_str());
+        std::printf("  records: %zu, LiDAR frames mapped: %zu, rejected: %zu, without pose: %zu\n",
+                    stats.records, stats.inserted, stats.rejected, stats.no_pose);
+        std::printf("  poses: %s\n", stats.pose_source.c_str());
+        std::printf(
+            "  grid: %d x %d cells of %.3g m, observed %zu: traversable %zu, obstacle %zu\n",
+            map.grid().sizeX(), map.grid().sizeY(), map.options().geometry.resolution,
+            map.grid().observedCells(), traversable, obstacle);
+        std::printf("  OctoMap: %zu leaves of %.3g m, %zu occupied voxels\n",
+                    map.octree().getNumLeafNodes(), map.options().octomap_resolution,
+                    map.getAsSimplePointsMap()->size());
+        std::printf("  time: mapping %.2f s (%.1f ms per frame), exports %.2f s\n", map_seconds,
+                    1000.0 * map_seconds / double(stats.inserted), export_seconds);
+        for (const auto& path : written) std::printf("  wrote %s\n", path.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return travel::apps::runMain("travel-map", run, argc, argv);
+}

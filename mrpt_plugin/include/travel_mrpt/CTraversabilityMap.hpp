@@ -1,0 +1,123 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// A CMetricMap fusing TRAVEL-segmented LiDAR frames into
+//   - a 2-D traversability grid (TraversabilityGrid: per cell state, log-odds, ground height and
+//     spread, slope, step height, last-seen time), and
+//   - an OctoMap (octomap::OcTree) of obstacle voxels, with free space carved along the rays to
+//     ground and obstacle hits.
+// insertObservation(obs, robotPose) runs the observation through a TravelFilter (any LiDAR
+// observation the filter converts: Velodyne, rotating scans, point clouds, depth cameras), with
+// the robot pose as its attitude source, and fuses the labelled points in the world frame.
+//
+// CMultiMetricMap creates it from an .ini (the plugin module registers it):
+//   [map]
+//   traversabilityMap_count=1
+//   [map_traversabilityMap_00_creationOpts]
+//   min_x=-30  max_x=30  min_y=-30  max_y=30  resolution=0.2
+//   [map_traversabilityMap_00_insertOpts]
+//   preset=vlp16  sensor_height=1.8  max_step_height=0.1
+// The keys and their units are listed in TraversabilityMapOptions.hpp (and docs/map.md).
+//
+// A point is an obstacle when TRAVEL labels it non-ground and it stands at least
+// obstacle_min_height above the local ground: the plane of the frame's traversable tri-grid node
+// under it, else the ground height fused in its grid cell (this frame's ground points included),
+// else a neighbouring node's plane, else its cluster's ground_z, else -sensor_height below the
+// sensor.
+#pragma once
+
+#include <mrpt/maps/CMetricMap.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "travel_mrpt/TraversabilityGrid.hpp"
+#include "travel_mrpt/TraversabilityMapOptions.hpp"
+
+namespace octomap {
+class OcTree;
+}
+
+namespace travel_mrpt {
+
+class TravelFilter;
+struct TravelFrame;
+
+class CTraversabilityMap : public mrpt::maps::CMetricMap {
+    DEFINE_SERIALIZABLE(CTraversabilityMap, travel_mrpt)
+
+  public:
+    explicit CTraversabilityMap(const TraversabilityMapOptions& options = {});
+    CTraversabilityMap(const CTraversabilityMap& other);
+    CTraversabilityMap& operator=(const CTraversabilityMap& other);
+    ~CTraversabilityMap() override;
+
+    /// Validates (throws travel::ConfigError), replaces the options and clears the map.
+    void setOptions(const TraversabilityMapOptions& options);
+    const TraversabilityMapOptions& options() const { return options_; }
+
+    const TraversabilityGrid& grid() const { return grid_; }
+    /// State of the cell holding world (x, y); Unknown outside the grid.
+    CellState stateAt(double x, double y) const;
+    CellState state(long cell) const { return grid_.state(cell, options_.fusion); }
+    const octomap::OcTree& octree() const { return *octree_; }
+
+    /// The filter that segments each observation: feed it IMU / odometry (processImu...) in
+    /// rawlog order for levelling and deskew. Its options are options().travel.
+    TravelFilter& filter() { return *filter_; }
+    /// The last frame fused (valid after a successful insertion).
+    const TravelFrame& lastFrame() const { return *frame_; }
+    std::size_t framesInserted() const { return frames_inserted_; }
+    /// Why the last insertObservation() returned false (empty after a success).
+    const std::string& lastRejection() const { return last_rejection_; }
+
+    /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid.
+    void fuseFrame(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
+
+    // ---- CMetricMap ----
+    bool isEmpty() const override;
+    /// Writes prefix.bt (OctoMap), prefix_grid.gridmap.gz (COccupancyGridMap2D),
+    /// prefix_height.gridmap.gz (CHeightGridMap2D), prefix_traversability.png,
+    /// prefix_occupancy.png, prefix_height.png and prefix.3Dscene. Throws std::runtime_error
+    /// naming the file on failure.
+    void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+    /// Centres of the occupied OctoMap voxels (obstacles), world frame. Rebuilt after changes.
+    const mrpt::maps::CSimplePointsMap* getAsSimplePointsMap() const override;
+    /// The traversability grid as a textured plane at its mean ground height and the occupied
+    /// voxels as points coloured by height.
+    void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+    std::string asString() const override;
+
+    MAP_DEFINITION_START(CTraversabilityMap)
+    TraversabilityMapOptions options;
+    MAP_DEFINITION_END(CTraversabilityMap)
+
+  private:
+    void internal_clear() override;
+    bool internal_insertObservation(
+        const mrpt::obs::CObservation& obs,
+        const std::optional<const mrpt::poses::CPose3D>& robotPose = std::nullopt) override;
+    /// Not a localization map: always 0 (and canComputeObservationLikelihood() is false).
+    double internal_computeObservationLikelihood(
+        const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
+    bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation&) const override {
+        return false;
+    }
+    void resetOctree();
+
+    TraversabilityMapOptions options_;
+    TraversabilityGrid grid_;
+    std::unique_ptr<octomap::OcTree> octree_;
+    std::unique_ptr<TravelFilter> filter_;
+    std::unique_ptr<TravelFrame> frame_;
+    std::size_t frames_inserted_ = 0;
+    std::string last_rejection_;
+
+    // Per-frame scratch, reused: voxel keys of ray end points and of the traversed voxels.
+    struct Scratch;
+    std::unique_ptr<Scratch> scratch_;
+    mutable std::shared_ptr<mrpt::maps::CSimplePointsMap> obstacle_points_;
+    mutable bool obstacle_points_dirty_ = true;
+};
+
+}  // namespace travel_mrpt

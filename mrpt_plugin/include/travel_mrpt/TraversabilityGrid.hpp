@@ -1,0 +1,140 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// The 2-D traversability grid of CTraversabilityMap, free of MRPT (Eigen/std only). Each frame
+// adds classified world points, then endFrame() fuses that frame's per-cell summary into the
+// cells: one log-odds update per cell and frame (not per point, so dense near-range cells do
+// not outvote far ones), ground height statistics, slope from the TRAVEL terrain model and the
+// step height seen inside the cell.
+//
+//   grid.reset(geometry);
+//   per frame: grid.beginFrame(); grid.addGround(x, y, z, slope_deg) ...;
+//              grid.addObstacle(x, y) ...; grid.endFrame(time_s, fusion);
+//   grid.state(ix, iy, fusion)
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace travel_mrpt {
+
+/// Extent and cell size of the grid, world frame [m]. Cell (ix, iy) covers
+/// [min_x + ix * resolution, min_x + (ix + 1) * resolution) and likewise in y.
+struct GridGeometry {
+    double min_x = -20.0, max_x = 20.0;  ///< [m]
+    double min_y = -20.0, max_y = 20.0;  ///< [m]
+    double resolution = 0.2;             ///< [m] cell side
+
+    int sizeX() const;
+    int sizeY() const;
+    /// Throws travel::ConfigError unless min < max, resolution > 0 and the grid has at most
+    /// 16384 x 16384 cells.
+    void validate() const;
+};
+
+/// How frames are fused into cells (all configurable from the map's .ini sections).
+struct GridFusionParams {
+    float logodds_obstacle = 0.85f;   ///< added to a cell with obstacle points in a frame
+    float logodds_ground = -0.4f;     ///< added to a cell with only ground points in a frame
+    float logodds_min = -2.0f;        ///< clamp (lower)
+    float logodds_max = 3.5f;         ///< clamp (upper)
+    float obstacle_threshold = 0.5f;  ///< log-odds above this: obstacle
+    float free_threshold = -0.3f;     ///< log-odds below this: ground (traversable if flat)
+    int min_obstacle_points = 2;      ///< obstacle points a cell needs in one frame to count
+    int min_step_points = 4;          ///< ground points a cell needs in one frame for a step
+    float max_step_height = 0.1f;     ///< [m] a larger step inside a cell: not traversable
+    float max_slope_deg = 20.0f;      ///< [deg] a steeper terrain model: not traversable
+
+    /// Throws travel::ConfigError on inconsistent values (naming the key).
+    void validate() const;
+};
+
+enum class CellState : uint8_t {
+    Unknown = 0,      ///< never observed, or evidence below both thresholds
+    Traversable = 1,  ///< ground, flat enough, no step
+    Obstacle = 2,     ///< obstacle points, or ground too steep / with a step
+};
+
+const char* toString(CellState state);
+
+/// The grid's cells, one array per field (index = iy * sizeX + ix).
+class TraversabilityGrid {
+  public:
+    void reset(const GridGeometry& geometry);
+    /// Forgets the contents, keeps the geometry.
+    void clear();
+
+    const GridGeometry& geometry() const { return geometry_; }
+    int sizeX() const { return size_x_; }
+    int sizeY() const { return size_y_; }
+    std::size_t cellCount() const { return logodds_.size(); }
+    /// Cell index of world (x, y), or -1 outside the grid.
+    long cellIndex(double x, double y) const;
+    long cellIndex(int ix, int iy) const { return long(iy) * size_x_ + ix; }
+    double cellCenterX(int ix) const { return geometry_.min_x + (ix + 0.5) * geometry_.resolution; }
+    double cellCenterY(int iy) const { return geometry_.min_y + (iy + 0.5) * geometry_.resolution; }
+
+    // ---- One frame ----
+    void beginFrame();
+    /// A ground point (world frame) with the slope of its terrain-model node [deg].
+    void addGround(double x, double y, float z, float slope_deg);
+    /// An obstacle point (world frame) between the obstacle height limits.
+    void addObstacle(double x, double y);
+    /// Fuses the frame's cells. Returns the number of cells updated.
+    std::size_t endFrame(double time_s, const GridFusionParams& fusion);
+
+    // ---- Reading ----
+    CellState state(long cell, const GridFusionParams& fusion) const;
+    bool observed(long cell) const { return frames_seen_[cell] > 0; }
+    bool empty() const { return observed_cells_ == 0; }
+    std::size_t observedCells() const { return observed_cells_; }
+    float logodds(long cell) const { return logodds_[cell]; }
+    /// Mean ground height [m] (NaN when no ground point fell in the cell).
+    float groundHeight(long cell) const;
+    /// Standard deviation of the ground heights [m] (0 with fewer than 2 points).
+    float groundSpread(long cell) const;
+    /// Mean terrain-model slope of the cell's ground points [deg] (NaN if none).
+    float slopeDeg(long cell) const;
+    /// Largest step seen inside the cell in one frame [m] (0 if never measured).
+    float stepHeight(long cell) const { return step_height_[cell]; }
+    /// Time of the last frame that updated the cell [s, MRPT clock] (0 = never).
+    double lastSeen(long cell) const { return last_seen_[cell]; }
+
+    // ---- Storage (for serialization): every per-cell array, in a fixed order ----
+    struct Arrays {
+        std::vector<float>* floats[6];
+        std::vector<uint32_t>* counts[2];
+        std::vector<double>* doubles[1];
+    };
+    Arrays arrays();
+    /// Recomputes derived counters after the arrays were filled; throws std::runtime_error if
+    /// their sizes do not match the geometry.
+    void arraysLoaded();
+
+  private:
+    GridGeometry geometry_;
+    int size_x_ = 0, size_y_ = 0;
+    std::size_t observed_cells_ = 0;
+
+    // Fused state per cell.
+    std::vector<float> logodds_;
+    std::vector<uint32_t> ground_count_;          ///< ground points ever added
+    std::vector<float> ground_mean_, ground_m2_;  ///< Welford running mean / sum of squares
+    std::vector<float> slope_sum_;
+    std::vector<float> step_height_;
+    std::vector<uint32_t> frames_seen_;
+    std::vector<double> last_seen_;
+    std::vector<float> obstacle_frames_;  ///< frames in which the cell had obstacle points
+
+    // Per-frame scratch, reused: touched cells and their summaries.
+    struct FrameCell {
+        uint32_t ground = 0, obstacle = 0;
+        float z_low[2], z_high[2];  ///< two lowest / highest ground z (robust step)
+    };
+    std::vector<int32_t> frame_slot_;  ///< per cell: index into frame_cells_, or -1
+    std::vector<long> frame_touched_;
+    std::vector<FrameCell> frame_cells_;
+    FrameCell& frameCell(long cell);
+};
+
+}  // namespace travel_mrpt

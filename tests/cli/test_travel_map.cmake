@@ -1,0 +1,89 @@
+# travel-map command-line test (cmake -P): good inputs write every export; bad inputs fail with
+# a message naming the file (and line) or key at fault.
+# -DTRAVEL_MAP -DMAKE_SYNTHETIC -DSAMPLE -DCONFIG -DDATA_DIR -DWORK_DIR
+include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+function(expect_exports dir name)
+  foreach(suffix .bt _grid.gridmap.gz _height.gridmap.gz _traversability.png _occupancy.png
+                 _height.png .3Dscene .travelmap)
+    if(NOT EXISTS ${dir}/${name}${suffix})
+      message(FATAL_ERROR "missing output ${dir}/${name}${suffix}")
+    endif()
+  endforeach()
+endfunction()
+
+# --help explains inputs and outputs.
+expect_success(${TRAVEL_MAP} --help)
+foreach(word "gridmap.gz" "poses" "identity pose" "KITTI")
+  string(FIND "${last_output}" "${word}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "--help does not mention '${word}'")
+  endif()
+endforeach()
+
+# The synthetic moving-robot rawlog (VLP-16 rotating scans + odometry + IMU): poses from the
+# odometry records.
+expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street.rawlog)
+expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street
+  --set preset=vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20")
+expect_exports(${WORK_DIR}/street street)
+foreach(word "LiDAR frames mapped: 10" "poses: odometry in the rawlog" "occupied voxels")
+  string(FIND "${last_output}" "${word}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "summary lacks '${word}':\n${last_output}")
+  endif()
+endforeach()
+
+# The same rawlog with a TUM pose file (robot standing still at x = 1): used instead.
+file(WRITE ${WORK_DIR}/tum.txt
+  "# t x y z qx qy qz qw\n999999999.5 1 0 0 0 0 0 1\n1000000000.5 1 0 0 0 0 0 1\n1000000001.5 1 0 0 0 0 0 1\n")
+expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street_tum
+  --poses ${WORK_DIR}/tum.txt --set preset=vlp16 --set sensor_height=1.8 --max-frames 2)
+string(FIND "${last_output}" "poses: pose file" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "pose file not used:\n${last_output}")
+endif()
+
+# MRPT's VLP-16 sample has no poses: identity pose with a warning.
+if(EXISTS ${SAMPLE})
+  expect_success(${TRAVEL_MAP} -i ${SAMPLE} -o ${WORK_DIR}/vlp16 -c ${CONFIG})
+  expect_exports(${WORK_DIR}/vlp16 test_velodyne_VLP16)
+  string(FIND "${last_output}" "identity pose" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "no identity-pose warning:\n${last_output}")
+  endif()
+endif()
+
+# A KITTI sequence directory (first frame only) when the shared data is there.
+if(EXISTS ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
+  expect_success(${TRAVEL_MAP} -i ${DATA_DIR}/semantickitti/sequences/00 -o ${WORK_DIR}/kitti
+    --max-frames 1)
+  expect_exports(${WORK_DIR}/kitti 00)
+else()
+  message(STATUS "SKIPPED part: ${DATA_DIR}/semantickitti not found")
+endif()
+
+# Bad inputs.
+expect_failure_mentioning("${WORK_DIR}/missing.rawlog" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/missing.rawlog -o ${WORK_DIR}/bad)
+file(WRITE ${WORK_DIR}/not_a_rawlog.rawlog "hello, I am text\n")
+expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/bad)
+file(WRITE ${WORK_DIR}/columns.txt "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 1\n")
+expect_failure_mentioning("columns.txt:2: expected 8 numbers" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --poses ${WORK_DIR}/columns.txt)
+file(WRITE ${WORK_DIR}/words.txt "0 0 0 0 0 0 0 1\n1 0 zero 0 0 0 0 1\n")
+expect_failure_mentioning("words.txt:2: column 3: 'zero'" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --poses ${WORK_DIR}/words.txt)
+file(WRITE ${WORK_DIR}/backwards.txt "2 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n")
+expect_failure_mentioning("backwards.txt:2: timestamp" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --poses ${WORK_DIR}/backwards.txt)
+expect_failure_mentioning("unknown key 'colour'" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --set colour=red)
+expect_failure_mentioning("--extent" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 1,2,3)
+expect_failure_mentioning("min_x" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 5,1,0,1)
+message(STATUS "travel-map CLI: all checks passed")

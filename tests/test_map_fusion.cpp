@@ -1,0 +1,304 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Multi-frame fusion on the synthetic scene of tests/map/MapTestScene.hpp (ramp, kerb, box,
+// pole; nine static VLP-16 sweeps along a path): grid cell states against the scene's truth,
+// the ramp traversable, box and pole obstacles in the grid and in the OctoMap, the exports
+// (.bt, .gridmap.gz) read back, and the map's own serialization.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/CHeightGridMap2D.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/system/filesystem.h>
+#include <octomap/OcTree.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "map/MapTestScene.hpp"
+#include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/MapExport.hpp"
+#include "travel_mrpt/Registration.hpp"
+
+namespace {
+
+using travel_map_test::Truth;
+using travel_mrpt::CellState;
+using travel_mrpt::CTraversabilityMap;
+
+travel_mrpt::TraversabilityMapOptions testOptions() {
+    mrpt::config::CConfigFileMemory ini(travel_map_test::mapIni("MAP"));
+    travel_mrpt::TraversabilityMapOptions o;
+    o.loadFromConfigFile(ini, "MAP_traversabilityMap_00_creationOpts");
+    o.loadFromConfigFile(ini, "MAP_traversabilityMap_00_insertOpts");
+    return o;
+}
+
+/// Built once for every test of the suite (nine sweeps).
+class MapFusion : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        travel_mrpt::registerClasses();
+        scene_ = new travel::sim::Scene(travel_map_test::mapScene());
+        map_ = new CTraversabilityMap(testOptions());
+        const auto poses = travel_map_test::robotPoses();
+        for (std::size_t k = 0; k < poses.size(); ++k) {
+            const auto obs = travel_map_test::sweep(*scene_, k);
+            inserted_ += map_->insertObservation(*obs, poses[k]) ? 1 : 0;
+        }
+        const auto& g = map_->grid();
+        truth_ = travel_map_test::cellTruth(*scene_, g.geometry().min_x, g.geometry().min_y,
+                                            g.sizeX(), g.sizeY(), g.geometry().resolution,
+                                            map_->options().fusion.max_step_height,
+                                            map_->options().fusion.max_slope_deg);
+    }
+    static void TearDownTestSuite() {
+        delete map_;
+        delete scene_;
+        map_ = nullptr;
+        scene_ = nullptr;
+    }
+
+    /// Share of the observed cells in [x0, x1] x [y0, y1] (skipping border cells if asked)
+    /// that have `state`; `count` receives how many were considered.
+    static double shareInBox(double x0, double x1, double y0, double y1, CellState state,
+                             bool skip_border, std::size_t& count) {
+        const auto& g = map_->grid();
+        std::size_t hit = 0;
+        count = 0;
+        for (int iy = 0; iy < g.sizeY(); ++iy)
+            for (int ix = 0; ix < g.sizeX(); ++ix) {
+                const double x = g.cellCenterX(ix), y = g.cellCenterY(iy);
+                if (x < x0 || x > x1 || y < y0 || y > y1) continue;
+                const long c = g.cellIndex(ix, iy);
+                if (!g.observed(c) || (skip_border && truth_[c].border)) continue;
+                ++count;
+                hit += map_->state(c) == state;
+            }
+        return count ? double(hit) / double(count) : 0.0;
+    }
+
+    /// Occupied OctoMap leaves whose centre lies in the box.
+    static std::size_t occupiedIn(const octomap::OcTree& tree, double x0, double x1, double y0,
+                                  double y1, double z0, double z1) {
+        std::size_t n = 0;
+        for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+            if (!tree.isNodeOccupied(*it)) continue;
+            const double x = it.getX(), y = it.getY(), z = it.getZ();
+            n += x >= x0 && x <= x1 && y >= y0 && y <= y1 && z >= z0 && z <= z1;
+        }
+        return n;
+    }
+
+    static travel::sim::Scene* scene_;
+    static CTraversabilityMap* map_;
+    static std::vector<travel_map_test::CellTruth> truth_;
+    static int inserted_;
+};
+
+travel::sim::Scene* MapFusion::scene_ = nullptr;
+CTraversabilityMap* MapFusion::map_ = nullptr;
+std::vector<travel_map_test::CellTruth> MapFusion::truth_;
+int MapFusion::inserted_ = 0;
+
+TEST_F(MapFusion, EveryObservedCellHasTheRightState) {
+    ASSERT_EQ(inserted_, 9) << map_->lastRejection();
+    const auto& g = map_->grid();
+    std::size_t scored = 0, correct = 0, unknown = 0, border = 0, observed = 0;
+    std::size_t truth_obstacle = 0, correct_obstacle = 0;
+    for (long c = 0; c < long(g.cellCount()); ++c) {
+        if (!g.observed(c)) continue;
+        ++observed;
+        if (truth_[c].border) {
+            ++border;
+            continue;
+        }
+        ++scored;
+        const CellState st = map_->state(c);
+        const CellState expected =
+            truth_[c].truth == Truth::Obstacle ? CellState::Obstacle : CellState::Traversable;
+        correct += st == expected;
+        unknown += st == CellState::Unknown;
+        if (expected == CellState::Obstacle) {
+            ++truth_obstacle;
+            correct_obstacle += st == expected;
+        }
+    }
+    const double accuracy = double(correct) / double(scored);
+    std::printf(
+        "[ map      ] observed cells %zu (of %zu), border (not scored) %zu, scored %zu: "
+        "accuracy %.4f, undecided %zu; obstacle truth cells %zu, found %zu\n",
+        observed, g.cellCount(), border, scored, accuracy, unknown, truth_obstacle,
+        correct_obstacle);
+    std::printf("[ map      ] %s\n", map_->asString().c_str());
+    EXPECT_GT(observed, g.cellCount() / 2) << "the sweeps should cover most of the 28 x 20 m grid";
+    EXPECT_GE(accuracy, 0.98);
+}
+
+TEST_F(MapFusion, RampAndSidewalkAreTraversable) {
+    std::size_t n = 0;
+    // The ramp's 10-degree slope (x in [-4, 2]), away from its vertical side faces.
+    const double ramp = shareInBox(-3.5, 1.75, 4.5, 7.5, CellState::Traversable, true, n);
+    std::printf("[ map      ] ramp slope: %zu observed cells, %.4f traversable\n", n, ramp);
+    EXPECT_GE(n, 150u);
+    // Measured 0.941: the rest are cells where a far sweep saw non-ground points on the slope
+    // (undecided or obstacle after fusion).
+    EXPECT_GE(ramp, 0.93);
+    // Its plateau (1.06 m up, x in [2, 5]) is reported only: seen from the road, TRAVEL
+    // labels much of it non-ground, and cells never seen as ground there are obstacles.
+    const double plateau = shareInBox(2.25, 4.5, 4.5, 7.5, CellState::Traversable, true, n);
+    std::printf("[ map      ] ramp plateau: %zu observed cells, %.4f traversable\n", n, plateau);
+    // Sidewalk behind the 0.15 m kerb, away from the box.
+    const double sidewalk = shareInBox(-12.0, 0.0, -9.5, -3.5, CellState::Traversable, true, n);
+    std::printf("[ map      ] sidewalk: %zu observed cells, %.4f traversable\n", n, sidewalk);
+    EXPECT_GE(n, 150u);
+    EXPECT_GE(sidewalk, 0.97);
+    // The kerb line itself (step 0.15 m > max_step_height 0.1 m): reported, the cells on it
+    // are border cells of the accuracy score.
+    const double kerb = shareInBox(-12.0, 12.0, -3.24, -3.01, CellState::Obstacle, false, n);
+    std::printf("[ map      ] kerb line: %zu observed cells, %.4f obstacle\n", n, kerb);
+}
+
+TEST_F(MapFusion, BoxAndPoleAreObstaclesInGridAndOctoMap) {
+    const auto& g = map_->grid();
+    std::size_t box_cells = 0, box_obstacle = 0, pole_cells = 0, pole_obstacle = 0;
+    for (long c = 0; c < long(g.cellCount()); ++c) {
+        if (!g.observed(c)) continue;
+        const bool obstacle = map_->state(c) == CellState::Obstacle;
+        if (truth_[c].box) ++box_cells, box_obstacle += obstacle;
+        if (truth_[c].pole) ++pole_cells, pole_obstacle += obstacle;
+    }
+    std::printf("[ map      ] box: %zu/%zu observed footprint cells obstacle; pole: %zu/%zu\n",
+                box_obstacle, box_cells, pole_obstacle, pole_cells);
+    EXPECT_GE(box_cells, 10u);
+    EXPECT_GE(double(box_obstacle), 0.9 * double(box_cells));
+    EXPECT_GE(pole_cells, 1u);
+    EXPECT_EQ(pole_obstacle, pole_cells);
+
+    const octomap::OcTree& tree = map_->octree();
+    const double v = map_->options().octomap_resolution;
+    const std::size_t pole = occupiedIn(tree, -5.15 - v, -4.85 + v, 2.85 - v, 3.15 + v, 0.5, 2.5);
+    const std::size_t box = occupiedIn(tree, 2.0 - v, 4.0 + v, -6.75 - v, -5.25 + v, 0.6, 1.3);
+    // Nothing stands on the road the robot drove (|y| <= 2): no occupied voxel above 0.4 m.
+    const std::size_t road = occupiedIn(tree, -13.0, 13.0, -2.0, 2.0, 0.4, 4.0);
+    std::printf("[ map      ] OctoMap: %zu leaves; occupied: pole %zu, box %zu, road %zu\n",
+                tree.getNumLeafNodes(), pole, box, road);
+    EXPECT_GE(pole, 5u);
+    EXPECT_GE(box, 20u);
+    EXPECT_EQ(road, 0u);
+
+    // getAsSimplePointsMap: the occupied voxel centres.
+    const auto* points = map_->getAsSimplePointsMap();
+    ASSERT_NE(points, nullptr);
+    std::size_t occupied = 0;
+    for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
+        occupied += tree.isNodeOccupied(*it);
+    EXPECT_EQ(points->size(), occupied);
+}
+
+TEST_F(MapFusion, ExportsReadBackWithTheSameContent) {
+    const std::string dir = mrpt::system::getTempFileName() + "_map_export";
+    std::filesystem::create_directories(dir);
+    const std::string prefix = dir + "/scene";
+    map_->saveMetricMapRepresentationToFile(prefix);
+    for (const char* suffix : {".bt", "_grid.gridmap.gz", "_height.gridmap.gz",
+                               "_traversability.png", "_occupancy.png", "_height.png", ".3Dscene"})
+        EXPECT_TRUE(std::filesystem::exists(prefix + suffix)) << prefix + suffix;
+
+    // .bt: same tree; the pole voxels occupied, the road above 0.4 m not.
+    octomap::OcTree bt(0.1);
+    ASSERT_TRUE(bt.readBinary(prefix + ".bt"));
+    EXPECT_DOUBLE_EQ(bt.getResolution(), map_->options().octomap_resolution);
+    EXPECT_EQ(bt.getNumLeafNodes(), map_->octree().getNumLeafNodes());
+    std::size_t pole = 0, disagreements = 0;
+    for (auto it = map_->octree().begin_leafs(), end = map_->octree().end_leafs(); it != end;
+         ++it) {
+        const octomap::OcTreeNode* node = bt.search(it.getKey());
+        if (!node || bt.isNodeOccupied(node) != map_->octree().isNodeOccupied(*it)) ++disagreements;
+    }
+    const double v = map_->options().octomap_resolution;
+    pole = occupiedIn(bt, -5.15 - v, -4.85 + v, 2.85 - v, 3.15 + v, 0.5, 2.5);
+    EXPECT_EQ(disagreements, 0u);
+    EXPECT_GE(pole, 5u);
+
+    // .gridmap.gz: a COccupancyGridMap2D over the same extent; every decided cell agrees.
+    mrpt::maps::COccupancyGridMap2D grid;
+    {
+        mrpt::io::CFileGZInputStream in(prefix + "_grid.gridmap.gz");
+        auto archive = mrpt::serialization::archiveFrom(in);
+        archive >> grid;
+    }
+    const auto& g = map_->grid();
+    EXPECT_NEAR(grid.getResolution(), g.geometry().resolution, 1e-6);
+    EXPECT_NEAR(grid.getXMin(), g.geometry().min_x, 1e-3);
+    EXPECT_NEAR(grid.getYMax(), g.geometry().max_y, g.geometry().resolution);
+    std::size_t decided = 0, wrong = 0;
+    for (int iy = 0; iy < g.sizeY(); ++iy)
+        for (int ix = 0; ix < g.sizeX(); ++ix) {
+            const CellState st = map_->state(g.cellIndex(ix, iy));
+            const float p = grid.getPos(float(g.cellCenterX(ix)), float(g.cellCenterY(iy)));
+            if (st == CellState::Unknown) {
+                wrong += std::abs(p - 0.5f) > 0.02f;
+                continue;
+            }
+            ++decided;
+            wrong += (st == CellState::Obstacle) != (p < 0.5f);
+        }
+    std::printf("[ map      ] gridmap.gz: %zu decided cells, %zu disagree\n", decided, wrong);
+    EXPECT_GT(decided, 1000u);
+    EXPECT_EQ(wrong, 0u);
+    EXPECT_LT(grid.getPos(-5.0f, 3.0f), 0.5f) << "pole";
+    EXPECT_GT(grid.getPos(0.0f, 6.0f), 0.5f) << "middle of the ramp";
+
+    mrpt::maps::CHeightGridMap2D heights;
+    {
+        mrpt::io::CFileGZInputStream in(prefix + "_height.gridmap.gz");
+        auto archive = mrpt::serialization::archiveFrom(in);
+        archive >> heights;
+    }
+    // Height grid: the middle of the ramp (4 m up a 10-degree slope) is ~0.71 m up.
+    const auto* middle = heights.cellByPos(0.1, 6.1);
+    ASSERT_NE(middle, nullptr);
+    EXPECT_NEAR(middle->h, 4.1 * std::tan(10.0 * M_PI / 180.0), 0.05);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_F(MapFusion, SerializationRoundTrip) {
+    mrpt::io::CMemoryStream buffer;
+    auto out = mrpt::serialization::archiveFrom(buffer);
+    out << *map_;
+    buffer.Seek(0);
+    auto in = mrpt::serialization::archiveFrom(buffer);
+    auto object = in.ReadObject();
+    auto copy = std::dynamic_pointer_cast<CTraversabilityMap>(object);
+    ASSERT_TRUE(copy);
+    EXPECT_EQ(copy->asString(), map_->asString());
+    std::size_t differ = 0;
+    for (long c = 0; c < long(map_->grid().cellCount()); ++c)
+        differ += copy->state(c) != map_->state(c) ||
+                  copy->grid().lastSeen(c) != map_->grid().lastSeen(c);
+    EXPECT_EQ(differ, 0u);
+    EXPECT_EQ(copy->octree().getNumLeafNodes(), map_->octree().getNumLeafNodes());
+
+    // A truncated stream is an error, not a crash.
+    mrpt::io::CMemoryStream cut;
+    cut.assignMemoryNotOwn(buffer.getRawBufferData(), buffer.getTotalBytesCount() / 2);
+    auto cut_in = mrpt::serialization::archiveFrom(cut);
+    EXPECT_ANY_THROW(cut_in.ReadObject());
+}
+
+TEST_F(MapFusion, ClearEmptiesTheMap) {
+    CTraversabilityMap copy(*map_);
+    EXPECT_FALSE(copy.isEmpty());
+    EXPECT_EQ(copy.asString(), map_->asString());
+    copy.clear();
+    EXPECT_TRUE(copy.isEmpty());
+    EXPECT_EQ(copy.getAsSimplePointsMap()->size(), 0u);
+}
+
+}  // namespace
