@@ -1,0 +1,367 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "nav/Simulation.hpp"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/kinematics/CVehicleSimul_DiffDriven.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/nav/reactive/CReactiveNavigationSystem3D.h>
+#include <mrpt/nav/reactive/CRobot2NavInterfaceForSimulator.h>
+#include <mrpt/system/filesystem.h>
+
+#include <Eigen/Dense>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "nav/Collision.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel_mrpt/ObstacleSources.hpp"
+
+namespace travel::navsim {
+namespace fs = std::filesystem;
+
+const char* toString(SourceKind kind) {
+    switch (kind) {
+        case SourceKind::Travel:
+            return "travel";
+        case SourceKind::Raw:
+            return "raw";
+        case SourceKind::Threshold:
+            return "threshold";
+    }
+    return "?";
+}
+
+SourceKind parseSourceKind(const std::string& name) {
+    if (name == "travel") return SourceKind::Travel;
+    if (name == "raw") return SourceKind::Raw;
+    if (name == "threshold") return SourceKind::Threshold;
+    throw std::invalid_argument("unknown obstacle source '" + name +
+                                "' (expected travel, raw or threshold)");
+}
+
+const char* toString(Outcome outcome) {
+    switch (outcome) {
+        case Outcome::Goal:
+            return "goal";
+        case Outcome::Collision:
+            return "collision";
+        case Outcome::NavigatorGaveUp:
+            return "navigator-gave-up";
+        case Outcome::Timeout:
+            return "timeout";
+    }
+    return "?";
+}
+
+sim::LidarModel SimOptions::defaultLidar() {
+    sim::LidarModel m = sim::LidarModel::uniform(32, -45.0, 15.0, 720);
+    m.min_range = 0.3;
+    m.max_range = 20.0;
+    m.range_noise_sigma = 0.01;
+    m.sweep_period = 0.1;
+    m.seed = 7;
+    return m;
+}
+
+travel::Params SimOptions::defaultTravelParams(const sim::LidarModel& lidar, double sensor_height) {
+    travel::Params p;
+    p.sensor_height = sensor_height;
+    p.min_range = 0.4;
+    p.max_range = lidar.max_range;
+    p.tgf_resolution = 1.0;
+    p.node_min_points = 5;
+    p.seed_search_radius = 3.0;
+    p.seed_height_tolerance = 0.5;
+    p.cluster_objects = false;
+    p.ring_source = "field";
+    p.num_rings = static_cast<int>(lidar.numBeams());
+    p.num_columns = lidar.columns;
+    p.elevation_table = "uniform";
+    const auto e = lidar.elevationsByRing();
+    p.min_elevation_deg = e.front();
+    p.max_elevation_deg = e.back();
+    return p;
+}
+
+Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
+                                       const std::vector<Eigen::Vector2d>& footprint, double x,
+                                       double y, double yaw, double& z) {
+    // Least-squares plane z = a + b dx + c dy through the footprint corners and the centre.
+    Eigen::Matrix3d AtA = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d Atb = Eigen::Vector3d::Zero();
+    const double cy = std::cos(yaw), sy = std::sin(yaw);
+    const auto add = [&](double dx, double dy) {
+        const Eigen::Vector3d row(1.0, dx, dy);
+        AtA += row * row.transpose();
+        Atb += row * scene.terrainHeight(x + dx, y + dy);
+    };
+    add(0.0, 0.0);
+    for (const auto& p : footprint) add(cy * p.x() - sy * p.y(), sy * p.x() + cy * p.y());
+    const Eigen::Vector3d abc = AtA.ldlt().solve(Atb);
+    z = abc[0];
+    const Eigen::Vector3d n = Eigen::Vector3d(-abc[1], -abc[2], 1.0).normalized();
+    Eigen::Vector3d f(cy, sy, abc[1] * cy + abc[2] * sy);  // heading, on the plane
+    f.normalize();
+    Eigen::Matrix3d R;
+    R.col(0) = f;
+    R.col(1) = n.cross(f);
+    R.col(2) = n;
+    return R;
+}
+
+std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& file) {
+    if (!fs::is_regular_file(file)) throw std::runtime_error(file + ": navigator config not found");
+    mrpt::config::CConfigFile cfg(file);
+    std::vector<double> xs, ys;
+    cfg.read_vector("CReactiveNavigationSystem3D", "LEVEL1_VECTORX", std::vector<double>{}, xs);
+    cfg.read_vector("CReactiveNavigationSystem3D", "LEVEL1_VECTORY", std::vector<double>{}, ys);
+    if (xs.size() < 3 || xs.size() != ys.size())
+        throw std::runtime_error(file +
+                                 ": [CReactiveNavigationSystem3D] needs LEVEL1_VECTORX and "
+                                 "LEVEL1_VECTORY with the same number (>= 3) of values");
+    std::vector<Eigen::Vector2d> out;
+    for (std::size_t i = 0; i < xs.size(); ++i) out.emplace_back(xs[i], ys[i]);
+    return out;
+}
+
+namespace {
+
+/// Simulated clock: every timestamp the navigator sees is start + simulated seconds.
+mrpt::Clock::time_point simStamp(double t) {
+    return mrpt::Clock::fromDouble(1.7e9 + t);
+}
+
+/// MRPT's simulator interface, with obstacles from an ObstacleSource and simulated time stamps.
+class SimRobot : public mrpt::nav::CRobot2NavInterfaceForSimulator_DiffDriven {
+  public:
+    SimRobot(mrpt::kinematics::CVehicleSimul_DiffDriven& sim,
+             const travel_mrpt::ObstacleSource& source)
+        : CRobot2NavInterfaceForSimulator_DiffDriven(sim), sim_(sim), source_(source) {}
+
+    bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& vel,
+                                 mrpt::system::TTimeStamp& stamp, mrpt::math::TPose2D& odometry,
+                                 std::string& frame_id) override {
+        const bool ok = CRobot2NavInterfaceForSimulator_DiffDriven::getCurrentPoseAndSpeeds(
+            pose, vel, stamp, odometry, frame_id);
+        stamp = simStamp(sim_.getTime());
+        return ok;
+    }
+    bool senseObstacles(mrpt::maps::CSimplePointsMap& obstacles,
+                        mrpt::system::TTimeStamp& stamp) override {
+        ++sensed;
+        return source_.latest(obstacles, stamp);
+    }
+    // The navigator's events: remembered for the report instead of printed.
+    void sendNavigationEndDueToErrorEvent() override { gave_up = "navigation error"; }
+    void sendWaySeemsBlockedEvent() override { gave_up = "way seems blocked"; }
+    void sendCannotGetCloserToBlockedTargetEvent() override {
+        gave_up = "cannot get closer to the blocked target";
+    }
+
+    std::string gave_up;
+    std::size_t sensed = 0;
+
+  private:
+    mrpt::kinematics::CVehicleSimul_DiffDriven& sim_;
+    const travel_mrpt::ObstacleSource& source_;
+};
+
+std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
+    std::unique_ptr<travel_mrpt::ObstacleSource> s;
+    switch (o.source) {
+        case SourceKind::Travel:
+            s = std::make_unique<travel_mrpt::TravelObstacleSource>(o.travel_obstacles);
+            break;
+        case SourceKind::Raw:
+            s = travel_mrpt::RobotFrameBandSource::raw(o.raw_min_z);
+            break;
+        case SourceKind::Threshold:
+            s = travel_mrpt::RobotFrameBandSource::heightThreshold(o.threshold_min_z);
+            break;
+    }
+    s->setMemory(o.memory);
+    return s;
+}
+
+/// A scratch directory for the navigator's own files (PTG caches, its log), removed on exit.
+struct ScratchDir {
+    fs::path path;
+    explicit ScratchDir(const fs::path& p) : path(p) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+}  // namespace
+
+RunReport runSimulation(const World& world, const SimOptions& o) {
+    if (!(o.dt > 0) || !(o.timeout > 0) || !(o.goal_tolerance > 0) || !(o.sensor_height > 0))
+        throw std::runtime_error("dt, timeout, goal_tolerance and sensor_height must be > 0");
+    const std::vector<Eigen::Vector2d> footprint = footprintFromConfig(o.nav_config_file);
+    o.lidar.validate();
+    travel::Pipeline pipeline(o.travel);  // validates (throws travel::ConfigError)
+    auto source = makeSource(o);
+
+    // The navigator writes PTG caches and its log into a directory of its own.
+    static int run_counter = 0;
+    const fs::path scratch_base = o.navlog_file.empty() ? fs::temp_directory_path()
+                                                        : fs::absolute(o.navlog_file).parent_path();
+    ScratchDir scratch(scratch_base / (".travel-nav-sim-" + std::to_string(::getpid()) + "-" +
+                                       std::to_string(run_counter++)));
+
+    mrpt::kinematics::CVehicleSimul_DiffDriven sim;
+    sim.setCurrentGTPose(mrpt::math::TPose2D(world.start.x(), world.start.y(), world.start.z()));
+    SimRobot robot(sim, *source);
+    RunReport report;
+    {
+        mrpt::nav::CReactiveNavigationSystem3D nav(robot, o.verbose, !o.navlog_file.empty(),
+                                                   (scratch.path / "log").string());
+        if (!o.verbose) nav.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        {
+            mrpt::config::CConfigFile cfg(o.nav_config_file);
+            nav.loadConfigFile(cfg);
+        }
+        nav.params_abstract_ptg_navigator.ptg_cache_files_directory = scratch.path.string();
+        nav.initialize();
+
+        mrpt::nav::CAbstractNavigator::TNavigationParams request;
+        request.target.target_coords = mrpt::math::TPose2D(world.goal.x(), world.goal.y(), 0.0);
+        request.target.targetAllowedDistance = o.goal_tolerance;
+        request.target.targetIsRelative = false;
+        nav.navigate(&request);
+
+        // Mount: sensor straight above the robot origin.
+        const Eigen::Isometry3d mount(Eigen::Translation3d(0.0, 0.0, o.sensor_height));
+        sim::Scan scan;
+        travel::Result result;
+        travel::FrameInput input;
+        travel_mrpt::ObstacleFrame frame;
+        frame.sensorOnRobot = mount.cast<float>();
+
+        double start_z = 0.0, max_z = -1e9;
+        double wall_ms = 0.0;
+        int steps = 0;
+        const int max_steps = static_cast<int>(std::ceil(o.timeout / o.dt));
+        Eigen::Vector2d last_xy = world.start.head<2>();
+        for (;; ++steps) {
+            const double t = sim.getTime();
+            const mrpt::math::TPose2D p = sim.getCurrentGTPose();
+            double z = 0.0;
+            const Eigen::Matrix3d R =
+                robotAttitudeOnTerrain(world.scene, footprint, p.x, p.y, p.phi, z);
+            if (steps == 0) start_z = z;
+            max_z = std::max(max_z, z);
+
+            // Collision check and trajectory sample at this pose.
+            const Clearance c = clearance(placeFootprint(footprint, {p.x, p.y, p.phi}), world);
+            TrajectorySample s;
+            s.t = t, s.x = p.x, s.y = p.y, s.z = z, s.yaw = p.phi;
+            s.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
+            s.roll = std::atan2(R(2, 1), R(2, 2));
+            const auto vel = sim.getCurrentGTVelLocal();
+            s.v = vel.vx, s.w = vel.omega, s.clearance = c.distance;
+            report.path_length += (Eigen::Vector2d(p.x, p.y) - last_xy).norm();
+            last_xy = {p.x, p.y};
+            report.min_clearance = std::min(report.min_clearance, c.distance);
+            report.final_goal_distance = (Eigen::Vector2d(p.x, p.y) - world.goal).norm();
+
+            if (c.distance <= 0.0) {
+                report.outcome = Outcome::Collision;
+                report.detail = "footprint overlaps " + c.nearest;
+            } else if (report.final_goal_distance <= o.goal_tolerance + 0.05) {
+                report.outcome = Outcome::Goal;
+            } else if (nav.getCurrentState() == mrpt::nav::CAbstractNavigator::NAV_ERROR ||
+                       (steps > 0 &&
+                        nav.getCurrentState() == mrpt::nav::CAbstractNavigator::IDLE)) {
+                report.outcome = Outcome::NavigatorGaveUp;
+                report.detail = robot.gave_up.empty() ? "navigator stopped" : robot.gave_up;
+            } else if (steps >= max_steps) {
+                report.outcome = Outcome::Timeout;
+            } else {
+                report.outcome = Outcome::Timeout;  // provisional: still running
+                report.detail.clear();
+            }
+            const bool finished = c.distance <= 0.0 || report.outcome == Outcome::Goal ||
+                                  report.outcome == Outcome::NavigatorGaveUp || steps >= max_steps;
+
+            const auto tic = std::chrono::steady_clock::now();
+            if (!finished) {
+                // The LiDAR's true pose, its scan, TRAVEL levelled with the robot attitude.
+                Eigen::Isometry3d robot_pose = Eigen::Isometry3d::Identity();
+                robot_pose.linear() = R;
+                robot_pose.translation() = Eigen::Vector3d(p.x, p.y, z);
+                sim::LidarModel lidar = o.lidar;
+                sim::scan(world.scene, lidar, robot_pose * mount, scan);
+                // Attitude without yaw: Rz(-yaw) R (robot -> levelled, heading kept).
+                const double yaw_f = std::atan2(R(1, 0), R(0, 0));
+                input.vehicle_attitude =
+                    Eigen::AngleAxisd(-yaw_f, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
+                if (o.source == SourceKind::Travel) pipeline.process(scan.cloud, input, result);
+                frame.cloud = &scan.cloud;
+                frame.result = o.source == SourceKind::Travel ? &result : nullptr;
+                frame.alignedRotation = pipeline.aligned().rotation;
+                if (o.source != SourceKind::Travel)
+                    frame.alignedRotation = input.vehicle_attitude->cast<float>();
+                frame.robotOdometry = {p.x, p.y, p.phi};
+                frame.timestamp = simStamp(t);
+                source->update(frame);
+                travel_mrpt::ObstaclePoints handed;
+                source->latest(handed);
+                s.obstacles = handed.size();
+
+                nav.navigationStep();
+            }
+            wall_ms +=
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tic)
+                    .count();
+            report.trajectory.push_back(s);
+            if (finished) break;
+            sim.simulateOneTimeStep(o.dt);
+        }
+        report.time = sim.getTime();
+        report.max_height_gain = max_z - start_z;
+        report.mean_step_ms = steps > 0 ? wall_ms / steps : 0.0;
+        if (report.outcome == Outcome::Timeout)
+            report.detail = "no goal after " + std::to_string(o.timeout) + " s";
+    }  // the navigator closes its log here
+
+    if (!o.navlog_file.empty()) {
+        const fs::path produced = scratch.path / "log" / "log_000.reactivenavlog";
+        if (!fs::is_regular_file(produced))
+            throw std::runtime_error("the navigator wrote no log (expected " + produced.string() +
+                                     ")");
+        fs::copy_file(produced, o.navlog_file, fs::copy_options::overwrite_existing);
+    }
+    return report;
+}
+
+void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
+    const std::string part = path + ".part";
+    {
+        std::ofstream f(part);
+        if (!f) throw std::runtime_error(path + ": cannot write the trajectory CSV");
+        f << "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles\n";
+        char line[256];
+        for (const auto& s : r.trajectory) {
+            std::snprintf(line, sizeof line,
+                          "%.2f,%.3f,%.3f,%.3f,%.2f,%.2f,%.2f,%.3f,%.3f,%.3f,%zu\n", s.t, s.x, s.y,
+                          s.z, s.yaw * 180 / M_PI, s.roll * 180 / M_PI, s.pitch * 180 / M_PI, s.v,
+                          s.w, s.clearance, s.obstacles);
+            f << line;
+        }
+        if (!f) throw std::runtime_error(path + ": write error");
+    }
+    fs::rename(part, path);
+}
+
+}  // namespace travel::navsim

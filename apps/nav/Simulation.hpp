@@ -1,0 +1,93 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// One closed-loop run of travel-nav-sim: MRPT's CVehicleSimul_DiffDriven drives in x, y, yaw;
+// the robot's z, roll and pitch come from the terrain under its footprint (a least-squares
+// plane through the terrain heights at the footprint's corners and centre). Each step (dt):
+// ray-cast a scan from the LiDAR's true 3-D pose, run TRAVEL (levelled with the robot's
+// attitude, as an IMU would give it), update the obstacle source, run one step of
+// CReactiveNavigationSystem3D, advance the simulator, check the footprint against the world's
+// obstacles. A run ends on: the goal reached (within goal_tolerance), a collision (footprint
+// overlapping an obstacle), the navigator giving up (NAV_ERROR: target blocked, not
+// approaching it), or the timeout (simulated seconds).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "nav/World.hpp"
+#include "travel/Params.hpp"
+#include "travel/sim/SyntheticLidar.hpp"
+#include "travel_mrpt/ObstacleSource.hpp"
+#include "travel_mrpt/TravelObstacleSource.hpp"
+
+namespace travel::navsim {
+
+enum class SourceKind { Travel, Raw, Threshold };
+const char* toString(SourceKind kind);
+/// "travel", "raw", "threshold"; throws std::invalid_argument otherwise.
+SourceKind parseSourceKind(const std::string& name);
+
+enum class Outcome { Goal, Collision, NavigatorGaveUp, Timeout };
+const char* toString(Outcome outcome);
+
+struct SimOptions {
+    std::string nav_config_file;  ///< reactive navigator .ini (share/configs/nav/...)
+    SourceKind source = SourceKind::Travel;
+    double dt = 0.1;              ///< [s] one LiDAR sweep and one navigation step
+    double timeout = 60.0;        ///< [s] simulated time
+    double goal_tolerance = 0.4;  ///< [m] targetAllowedDistance of the navigation request
+    double sensor_height = 0.8;   ///< [m] LiDAR origin above the robot base, on its z axis
+    /// A 32-beam dome-like LiDAR (-45..+15 deg), 720 columns, 20 m: cheap and it sees the
+    /// ground from 0.8 m around the robot.
+    sim::LidarModel lidar = defaultLidar();
+    travel::Params travel;  ///< set by defaultTravelParams() unless overridden
+    travel_mrpt::TravelObstacleOptions travel_obstacles;
+    travel_mrpt::ObstacleMemoryOptions memory{1.0, 1.0};
+    double raw_min_z = 0.03;        ///< [m] raw source: noise margin above the robot's base
+    double threshold_min_z = 0.25;  ///< [m] height-threshold source
+    std::string navlog_file;        ///< write the navigator's .reactivenavlog here (empty: no)
+    bool verbose = false;           ///< navigator console output
+
+    static sim::LidarModel defaultLidar();
+    /// TRAVEL for this robot and LiDAR: sensor_height, ranges, 1 m cells, rings from the
+    /// elevation table, no object clustering (the navigator needs points, not clusters).
+    static travel::Params defaultTravelParams(const sim::LidarModel& lidar, double sensor_height);
+    SimOptions() : travel(defaultTravelParams(lidar, sensor_height)) {}
+};
+
+struct TrajectorySample {
+    double t = 0, x = 0, y = 0, z = 0, yaw = 0, roll = 0, pitch = 0;  ///< [s], [m], [rad]
+    double v = 0, w = 0;        ///< commanded-and-simulated speeds [m/s], [rad/s]
+    double clearance = 0;       ///< [m] footprint to the nearest obstacle
+    std::size_t obstacles = 0;  ///< points the source handed to the navigator
+};
+
+struct RunReport {
+    Outcome outcome = Outcome::Timeout;
+    std::string detail;  ///< what was hit, why the navigator gave up
+    double time = 0, path_length = 0;
+    double min_clearance = 1e9;  ///< [m] over the run
+    double final_goal_distance = 0;
+    double max_height_gain = 0;  ///< [m] highest terrain z reached minus the start's
+    double mean_step_ms = 0;     ///< wall time per step (scan + TRAVEL + navigation)
+    std::vector<TrajectorySample> trajectory;
+};
+
+/// Robot base pose on the terrain: x, y, yaw given; z, roll, pitch from the terrain plane
+/// under the footprint. Returns the rotation (robot -> world) and fills z.
+Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
+                                       const std::vector<Eigen::Vector2d>& footprint, double x,
+                                       double y, double yaw, double& z);
+
+/// The robot's footprint from the navigator config (LEVEL1_VECTORX/Y of
+/// [CReactiveNavigationSystem3D]); throws std::runtime_error naming the file.
+std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& nav_config_file);
+
+/// Runs one closed loop. Throws std::runtime_error on configuration errors.
+RunReport runSimulation(const World& world, const SimOptions& options);
+
+/// Writes the trajectory CSV (t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles).
+void writeTrajectoryCsv(const RunReport& report, const std::string& path);
+
+}  // namespace travel::navsim

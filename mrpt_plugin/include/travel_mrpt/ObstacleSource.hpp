@@ -1,0 +1,111 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Obstacle points for MRPT's reactive navigators (CRobot2NavInterface::senseObstacles()), from
+// one LiDAR frame at a time. A source turns a frame into robot-centric points (x forward, y left,
+// z up, metres) and hands them over to the navigator thread:
+//
+//   sensor thread:     source.update(frame);              // computes, then publishes
+//   navigator thread:  source.latest(points_map, stamp);  // copies the latest published set
+//
+// update() computes into a private buffer, then swaps it with the published one under a mutex:
+// the navigator never sees a half-written set, and neither side waits for the other's work.
+// Buffers are reused across frames (no allocation once warm).
+//
+// Optional short-term memory: obstacles of earlier frames are kept for `memory_seconds` while
+// they stay within `memory_radius` of the robot (moved with the robot's odometry), because a
+// LiDAR on a robot does not see the ground right around itself (below its lowest beam).
+#pragma once
+
+#include <mrpt/core/Clock.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "travel/PointCloud.hpp"
+#include "travel/Result.hpp"
+
+namespace mrpt::maps {
+class CSimplePointsMap;
+}
+
+namespace travel_mrpt {
+
+/// What a source needs from one LiDAR frame (pointers stay owned by the caller).
+struct ObstacleFrame {
+    const travel::PointCloud* cloud = nullptr;  ///< sensor frame
+    /// TRAVEL's result for `cloud` (labels + terrain in the aligned frame); null for sources
+    /// that do not use it.
+    const travel::Result* result = nullptr;
+    /// Rotation sensor -> aligned (levelled, heading-aligned, sensor-centred) frame, as used by
+    /// TRAVEL (TravelFrame::alignedRotation, AlignedCloud::rotation).
+    Eigen::Matrix3f alignedRotation = Eigen::Matrix3f::Identity();
+    /// Sensor pose on the robot (robot frame: origin on the ground under the robot, x forward).
+    Eigen::Isometry3f sensorOnRobot = Eigen::Isometry3f::Identity();
+    /// Robot pose in the odometry frame (x, y [m], yaw [rad]): moves the memory between frames.
+    Eigen::Vector3d robotOdometry = Eigen::Vector3d::Zero();
+    mrpt::Clock::time_point timestamp{};
+};
+
+/// Robot-centric obstacle points (structure of arrays).
+struct ObstaclePoints {
+    std::vector<float> x, y, z;
+    mrpt::Clock::time_point timestamp{};
+    std::size_t size() const { return x.size(); }
+    void clear() { x.clear(), y.clear(), z.clear(); }
+    void push_back(float px, float py, float pz) {
+        x.push_back(px), y.push_back(py), z.push_back(pz);
+    }
+};
+
+struct ObstacleMemoryOptions {
+    double memory_seconds = 0.0;  ///< [s] how long earlier obstacles are kept (0: no memory)
+    double memory_radius = 1.0;   ///< [m] ... while within this xy distance of the robot
+};
+
+class ObstacleSource {
+  public:
+    virtual ~ObstacleSource() = default;
+    /// Short name for logs and file names ("travel", "raw", "threshold").
+    virtual std::string name() const = 0;
+
+    void setMemory(const ObstacleMemoryOptions& memory);
+    const ObstacleMemoryOptions& memory() const { return memory_; }
+
+    /// Sensor side: computes the obstacles of `frame` and publishes them. Throws
+    /// std::invalid_argument when the frame lacks what the source needs (no cloud, no result
+    /// for the TRAVEL source, sizes that do not match).
+    void update(const ObstacleFrame& frame);
+
+    /// Navigator side: copies the latest published obstacles. False before the first update().
+    bool latest(ObstaclePoints& out) const;
+    /// Same, into the navigator's points map (cleared first); `stamp` in MRPT's TTimeStamp sense.
+    bool latest(mrpt::maps::CSimplePointsMap& out, mrpt::Clock::time_point& stamp) const;
+
+  protected:
+    /// Appends the obstacles of this frame (robot frame) to `out` (already cleared).
+    virtual void compute(const ObstacleFrame& frame, ObstaclePoints& out) = 0;
+
+  private:
+    struct Remembered {
+        mrpt::Clock::time_point stamp;
+        Eigen::Vector3d odometry;  // robot pose when seen
+        ObstaclePoints points;     // robot frame then
+    };
+    void addMemory(const ObstacleFrame& frame, ObstaclePoints& out);
+
+    ObstacleMemoryOptions memory_;
+    std::mutex update_mutex_;            // one update() at a time
+    ObstaclePoints work_;                // written by update() only
+    std::deque<Remembered> past_;        // written by update() only
+    std::vector<ObstaclePoints> spare_;  // recycled memory buffers
+    mutable std::mutex publish_mutex_;
+    ObstaclePoints published_;
+    bool has_published_ = false;
+};
+
+}  // namespace travel_mrpt

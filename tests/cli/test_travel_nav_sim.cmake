@@ -1,0 +1,41 @@
+# travel-nav-sim from the command line: a short run writes its three outputs into the working
+# directory; bad inputs fail with messages naming the culprit.
+include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
+
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+# A few simulated seconds on the small flat world, outputs in the current directory.
+execute_process(COMMAND ${TRAVEL_NAV_SIM} --world flat_obstacles.world --timeout 4
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "travel-nav-sim failed:\n${out}${err}")
+endif()
+foreach(f flat_obstacles_travel.csv flat_obstacles_travel.png flat_obstacles_travel.reactivenavlog)
+  if(NOT EXISTS ${WORK_DIR}/${f})
+    message(FATAL_ERROR "missing output ${f}:\n${out}${err}")
+  endif()
+endforeach()
+file(STRINGS ${WORK_DIR}/flat_obstacles_travel.csv rows)
+list(LENGTH rows n)
+list(GET rows 0 header)
+if(NOT header STREQUAL "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles" OR n LESS 30)
+  message(FATAL_ERROR "unexpected trajectory CSV (${n} rows, header '${header}')")
+endif()
+string(FIND "${out}" "travel    timeout" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "no per-run summary line:\n${out}")
+endif()
+file(GLOB leftovers ${WORK_DIR}/.travel-nav-sim-* ${WORK_DIR}/*.part)
+if(leftovers)
+  message(FATAL_ERROR "scratch files left behind: ${leftovers}")
+endif()
+
+# Errors name what is wrong.
+expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} --world ${WORK_DIR}/nowhere.world)
+expect_failure_mentioning("unknown obstacle source 'lidar'" ${TRAVEL_NAV_SIM} --source lidar
+  --world flat_obstacles.world)
+file(WRITE ${WORK_DIR}/bad.world "start 0 0 0\ngoal 5 0\npole 1 1 0.1\n")
+expect_failure_mentioning("bad.world:3" ${TRAVEL_NAV_SIM} --world ${WORK_DIR}/bad.world)
+expect_failure_mentioning("tgf_resolution" ${TRAVEL_NAV_SIM} --world flat_obstacles.world
+  --set tgf_resolution=-1)

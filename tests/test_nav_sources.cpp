@@ -1,0 +1,176 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// The obstacle sources on single scans of the default world, the thread-safe hand-over, the
+// world reader's errors and the collision check.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include "nav/Collision.hpp"
+#include "nav/Simulation.hpp"
+#include "nav/World.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel_mrpt/ObstacleSources.hpp"
+#include "travel_mrpt/TravelObstacleSource.hpp"
+
+using namespace travel::navsim;
+
+namespace {
+
+const std::string kShare = TRAVEL_SHARE_DIR_FOR_TESTS;
+
+struct Snapshot {
+    travel::sim::Scan scan;
+    travel::Result result;
+    travel_mrpt::ObstacleFrame frame;
+    std::unique_ptr<travel::Pipeline> pipeline;
+};
+
+/// One scan of `world` from the robot at (x, y, yaw), TRAVEL run on it, frame filled.
+void snapshot(const World& world, double x, double y, double yaw, Snapshot& s) {
+    SimOptions o;
+    const auto fp = footprintFromConfig(kShare + "/configs/nav/reactive3d_travel.ini");
+    double z = 0;
+    const Eigen::Matrix3d R = robotAttitudeOnTerrain(world.scene, fp, x, y, yaw, z);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = R;
+    pose.translation() = Eigen::Vector3d(x, y, z);
+    const Eigen::Isometry3d mount(Eigen::Translation3d(0, 0, o.sensor_height));
+    travel::sim::scan(world.scene, o.lidar, pose * mount, s.scan);
+    travel::FrameInput in;
+    const double yaw_f = std::atan2(R(1, 0), R(0, 0));
+    in.vehicle_attitude =
+        Eigen::AngleAxisd(-yaw_f, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
+    s.pipeline = std::make_unique<travel::Pipeline>(o.travel);
+    s.pipeline->process(s.scan.cloud, in, s.result);
+    s.frame.cloud = &s.scan.cloud;
+    s.frame.result = &s.result;
+    s.frame.alignedRotation = s.pipeline->aligned().rotation;
+    s.frame.sensorOnRobot = mount.cast<float>();
+}
+
+/// Obstacle points inside the robot-frame box [x0, x1] x [y0, y1].
+int countIn(const travel_mrpt::ObstaclePoints& p, double x0, double x1, double y0, double y1) {
+    int n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        n += p.x[i] >= x0 && p.x[i] <= x1 && p.y[i] >= y0 && p.y[i] <= y1;
+    return n;
+}
+
+}  // namespace
+
+// Robot at the foot of the ramp (x = 2.5 m, level, facing +x). The kerb (x 5.85..6.15,
+// y -0.25..1.25) is 3.35-3.65 m ahead; the ramp surface starts 0.5 m ahead.
+TEST(NavSources, TravelSeesTheKerbButNotTheRampRawSeesTheRamp) {
+    const World world = loadWorld(kShare + "/worlds/ramp_kerb.world");
+    Snapshot s;
+    snapshot(world, 2.5, 0.0, 0.0, s);
+
+    travel_mrpt::TravelObstacleSource travel_source;
+    travel_source.update(s.frame);
+    travel_mrpt::ObstaclePoints travel_points;
+    ASSERT_TRUE(travel_source.latest(travel_points));
+    const int travel_kerb = countIn(travel_points, 3.2, 3.8, -0.25, 1.25);
+    // The ramp surface ahead, beside the kerb (|y| < 3, away from kerb and walls).
+    const int travel_ramp =
+        countIn(travel_points, 0.5, 3.2, -3.0, 3.0) + countIn(travel_points, 3.8, 6.0, -3.0, 3.0);
+    auto raw = travel_mrpt::RobotFrameBandSource::raw();
+    raw->update(s.frame);
+    travel_mrpt::ObstaclePoints raw_points;
+    ASSERT_TRUE(raw->latest(raw_points));
+    const int raw_ramp = countIn(raw_points, 0.5, 3.2, -3.0, 3.0);
+    std::printf("travel: kerb %d, ramp %d points; raw: ramp %d points\n", travel_kerb, travel_ramp,
+                raw_ramp);
+    EXPECT_GE(travel_kerb, 20);
+    EXPECT_LE(travel_ramp, 10);
+    EXPECT_GE(raw_ramp, 500);  // the raw source sees the ramp as a wall
+    // TRAVEL's heights are above the local ground: the kerb's are within its 0.2 m (+ noise).
+    for (std::size_t i = 0; i < travel_points.size(); ++i)
+        if (travel_points.x[i] > 3.2 && travel_points.x[i] < 3.8 && travel_points.y[i] > -0.25 &&
+            travel_points.y[i] < 1.25) {
+            EXPECT_LT(travel_points.z[i], 0.35f);
+        }
+}
+
+TEST(NavSources, HandOverNeverShowsAHalfWrittenSet) {
+    // Frames whose points all share one z (k / 1000); a reader must always see a single z.
+    travel_mrpt::RobotFrameBandSource source("band", -10.0, 10.0);
+    std::atomic<bool> stop{false};
+    std::atomic<int> mixed{0}, reads{0};
+    std::thread reader([&] {
+        travel_mrpt::ObstaclePoints p;
+        while (!stop) {
+            if (!source.latest(p)) continue;
+            ++reads;
+            for (std::size_t i = 1; i < p.size(); ++i)
+                if (p.z[i] != p.z[0]) {
+                    ++mixed;
+                    break;
+                }
+        }
+    });
+    travel::PointCloud cloud;
+    travel_mrpt::ObstacleFrame frame;
+    frame.cloud = &cloud;
+    for (int k = 1; k <= 300; ++k) {
+        cloud.clear();
+        for (int i = 0; i < 500 + k; ++i) cloud.push_back(1.f + 0.01f * i, 0.f, k / 1000.f);
+        source.update(frame);
+    }
+    // Keep publishing the last frame until the reader has read a few sets (it may start late).
+    while (reads.load() < 20) source.update(frame);
+    stop = true;
+    reader.join();
+    EXPECT_EQ(mixed.load(), 0);
+    EXPECT_GT(reads.load(), 0);
+    travel_mrpt::ObstaclePoints last;
+    ASSERT_TRUE(source.latest(last));
+    EXPECT_EQ(last.size(), 800u);
+    EXPECT_FLOAT_EQ(last.z[0], 0.3f);
+}
+
+TEST(NavSources, TravelSourceRejectsAFrameWithoutResult) {
+    travel::PointCloud cloud;
+    cloud.push_back(1, 0, 0);
+    travel_mrpt::ObstacleFrame frame;
+    frame.cloud = &cloud;
+    travel_mrpt::TravelObstacleSource source;
+    EXPECT_THROW(source.update(frame), std::invalid_argument);
+    travel_mrpt::ObstaclePoints p;
+    EXPECT_FALSE(source.latest(p));
+}
+
+TEST(NavWorld, ErrorsNameFileLineAndExpectation) {
+    try {
+        parseWorld("start 0 0 0\ngoal 1 1\nbox 1 2 3\n", "w.world");
+        FAIL() << "no error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("w.world:3"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("X Y YAW_DEG LENGTH WIDTH HEIGHT"), std::string::npos);
+    }
+    EXPECT_THROW(parseWorld("start 0 0 0\n", "w.world"), std::runtime_error);  // no goal
+    EXPECT_THROW(parseWorld("start 0 0 x\ngoal 1 1\n", "w.world"), std::runtime_error);
+    EXPECT_THROW(parseWorld("start 0 0 0\ngoal 1 1\nteapot 1\n", "w.world"), std::runtime_error);
+    EXPECT_THROW(loadWorld("/nonexistent/x.world"), std::runtime_error);
+    const World w = parseWorld("start 1 2 90\ngoal 3 4\nkerb 5 0 90 2 0.3 0.2\n", "w.world");
+    ASSERT_EQ(w.obstacles.size(), 1u);
+    ASSERT_EQ(w.scene.steps.size(), 1u);
+    EXPECT_NEAR(w.start.z(), M_PI / 2, 1e-12);
+    // The kerb raises the terrain by 0.2 m inside its rectangle only.
+    EXPECT_NEAR(w.scene.terrainHeight(5.0, 0.9), 0.2, 1e-9);
+    EXPECT_NEAR(w.scene.terrainHeight(5.0, 1.1), 0.0, 1e-9);
+    EXPECT_NEAR(w.scene.terrainHeight(5.2, 0.0), 0.0, 1e-9);
+}
+
+TEST(NavCollision, FootprintDistances) {
+    const std::vector<Eigen::Vector2d> square = {
+        {0.3, -0.3}, {0.3, 0.3}, {-0.3, 0.3}, {-0.3, -0.3}};
+    const World w = parseWorld("start 0 0 0\ngoal 9 0\nbox 2 0 0 1 1 1\npole 0 -1 0.1 1\n", "w");
+    const Clearance at_start = clearance(placeFootprint(square, {0, 0, 0}), w);
+    EXPECT_NEAR(at_start.distance, 0.6, 1e-9);  // the pole: 1 - 0.3 - 0.1
+    EXPECT_EQ(at_start.nearest, "pole 1");
+    EXPECT_NEAR(clearance(placeFootprint(square, {1.0, 0, 0}), w).distance, 0.2, 1e-9);
+    EXPECT_EQ(clearance(placeFootprint(square, {1.3, 0, 0.3}), w).distance, 0.0);
+}
