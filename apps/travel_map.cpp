@@ -135,7 +135,7 @@ class Progress {
 };
 
 struct Stats {
-    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
+    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0, actions = 0;
     std::string pose_source;
 };
 
@@ -160,12 +160,16 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     auto archive = mrpt::serialization::archiveFrom(file);
     Progress progress(!o.quiet);
     const auto start = Clock::now();
-    CPose3D odometry_pose;  // integrated from SensoryFrame actions
-    bool have_odometry = false;
+    // Pose sources, by priority: the pose file, SensoryFrame actions (increments composed from
+    // the identity), the latest CObservationOdometry record.
+    CPose3D action_pose, odometry_pose;
+    bool have_actions = false, have_odometry = false;
     const auto insert = [&](const mrpt::obs::CObservation& obs) {
         std::optional<CPose3D> pose;
         if (pose_file)
             pose = pose_file->at(mrpt::Clock::toDouble(obs.timestamp), stats.lidar);
+        else if (have_actions)
+            pose = action_pose;
         else if (have_odometry)
             pose = odometry_pose;
         if (pose_file && !pose) {
@@ -200,27 +204,37 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
                 (stats.records == 0 ? " (is it an MRPT rawlog?)" : "") + ": " + what);
         }
         ++stats.records;
+        // One observation, at top level or inside a SensoryFrame: odometry and IMU feed the
+        // filter (motion, attitude), anything else is a LiDAR candidate.
+        const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
+            if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs)) {
+                odometry_pose = CPose3D(odo->odometry);
+                have_odometry = true;
+                map.filter().processOdometry(*odo);
+            } else if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(obs)) {
+                map.filter().processImu(*imu);
+            } else if (obs) {
+                insert(*obs);
+            }
+        };
         if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object)) {
             if (auto move = actions->getBestMovementEstimation()) {
-                odometry_pose = odometry_pose + CPose3D(move->poseChange->getMeanVal());
-                have_odometry = true;
+                action_pose = action_pose + CPose3D(move->poseChange->getMeanVal());
+                have_actions = true;
+                ++stats.actions;
             }
         } else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
-            for (const auto& obs : *sf) insert(*obs);
-        } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
-            odometry_pose = CPose3D(odo->odometry);
-            have_odometry = true;
-            map.filter().processOdometry(*odo);
-        } else if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(object)) {
-            map.filter().processImu(*imu);
+            for (const auto& obs : *sf) observation(obs);
         } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
-            insert(*obs);
+            observation(obs);
         }
         progress.update(stats.inserted, 0,
                         std::chrono::duration<double>(Clock::now() - start).count());
     }
     progress.done();
-    stats.pose_source = pose_file       ? "pose file " + o.poses
+    stats.pose_source = pose_file      ? "pose file " + o.poses
+                        : have_actions ? "odometry actions of the SensoryFrames (" +
+                                             std::to_string(stats.actions) + " increments)"
                         : have_odometry ? "odometry in the rawlog"
                                         : "none (identity poses)";
 }
@@ -331,6 +345,11 @@ int run(int argc, char** argv) {
         "Address-space ceiling in MiB (0 = none); a corrupt rawlog record that announces more "
         "is reported instead of exhausting memory",
         false, long(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
+    TCLAP::MultiArg<std::string> probe(
+        "", "probe",
+        "Print the state of the grid cell at world X,Y after mapping (repeatable; a line "
+        "'probe X,Y: traversable|obstacle|unknown|outside', also with -q)",
+        false, "X,Y", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary", cmd);
     if (auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
 
@@ -345,6 +364,14 @@ int run(int argc, char** argv) {
     o.calib = calib.getValue();
     o.max_frames = max_frames.getValue();
     o.quiet = quiet.getValue();
+    std::vector<std::pair<double, double>> probes;
+    for (const std::string& text : probe.getValue()) {
+        double x = 0, y = 0;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
+            throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
+        probes.emplace_back(x, y);
+    }
     if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
         throw std::runtime_error("--max-memory must be 0 (no limit) or at least 256 MiB");
     if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
@@ -423,6 +450,11 @@ int run(int argc, char** argv) {
         std::printf("  time: mapping %.2f s (%.1f ms per frame), exports %.2f s\n", map_seconds,
                     1000.0 * map_seconds / double(stats.inserted), export_seconds);
         for (const auto& path : written) std::printf("  wrote %s\n", path.c_str());
+    }
+    for (const auto& [x, y] : probes) {
+        const long cell = map.grid().cellIndex(x, y);
+        std::printf("probe %g,%g: %s\n", x, y,
+                    cell < 0 ? "outside" : travel_mrpt::toString(map.state(cell)));
     }
     return 0;
 }

@@ -3,6 +3,7 @@
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
@@ -225,6 +226,7 @@ SyntheticRawlog makeSyntheticRawlog(const SyntheticRawlogOptions& o) {
                 truth.points.time.push_back(scan.cloud.time[p]);
             }
         out.truth.push_back(std::move(truth));
+        out.frame_poses.push_back(trajectory.robotPose(t0));
         timed.push_back({t0, 1, obs});
     }
 
@@ -288,18 +290,46 @@ void writeRawlog(const SyntheticRawlog& rawlog, const std::string& path) {
     file.close();
 }
 
-void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path) {
+namespace {
+
+/// Planar (x, y, yaw) part of a 3-D robot pose.
+mrpt::poses::CPose2D planar(const Eigen::Isometry3d& T) {
+    return mrpt::poses::CPose2D(T.translation().x(), T.translation().y(),
+                                std::atan2(T.linear()(1, 0), T.linear()(0, 0)));
+}
+
+}  // namespace
+
+void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path,
+                             bool odometry_actions) {
+    if (odometry_actions && rawlog.frame_poses.size() != rawlog.truth.size())
+        throw std::invalid_argument("writeSensoryFrameRawlog: odometry actions need frame_poses");
     mrpt::io::CFileGZOutputStream file;
     if (!file.open(path)) throw std::runtime_error("cannot write rawlog '" + path + "'");
     auto archive = mrpt::serialization::archiveFrom(file);
     mrpt::obs::CSensoryFrame frame;
     const mrpt::obs::CActionCollection no_actions;
+    std::size_t lidar_frame = 0;
+    mrpt::poses::CPose2D previous;  // the odometer's zero: the world origin
     for (const auto& record : rawlog.records) {
         auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(record);
         if (!obs) continue;
         frame.insert(obs);
         if (dynamic_cast<const mrpt::obs::CObservationRotatingScan*>(obs.get())) {
-            archive << no_actions << frame;
+            if (odometry_actions) {
+                const mrpt::poses::CPose2D now = planar(rawlog.frame_poses[lidar_frame]);
+                mrpt::obs::CActionRobotMovement2D move;
+                move.timestamp = obs->timestamp;
+                move.computeFromOdometry(now - previous,
+                                         mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+                mrpt::obs::CActionCollection actions;
+                actions.insert(move);
+                archive << actions << frame;
+                previous = now;
+            } else {
+                archive << no_actions << frame;
+            }
+            ++lidar_frame;
             frame.clear();
         }
     }

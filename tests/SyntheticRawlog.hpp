@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -59,6 +60,9 @@ struct FrameTruth {
 struct SyntheticRawlog {
     std::vector<std::shared_ptr<mrpt::serialization::CSerializable>> records;  ///< time order
     std::vector<FrameTruth> truth;  ///< one per LiDAR record, in record order
+    /// True robot pose (world) at each LiDAR record's timestamp (start of its sweep), in
+    /// record order.
+    std::vector<Eigen::Isometry3d> frame_poses;
 };
 
 /// The street the robot drives through (starts at (-20, 0) heading +x).
@@ -70,9 +74,15 @@ SyntheticRawlog makeSyntheticRawlog(const SyntheticRawlogOptions& options = {});
 /// naming the path on failure.
 void writeRawlog(const SyntheticRawlog& rawlog, const std::string& path);
 
-/// Writes the records in the "SensoryFrame" format (gz): per LiDAR frame, an empty
-/// CActionCollection then one CSensoryFrame holding the IMU / odometry records since the previous
-/// frame and the LiDAR observation. Throws std::runtime_error naming the path on failure.
-void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path);
+/// Writes the records in the "SensoryFrame" format (gz): per LiDAR frame, a CActionCollection
+/// then one CSensoryFrame holding the IMU / odometry records since the previous frame and the
+/// LiDAR observation. Throws std::runtime_error naming the path on failure.
+/// The CActionCollection is empty unless `odometry_actions`; then it holds one
+/// CActionRobotMovement2D (Gaussian odometry model) with the planar pose increment of the true
+/// trajectory since the previous LiDAR frame; the first one carries the increment from the
+/// odometer's zero (the world origin) to the first frame, so composing the increments gives the
+/// planar world poses of frame_poses (x, y, yaw), as the CObservationOdometry records do.
+void writeSensoryFrameRawlog(const SyntheticRawlog& rawlog, const std::string& path,
+                             bool odometry_actions = false);
 
 }  // namespace travel_test

@@ -1,8 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// make_synthetic_rawlog OUT.rawlog [FRAMES] [--sensory-frames]: writes the moving, tilted robot
-// rawlog of SyntheticRawlog.hpp (VLP-16 rotating scans + IMU + odometry), for command-line tests,
-// in the observations format (default) or the SensoryFrame format.
+// make_synthetic_rawlog OUT.rawlog [FRAMES] [--sensory-frames | --odometry-actions]: writes the
+// moving, tilted robot rawlog of SyntheticRawlog.hpp (VLP-16 rotating scans + IMU + odometry),
+// for command-line tests, in the observations format (default) or the SensoryFrame format
+// (empty actions; with --odometry-actions each CActionCollection holds a
+// CActionRobotMovement2D with the true planar pose increment since the previous LiDAR frame).
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -11,13 +13,18 @@
 #include "SyntheticRawlog.hpp"
 
 int main(int argc, char** argv) {
-    bool sensory_frames = false;
+    bool sensory_frames = false, odometry_actions = false;
     if (argc >= 3 && std::string(argv[argc - 1]) == "--sensory-frames") {
         sensory_frames = true;
         --argc;
+    } else if (argc >= 3 && std::string(argv[argc - 1]) == "--odometry-actions") {
+        sensory_frames = odometry_actions = true;
+        --argc;
     }
     if (argc < 2 || argc > 3) {
-        std::fprintf(stderr, "usage: %s OUT.rawlog [FRAMES (default 10)] [--sensory-frames]\n",
+        std::fprintf(stderr,
+                     "usage: %s OUT.rawlog [FRAMES (default 10)] [--sensory-frames | "
+                     "--odometry-actions]\n",
                      argv[0]);
         return 2;
     }
@@ -35,7 +42,7 @@ int main(int argc, char** argv) {
         }
         const travel_test::SyntheticRawlog rawlog = travel_test::makeSyntheticRawlog(options);
         if (sensory_frames)
-            travel_test::writeSensoryFrameRawlog(rawlog, argv[1]);
+            travel_test::writeSensoryFrameRawlog(rawlog, argv[1], odometry_actions);
         else
             travel_test::writeRawlog(rawlog, argv[1]);
         std::printf("%s: %zu records (%d LiDAR frames)\n", argv[1], rawlog.records.size(),

@@ -14,6 +14,9 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kDegToRad = 3.14159265358979f / 180.f;
+constexpr uint32_t kStepReferencePoints = 2;  ///< ground points a step reference cell needs
+constexpr int kStepRadius = 2;                ///< [cells] neighbourhood of the step rule
+constexpr float kMaxPairDistance = 4.f;       ///< [cells] farthest pair of the step rule
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw travel::ConfigError(what);
@@ -53,6 +56,8 @@ void GridFusionParams::validate() const {
     require(min_step_points >= 2, "min_step_points: must be >= 2");
     require(std::isfinite(max_step_height) && max_step_height > 0,
             "max_step_height: must be > 0 [m]");
+    require(std::isfinite(max_neighbour_step) && max_neighbour_step >= 0,
+            "max_neighbour_step: must be >= 0 [m] (0 = off)");
     require(max_slope_deg > 0 && max_slope_deg < 90, "max_slope_deg: must be in (0, 90) [deg]");
 }
 
@@ -168,11 +173,74 @@ std::size_t TraversabilityGrid::endFrame(double time_s, const GridFusionParams& 
     return updated;
 }
 
+bool TraversabilityGrid::stepReference(long cell, const GridFusionParams& fusion) const {
+    return ground_count_[cell] >= kStepReferencePoints && logodds_[cell] < fusion.free_threshold;
+}
+
+float TraversabilityGrid::neighbourStep(long cell, const GridFusionParams& fusion) const {
+    if (cell < 0 || std::size_t(cell) >= logodds_.size()) return 0.f;
+    const int ix = int(cell % size_x_), iy = int(cell / size_x_);
+    const float r = float(geometry_.resolution);
+    const float max_slope = std::min(fusion.max_slope_deg, 80.f);
+    // The rise a slope explains over `distance` cells: the mean terrain-model slope of the two
+    // cells (capped at max_slope_deg: a steeper slope is not traversable anyway), so that a
+    // ramp's foot and top (a flat and a sloped cell) are not steps.
+    const auto rise = [&](long a, long b, float distance) {
+        float slope = 0.5f * (slopeDeg(a) + slopeDeg(b));
+        if (!std::isfinite(slope)) slope = 0.f;
+        return distance * r * std::tan(std::clamp(slope, 0.f, max_slope) * kDegToRad);
+    };
+    // Reference cells within kStepRadius cells (Chebyshev), with their offsets.
+    struct Ref {
+        long cell;
+        int dx, dy;
+    };
+    Ref refs[(2 * kStepRadius + 1) * (2 * kStepRadius + 1)];
+    int count = 0;
+    for (int dy = -kStepRadius; dy <= kStepRadius; ++dy)
+        for (int dx = -kStepRadius; dx <= kStepRadius; ++dx) {
+            const int x = ix + dx, y = iy + dy;
+            if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= size_x_ || y >= size_y_) continue;
+            const long n = cellIndex(x, y);
+            if (stepReference(n, fusion)) refs[count++] = {n, dx, dy};
+        }
+    const bool own = stepReference(cell, fusion);
+    const float h = ground_mean_[cell];
+    float step = 0.f;
+    for (int i = 0; i < count; ++i) {
+        const Ref& a = refs[i];
+        // This cell and a reference: the edge lies between them.
+        if (own && std::abs(a.dx) + std::abs(a.dy) == 1)
+            step = std::max(step, std::abs(h - ground_mean_[a.cell]) -
+                                      rise(cell, a.cell, std::hypot(float(a.dx), float(a.dy))));
+        // Two references on opposite sides of this cell: the edge lies inside this cell when
+        // its own height is between theirs (a cell holding both levels) or it has no ground.
+        for (int j = i + 1; j < count; ++j) {
+            const Ref& b = refs[j];
+            const float dot = float(a.dx * b.dx + a.dy * b.dy);
+            const float la = std::hypot(float(a.dx), float(a.dy));
+            const float lb = std::hypot(float(b.dx), float(b.dy));
+            if (dot > -0.9f * la * lb) continue;  // not on opposite sides (within ~25 deg)
+            const float lo = std::min(ground_mean_[a.cell], ground_mean_[b.cell]);
+            const float hi = std::max(ground_mean_[a.cell], ground_mean_[b.cell]);
+            constexpr float kTolerance = 0.02f;  // [m]
+            if (ground_count_[cell] > 0 && (h < lo - kTolerance || h > hi + kTolerance)) continue;
+            const float dist = std::hypot(float(a.dx - b.dx), float(a.dy - b.dy));
+            if (dist > kMaxPairDistance) continue;
+            step = std::max(step, (hi - lo) - rise(a.cell, b.cell, dist));
+        }
+    }
+    return step;
+}
+
 CellState TraversabilityGrid::state(long cell, const GridFusionParams& fusion) const {
     if (cell < 0 || std::size_t(cell) >= logodds_.size() || frames_seen_[cell] == 0)
         return CellState::Unknown;
     const float l = logodds_[cell];
     if (l > fusion.obstacle_threshold) return CellState::Obstacle;
+    // A step between the fused ground of the neighbours (across frames) on this cell's edges.
+    if (fusion.max_neighbour_step > 0 && neighbourStep(cell, fusion) > fusion.max_neighbour_step)
+        return CellState::Obstacle;
     if (l >= fusion.free_threshold) return CellState::Unknown;
     if (step_height_[cell] > fusion.max_step_height) return CellState::Obstacle;
     const float slope = slopeDeg(cell);

@@ -57,6 +57,7 @@ const std::vector<Key>& keys() {
         TRAVEL_MAP_KEY("min_obstacle_points", fusion.min_obstacle_points, true, int),
         TRAVEL_MAP_KEY("min_step_points", fusion.min_step_points, true, int),
         TRAVEL_MAP_KEY("max_step_height", fusion.max_step_height, false, float),
+        TRAVEL_MAP_KEY("max_neighbour_step", fusion.max_neighbour_step, false, float),
         TRAVEL_MAP_KEY("max_slope_deg", fusion.max_slope_deg, false, float),
     };
     return list;

@@ -36,6 +36,22 @@ foreach(word "LiDAR frames mapped: 10" "poses: odometry in the rawlog" "occupied
   endif()
 endforeach()
 
+# The same drive in the SensoryFrame format with CActionRobotMovement2D odometry actions (true
+# planar increments) and no pose file: poses from the actions; the road is traversable and the
+# south wall (y = -11) an obstacle where the scene has them.
+expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street_sf.rawlog --odometry-actions)
+expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street_sf.rawlog -o ${WORK_DIR}/street_sf
+  --set preset=vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20"
+  --probe " 2,0" --probe " -25,3" --probe " -20,-11")
+expect_exports(${WORK_DIR}/street_sf street_sf)
+foreach(word "LiDAR frames mapped: 10" "poses: odometry actions of the SensoryFrames (10 increments)"
+        "probe 2,0: traversable" "probe -25,3: traversable" "probe -20,-11: obstacle")
+  string(FIND "${last_output}" "${word}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "SensoryFrame/actions summary lacks '${word}':\n${last_output}")
+  endif()
+endforeach()
+
 # The same rawlog with a TUM pose file (robot standing still at x = 1): used instead.
 file(WRITE ${WORK_DIR}/tum.txt
   "# t x y z qx qy qz qw\n999999999.5 1 0 0 0 0 0 1\n1000000000.5 1 0 0 0 0 0 1\n1000000001.5 1 0 0 0 0 0 1\n")
@@ -84,6 +100,8 @@ expect_failure_mentioning("unknown key 'colour'" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --set colour=red)
 expect_failure_mentioning("--extent" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 1,2,3)
+expect_failure_mentioning("--probe" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --probe 1)
 expect_failure_mentioning("min_x" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 5,1,0,1)
 message(STATUS "travel-map CLI: all checks passed")

@@ -42,8 +42,16 @@ struct GridFusionParams {
     float free_threshold = -0.3f;     ///< log-odds below this: ground (traversable if flat)
     int min_obstacle_points = 2;      ///< obstacle points a cell needs in one frame to count
     int min_step_points = 4;          ///< ground points a cell needs in one frame for a step
-    float max_step_height = 0.1f;     ///< [m] a larger step inside a cell: not traversable
-    float max_slope_deg = 20.0f;      ///< [deg] a steeper terrain model: not traversable
+    /// [m] a larger step inside a cell or between neighbouring cells' fused ground: not
+    /// traversable. 0.1 m: what outdoor (class C, EN 12184) powered wheelchairs and typical
+    /// small wheeled robots are built to climb; a 0.15 m kerb is not climbable.
+    float max_step_height = 0.1f;
+    float max_slope_deg = 20.0f;  ///< [deg] a steeper terrain model: not traversable
+    /// [m] a larger step between the fused ground heights of neighbouring cells (across frames,
+    /// see TraversabilityGrid::neighbourStep): not traversable. 0 = off, the default: pose and
+    /// attitude errors between frames make such differences unreliable on a moving, tilting
+    /// robot; set it (e.g. to max_step_height) for well-registered maps.
+    float max_neighbour_step = 0.0f;
 
     /// Throws travel::ConfigError on inconsistent values (naming the key).
     void validate() const;
@@ -97,6 +105,15 @@ class TraversabilityGrid {
     float slopeDeg(long cell) const;
     /// Largest step seen inside the cell in one frame [m] (0 if never measured).
     float stepHeight(long cell) const { return step_height_[cell]; }
+    /// Largest step [m] on the cell's edges from the ground heights fused over all frames,
+    /// against the "reference" cells within 2 cells (>= 2 ground points, log-odds below
+    /// free_threshold): |height difference| between this cell (if a reference) and a
+    /// 4-neighbour reference; and between two references on opposite sides of this cell (at
+    /// most 4 cells apart) when this cell's own height lies between theirs or it has no ground
+    /// (the edge runs through the cell). Each minus the rise the pair's mean terrain-model slope
+    /// explains over their distance, so a ramp is not a step. state() makes an observed cell
+    /// with a step > max_step_height an obstacle.
+    float neighbourStep(long cell, const GridFusionParams& fusion) const;
     /// Time of the last frame that updated the cell [s, MRPT clock] (0 = never).
     double lastSeen(long cell) const { return last_seen_[cell]; }
 
@@ -135,6 +152,8 @@ class TraversabilityGrid {
     std::vector<long> frame_touched_;
     std::vector<FrameCell> frame_cells_;
     FrameCell& frameCell(long cell);
+    /// The cell's fused ground height can serve as a step reference (see neighbourStep()).
+    bool stepReference(long cell, const GridFusionParams& fusion) const;
 };
 
 }  // namespace travel_mrpt

@@ -27,6 +27,8 @@
 //   min_step_points             [-]    ground points a cell needs in one frame for a step (4)
 //   max_step_height             [m]    larger step inside a cell: not traversable (0.1)
 //   max_slope_deg               [deg]  steeper terrain model: not traversable (20)
+//   max_neighbour_step          [m]    larger step between neighbouring cells' fused ground
+//                                      heights: not traversable (0 = off)
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
