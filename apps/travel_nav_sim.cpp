@@ -62,11 +62,17 @@ int run(int argc, char** argv) {
         "", "threshold", "Height-threshold source: min height [m]", false, 0.25, "M", cmd);
     TCLAP::MultiArg<std::string> set_arg("", "set", "TRAVEL parameter override key=value", false,
                                          "KEY=VALUE", cmd);
+    TCLAP::ValueArg<unsigned> seed_arg(
+        "", "seed",
+        "Move the world's kerbs and boxes by a seeded random shift (up to +/-0.3 m; 0: as in "
+        "the file)",
+        false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
     TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output", cmd);
     if (const auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
 
-    const World world = loadWorld(findShared(world_arg.getValue(), "worlds"));
+    const World world = shiftedObstacles(loadWorld(findShared(world_arg.getValue(), "worlds")),
+                                         seed_arg.getValue());
     const std::string config = findShared(config_arg.getValue(), "configs/nav");
     std::vector<SourceKind> sources;
     if (source_arg.getValue() == "all")
@@ -101,10 +107,11 @@ int run(int argc, char** argv) {
         renderTopView(world, footprint, &r, view, img);
         travel_mrpt::savePicture(img, stem + ".png");
         std::printf(
-            "  %-9s %-17s time %5.1f s  path %5.2f m  min clearance %.2f m  climbed %.2f m"
+            "  %-9s %-17s time %5.1f s  path %5.2f m  min clearance %.2f m (%s)  climbed %.2f m"
             "  %.1f ms/step%s%s\n",
             toString(kind), toString(r.outcome), r.time, r.path_length, r.min_clearance,
-            r.max_height_gain, r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
+            r.min_clearance_to.empty() ? "-" : r.min_clearance_to.c_str(), r.max_height_gain,
+            r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
         std::cout << "    outputs: " << stem << ".{csv,png"
                   << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}\n";
         panels.push_back(std::move(img));

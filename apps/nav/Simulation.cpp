@@ -9,8 +9,10 @@
 #include <mrpt/system/filesystem.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -132,6 +134,13 @@ std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& file) {
 
 namespace {
 
+/// "60 s", "2.5 s": no trailing zeros.
+std::string formatSeconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g s", s);
+    return buf;
+}
+
 /// Simulated clock: every timestamp the navigator sees is start + simulated seconds.
 mrpt::Clock::time_point simStamp(double t) {
     return mrpt::Clock::fromDouble(1.7e9 + t);
@@ -189,6 +198,21 @@ std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
     return s;
 }
 
+/// The navigator, with its delay-statistics logger reachable: MRPT's CAbstractNavigator dumps
+/// that CTimeLogger's table at INFO level when it is destroyed.
+class Navigator : public mrpt::nav::CReactiveNavigationSystem3D {
+  public:
+    using CReactiveNavigationSystem3D::CReactiveNavigationSystem3D;
+    /// Only errors on the console (navigator, its time loggers, the robot interface).
+    void quiet(mrpt::system::COutputLogger& robot) {
+        setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        m_timlog_delays.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        m_navProfiler.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        m_timelogger.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        robot.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    }
+};
+
 /// A scratch directory for the navigator's own files (PTG caches, its log), removed on exit.
 struct ScratchDir {
     fs::path path;
@@ -224,9 +248,8 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
     SimRobot robot(sim, *source);
     RunReport report;
     {
-        mrpt::nav::CReactiveNavigationSystem3D nav(robot, o.verbose, !o.navlog_file.empty(),
-                                                   (scratch.path / "log").string());
-        if (!o.verbose) nav.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        Navigator nav(robot, o.verbose, !o.navlog_file.empty(), (scratch.path / "log").string());
+        if (!o.verbose) nav.quiet(robot);
         {
             mrpt::config::CConfigFile cfg(o.nav_config_file);
             nav.loadConfigFile(cfg);
@@ -272,7 +295,10 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
             s.v = vel.vx, s.w = vel.omega, s.clearance = c.distance;
             report.path_length += (Eigen::Vector2d(p.x, p.y) - last_xy).norm();
             last_xy = {p.x, p.y};
-            report.min_clearance = std::min(report.min_clearance, c.distance);
+            if (c.distance < report.min_clearance) {
+                report.min_clearance = c.distance;
+                report.min_clearance_to = c.nearest;
+            }
             report.final_goal_distance = (Eigen::Vector2d(p.x, p.y) - world.goal).norm();
 
             if (c.distance <= 0.0) {
@@ -332,7 +358,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         report.max_height_gain = max_z - start_z;
         report.mean_step_ms = steps > 0 ? wall_ms / steps : 0.0;
         if (report.outcome == Outcome::Timeout)
-            report.detail = "no goal after " + std::to_string(o.timeout) + " s";
+            report.detail = "no goal after " + formatSeconds(o.timeout);
     }  // the navigator closes its log here
 
     if (!o.navlog_file.empty()) {

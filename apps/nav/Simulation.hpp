@@ -67,7 +67,8 @@ struct RunReport {
     Outcome outcome = Outcome::Timeout;
     std::string detail;  ///< what was hit, why the navigator gave up
     double time = 0, path_length = 0;
-    double min_clearance = 1e9;  ///< [m] over the run
+    double min_clearance = 1e9;    ///< [m] over the run
+    std::string min_clearance_to;  ///< the obstacle nearest then ("kerb 1", ...)
     double final_goal_distance = 0;
     double max_height_gain = 0;  ///< [m] highest terrain z reached minus the start's
     double mean_step_ms = 0;     ///< wall time per step (scan + TRAVEL + navigation)

@@ -123,19 +123,23 @@ void renderTopView(const World& world, const std::vector<Eigen::Vector2d>& footp
         outline(img, view, placeFootprint(footprint, {last.x, last.y, last.yaw}), end, 3);
     }
 
-    // Caption: title, then the outcome.
+    // Caption: title, the outcome, the numbers, the detail; each line cut to the picture's width
+    // (MRPT's default font: 9 px per character).
     int line_y = 4;
-    const auto text = [&](const std::string& s, const TColor& colour) {
-        img.filledRectangle(2, line_y - 2, 8 + 7 * static_cast<int>(s.size()), line_y + 12,
-                            TColor(255, 255, 255));
+    const std::size_t max_chars = static_cast<std::size_t>(std::max(4, (w - 10) / 9));
+    const auto text = [&](std::string s, const TColor& colour) {
+        if (s.size() > max_chars) s = s.substr(0, max_chars - 2) + "..";
+        img.filledRectangle(2, line_y - 2, std::min(w - 1, 8 + 9 * static_cast<int>(s.size())),
+                            line_y + 12, TColor(255, 255, 255));
         img.textOut(5, line_y, s, colour);
         line_y += 16;
     };
     if (!opt.title.empty()) text(opt.title, TColor(0, 0, 0));
     if (report != nullptr) {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "%s after %.1f s, path %.1f m, min clearance %.2f m",
-                      toString(report->outcome), report->time, report->path_length,
+        std::snprintf(buf, sizeof buf, "%s after %.1f s", toString(report->outcome), report->time);
+        text(buf, TColor(0, 0, 0));
+        std::snprintf(buf, sizeof buf, "path %.1f m, min clearance %.2f m", report->path_length,
                       report->min_clearance);
         text(buf, TColor(0, 0, 0));
         if (!report->detail.empty()) text(report->detail, TColor(90, 90, 90));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -197,6 +198,24 @@ World loadWorld(const std::string& path) {
     text << f.rdbuf();
     if (f.bad()) throw std::runtime_error(path + ": read error");
     return parseWorld(text.str(), path);
+}
+
+World shiftedObstacles(const World& world, unsigned seed, double amplitude) {
+    World w = world;
+    if (seed == 0) return w;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> d(-amplitude, amplitude);
+    const Eigen::Vector2d kerb_shift(d(rng), d(rng));
+    const Eigen::Vector2d box_shift(d(rng), d(rng));
+    for (auto& o : w.obstacles) {
+        const bool kerb = o.what.rfind("kerb", 0) == 0, box = o.what.rfind("box", 0) == 0;
+        if (!kerb && !box) continue;
+        for (auto& p : o.polygon) p += kerb ? kerb_shift : box_shift;
+    }
+    for (std::size_t k : w.kerb_steps) w.scene.steps[k].start += kerb_shift;
+    for (auto& b : w.scene.boxes) b.centre += box_shift;
+    w.name += "_seed" + std::to_string(seed);
+    return w;
 }
 
 Eigen::Vector4d worldExtent(const World& w) {

@@ -54,6 +54,10 @@ struct World {
 World parseWorld(const std::string& text, const std::string& source_name);
 /// Reads and parses a file; throws std::runtime_error naming the file.
 World loadWorld(const std::string& path);
+/// A seeded variant of `world` (seed 0: unchanged): every kerb moved by one random xy shift and
+/// every box by another, each coordinate uniform in [-amplitude, amplitude] (std::mt19937).
+/// Moves the kerbs' terrain steps and the boxes the LiDAR sees along with their obstacles.
+World shiftedObstacles(const World& world, unsigned seed, double amplitude = 0.3);
 /// The picture extent: `bounds`, or everything in the world plus a margin.
 Eigen::Vector4d worldExtent(const World& world);
 

@@ -52,10 +52,11 @@ TravelObstacleSource::TravelObstacleSource(const TravelObstacleOptions& options)
 
 void TravelObstacleSource::setOptions(const TravelObstacleOptions& o) {
     if (!(o.max_step_height >= 0) || !(o.max_height > 0) || !(o.report_floor >= 0.01) ||
-        !(o.ground_search_radius >= 0))
+        !(o.ground_search_radius >= 0) || !(o.step_min_spread >= 0))
         throw std::invalid_argument(
             "TravelObstacleSource: need max_step_height >= 0, max_height > 0, report_floor >= "
-            "0.01 m (the navigator drops lower points), ground_search_radius >= 0");
+            "0.01 m (the navigator drops lower points), ground_search_radius >= 0, step_min_spread "
+            ">= 0");
     options_ = o;
 }
 
@@ -94,14 +95,35 @@ void TravelObstacleSource::findSteps(const TerrainModel& t) {
     step_height_.assign(t.nodes.size(), 0.f);
     const int side = t.cells_per_side;
     const float h = 0.5f * t.resolution, limit = static_cast<float>(options_.max_step_height);
-    // Each node's OWN plane (TTMF smooths steps away) at the midpoint of a shared edge.
+    // A plane through one ring's arc (a line) or a small patch is only known there: its tilt
+    // across is an assumption (TRAVEL levels line nodes) or noise.
+    const float min_l2 = static_cast<float>(options_.step_min_spread * options_.step_min_spread);
+    const auto spread = [&](const TriNode& n) { return n.eigenvalues.y() >= min_l2; };
+    // Each node's OWN plane (TTMF smooths steps away). A step of a over b must show three
+    // times: a's plane above b's at the midpoint of their shared edge (where both planes meet
+    // on a bend, such as the foot of a ramp), a's seen ground (its mean) above b's plane, and
+    // b's seen ground below a's plane. A plane is only known where its points are: a node
+    // that the LiDAR sees in a small patch (next to the blind zone around the robot, or beside
+    // a kerb's shadow) gets a tilt from noise, and that plane extrapolated to the edge can
+    // stand 0.15 m off the true slope; the seen-ground measures, which use the other node's
+    // plane at this node's own points, veto such steps.
     const auto compare = [&](int a, int b, float x, float y) {
         const TriNode &na = t.nodes[a], &nb = t.nodes[b];
-        if (!isGround(na) || !isGround(nb)) return;
-        const float dz = travel::planeHeightAt(na.normal, na.d, x, y) -
-                         travel::planeHeightAt(nb.normal, nb.d, x, y);
-        if (dz > limit) step_height_[a] = std::max(step_height_[a], dz);
-        if (-dz > limit) step_height_[b] = std::max(step_height_[b], -dz);
+        if (!isGround(na) || !isGround(nb) || !spread(na) || !spread(nb)) return;
+        const float edge = travel::planeHeightAt(na.normal, na.d, x, y) -
+                           travel::planeHeightAt(nb.normal, nb.d, x, y);
+        if (!(std::fabs(edge) > limit)) return;
+        const float a_over_b =
+            na.mean.z() - travel::planeHeightAt(nb.normal, nb.d, na.mean.x(), na.mean.y());
+        const float b_under_a =
+            travel::planeHeightAt(na.normal, na.d, nb.mean.x(), nb.mean.y()) - nb.mean.z();
+        if (edge > 0.f) {
+            const float dz = std::min({edge, a_over_b, b_under_a});
+            if (dz > limit) step_height_[a] = std::max(step_height_[a], dz);
+        } else {
+            const float dz = std::min({-edge, -a_over_b, -b_under_a});
+            if (dz > limit) step_height_[b] = std::max(step_height_[b], dz);
+        }
     };
     // Corners between triangle k and k + 1 (east/north, north/west, west/south, south/east).
     static constexpr float kCorner[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};

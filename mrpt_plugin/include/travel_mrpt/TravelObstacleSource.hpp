@@ -10,7 +10,11 @@
 //     higher than report_floor above the local ground;
 //   - ground of a traversable node whose plane is more than max_step_height above a
 //     neighbouring traversable node's plane at their shared edge (a step or kerb whose top
-//     TRAVEL accepted as terrain), at z = that step height.
+//     TRAVEL accepted as terrain), at z = that step height. The step must also show in the
+//     seen ground (each node's mean point against the other node's plane), and both nodes'
+//     points must spread at least step_min_spread across: a plane fitted to one ring's arc or
+//     to a small patch (at the edge of the blind zone around the robot) has an unknown tilt,
+//     and extrapolated half a cell it made 0.15 m "steps" on a 15-degree slope.
 // Points higher than max_height above the local ground (overhangs, trees above the robot) are
 // dropped.
 //
@@ -30,6 +34,10 @@ struct TravelObstacleOptions {
     /// [m] points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)
     double report_floor = 0.15;
     double ground_search_radius = 3.0;  ///< [m] nearest traversable node for other nodes' points
+    /// [m] the step rule only compares nodes whose ground points spread at least this much
+    /// (standard deviation) in their second direction: the plane of one ring's arc or of a
+    /// small patch is not known away from its points
+    double step_min_spread = 0.05;
 };
 
 class TravelObstacleSource : public ObstacleSource {
