@@ -29,6 +29,7 @@ cmake --build build-asan -j2
 log "test suite under sanitizers"
 # allocator_may_return_null: a corrupt rawlog's absurd sizes reach MRPT's allocator; the apps
 # turn the failure into a clean error (apps/MemoryLimit.hpp) instead of ASan aborting.
+LSAN_OPTIONS=suppressions="$ROOT_DIR/tests/lsan.supp" \
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-asan -j2 --output-on-failure
 

@@ -5,6 +5,9 @@ if(TARGET travel_nav_sim_lib)
   target_link_libraries(test_nav_sources PRIVATE travel_nav_sim_lib)
   travel_mrpt_test(test_nav_closed_loop test_nav_closed_loop.cpp)
   target_link_libraries(test_nav_closed_loop PRIVATE travel_nav_sim_lib mrpt::io mrpt::serialization)
+  if(TRAVEL_SANITIZE)
+    target_compile_definitions(test_nav_closed_loop PRIVATE TRAVEL_SANITIZED)
+  endif()
 
   add_test(NAME apps.travel_nav_sim_cli
     COMMAND ${CMAKE_COMMAND}
