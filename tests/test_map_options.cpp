@@ -77,8 +77,16 @@ TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
     auto map = maps.mapByClass<travel_mrpt::CTraversabilityMap>();
     ASSERT_TRUE(map);
     EXPECT_EQ(map->grid().sizeX(), 112);  // 28 m / 0.25 m
-    EXPECT_EQ(map->grid().sizeY(), 80);
+    EXPECT_EQ(map->grid().sizeY(), 88);   // 22 m / 0.25 m
     EXPECT_EQ(map->options().travel.params.sensor_height, 1.8);
+    // max_slope_deg is a map key and a libtravel parameter name: saved and read back, the map's
+    // value (20 in the .ini, libtravel's default 25) survives.
+    mrpt::config::CConfigFileMemory saved;
+    map->options().saveToConfigFile(saved, "m");
+    travel_mrpt::TraversabilityMapOptions reread;
+    reread.loadFromConfigFile(saved, "m");
+    EXPECT_FLOAT_EQ(reread.fusion.max_slope_deg, 20.f);
+    EXPECT_FLOAT_EQ(reread.fusion.max_neighbour_step, 0.1f);
 
     // An unknown key in the .ini fails the creation with the key and section named.
     mrpt::config::CConfigFileMemory bad(travel_map_test::mapIni("MAP") + "colour=red\n");
@@ -117,6 +125,58 @@ TEST(TraversabilityGrid, OneUpdatePerCellAndFrame) {
     EXPECT_NEAR(grid.stepHeight(3), 0.3, 0.05);
     EXPECT_EQ(grid.state(5, fusion), travel_mrpt::CellState::Unknown);
     EXPECT_DOUBLE_EQ(grid.lastSeen(0), 11.0);
+}
+
+// The step rule between cells (max_neighbour_step): a 0.15 m kerb is a step, a 10-degree
+// ramp (whose heights differ by 0.044 m per 0.25 m cell, 0.18 m over 4 cells) is not, and a
+// frame whose ground is tilted by 2 degrees (an attitude error) is levelled before fusion.
+TEST(MapGrid, NeighbourStepSeparatesKerbFromRampAndLevelsTiltedFrames) {
+    travel_mrpt::GridFusionParams fusion;
+    fusion.max_neighbour_step = 0.1f;
+    const double r = 0.25;
+    const auto fill = [&](travel_mrpt::TraversabilityGrid& g, auto height, double tilt) {
+        g.beginFrame();
+        for (int iy = 0; iy < g.sizeY(); ++iy)
+            for (int ix = 0; ix < g.sizeX(); ++ix)
+                for (int k = 0; k < 3; ++k) {
+                    const double x = g.cellCenterX(ix), y = g.cellCenterY(iy);
+                    g.addGround(x, y, float(height(x) + tilt * x), 10.f);  // biased node slope
+                }
+        g.endFrame(1.0, fusion);
+    };
+    // Kerb along y at x = 1.1 (inside the cell column [1.0, 1.25)), 0.15 m; the TRAVEL nodes
+    // at a kerb report ~10 degrees, which must not explain the step away.
+    travel_mrpt::TraversabilityGrid kerb;
+    kerb.reset({0.0, 2.5, 0.0, 2.5, r});
+    fill(
+        kerb, [](double x) { return x < 1.1 ? 0.0 : 0.15; }, 0.0);
+    const auto column = [&](const travel_mrpt::TraversabilityGrid& g, int ix) {
+        return g.state(g.cellIndex(ix, 5), fusion);
+    };
+    EXPECT_EQ(column(kerb, 4), travel_mrpt::CellState::Obstacle) << "the kerb's cell";
+    EXPECT_EQ(column(kerb, 1), travel_mrpt::CellState::Traversable) << "road";
+    EXPECT_EQ(column(kerb, 7), travel_mrpt::CellState::Traversable) << "sidewalk";
+    // A 10-degree ramp: nowhere a step.
+    travel_mrpt::TraversabilityGrid ramp;
+    ramp.reset({0.0, 2.5, 0.0, 2.5, r});
+    fill(
+        ramp, [](double x) { return x * std::tan(10.0 * M_PI / 180.0); }, 0.0);
+    std::size_t ramp_obstacles = 0;
+    for (long c = 0; c < long(ramp.cellCount()); ++c)
+        ramp_obstacles += ramp.state(c, fusion) == travel_mrpt::CellState::Obstacle;
+    EXPECT_EQ(ramp_obstacles, 0u);
+    // Flat ground seen by a level frame, then by one tilted 2 degrees about y (0.087 m over the
+    // 2.5 m grid): the second is levelled, the fused heights stay flat.
+    travel_mrpt::TraversabilityGrid flat;
+    flat.reset({0.0, 2.5, 0.0, 2.5, r});
+    fill(
+        flat, [](double) { return 0.0; }, 0.0);
+    fill(
+        flat, [](double) { return 0.0; }, std::tan(2.0 * M_PI / 180.0));
+    float lo = 1.f, hi = -1.f;
+    for (long c = 0; c < long(flat.cellCount()); ++c)
+        lo = std::min(lo, flat.groundHeight(c)), hi = std::max(hi, flat.groundHeight(c));
+    EXPECT_LT(hi - lo, 0.005f) << "the tilted frame was not levelled";
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {

@@ -247,8 +247,8 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         const long cell = grid_.cellIndex(pw.x(), pw.y());
         if (ownNodeHeight(terrain, pa.x(), pa.y(), z_ground)) {
             height = pa.z() - z_ground;
-        } else if (cell >= 0 && std::isfinite(grid_.groundHeight(cell))) {
-            height = pw.z() - grid_.groundHeight(cell);
+        } else if (cell >= 0 && std::isfinite(grid_.groundHeightThisFrame(cell))) {
+            height = pw.z() - grid_.groundHeightThisFrame(cell);
         } else if (neighbourNodeHeight(terrain, pa.x(), pa.y(), z_ground)) {
             height = pa.z() - z_ground;
         } else if (i < result.cluster_id.size() && result.cluster_id[i] > 0 &&

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Dense>
+
 #include "travel/Errors.hpp"
 
 namespace travel_mrpt {
@@ -14,9 +16,14 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kDegToRad = 3.14159265358979f / 180.f;
-constexpr uint32_t kStepReferencePoints = 2;  ///< ground points a step reference cell needs
-constexpr int kStepRadius = 2;                ///< [cells] neighbourhood of the step rule
-constexpr float kMaxPairDistance = 4.f;       ///< [cells] farthest pair of the step rule
+constexpr uint32_t kStepReferencePoints = 2;     ///< ground points a step reference cell needs
+constexpr uint32_t kCorrectionPoints = 2;        ///< ground points per cell, frame and map
+constexpr std::size_t kCorrectionMinCells = 50;  ///< cells a frame height correction needs
+constexpr double kCorrectionGate0 = 2.0;         ///< [m] residuals beyond: not ground both times
+/// [m] inlier gates of the successive refits (the first fit takes every residual).
+constexpr double kCorrectionGates[] = {kCorrectionGate0, 0.3, 0.1, 0.05};
+constexpr int kStepRadius = 2;           ///< [cells] neighbourhood of the step rule
+constexpr float kMaxPairDistance = 4.f;  ///< [cells] farthest pair of the step rule
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw travel::ConfigError(what);
@@ -133,12 +140,62 @@ void TraversabilityGrid::addGround(double x, double y, float z, float slope_deg)
     if (f.z_low[1] < f.z_low[0]) std::swap(f.z_low[0], f.z_low[1]);
     if (z > f.z_high[1]) f.z_high[1] = z;
     if (f.z_high[1] > f.z_high[0]) std::swap(f.z_high[0], f.z_high[1]);
-    // Welford: running mean and sum of squared deviations over all frames.
-    const uint32_t n = ++ground_count_[cell];
-    const float delta = z - ground_mean_[cell];
-    ground_mean_[cell] += delta / float(n);
-    ground_m2_[cell] += delta * (z - ground_mean_[cell]);
-    slope_sum_[cell] += std::isfinite(slope_deg) ? slope_deg : 0.f;
+    // Welford within the frame (merged into the cell in endFrame, after the frame's height
+    // correction).
+    const float delta = z - f.z_mean;
+    f.z_mean += delta / float(f.ground);
+    f.z_m2 += delta * (z - f.z_mean);
+    f.slope_sum += std::isfinite(slope_deg) ? slope_deg : 0.f;
+}
+
+float TraversabilityGrid::groundHeightThisFrame(long cell) const {
+    if (ground_count_[cell] > 0) return ground_mean_[cell];
+    const int32_t slot = frame_slot_[cell];
+    return slot >= 0 && frame_cells_[slot].ground > 0 ? frame_cells_[slot].z_mean : kNaN;
+}
+
+bool TraversabilityGrid::frameHeightCorrection(float c[3], double& xm, double& ym) const {
+    // Residuals (frame mean - fused mean) of the ground cells seen before and in this frame.
+    struct Sample {
+        double x, y, r;
+    };
+    std::vector<Sample> samples;
+    double sx = 0, sy = 0;
+    for (std::size_t k = 0; k < frame_touched_.size(); ++k) {
+        const long cell = frame_touched_[k];
+        const FrameCell& f = frame_cells_[k];
+        if (f.ground < kCorrectionPoints || ground_count_[cell] < kCorrectionPoints) continue;
+        const double r = double(f.z_mean) - double(ground_mean_[cell]);
+        if (std::abs(r) > kCorrectionGate0) continue;
+        const double x = cellCenterX(int(cell % size_x_)), y = cellCenterY(int(cell / size_x_));
+        samples.push_back({x, y, r});
+        sx += x, sy += y;
+    }
+    if (samples.size() < kCorrectionMinCells) return false;
+    xm = sx / double(samples.size());
+    ym = sy / double(samples.size());
+    // Least squares r = c0 + c1 (x - xm) + c2 (y - ym), refitted on the inliers of the previous
+    // fit with shrinking gates (a kerb, a box or a mislabelled cell is not an attitude error).
+    double fit[3] = {0, 0, 0};
+    for (double gate : kCorrectionGates) {
+        Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d b = Eigen::Vector3d::Zero();
+        std::size_t used = 0;
+        for (const Sample& q : samples) {
+            const Eigen::Vector3d v(1.0, q.x - xm, q.y - ym);
+            const double predicted = fit[0] + fit[1] * v[1] + fit[2] * v[2];
+            if (std::abs(q.r - predicted) > gate) continue;
+            A += v * v.transpose();
+            b += v * q.r;
+            ++used;
+        }
+        if (used < kCorrectionMinCells) return false;
+        const Eigen::Vector3d sol = A.ldlt().solve(b);
+        if (!sol.allFinite()) return false;
+        fit[0] = sol[0], fit[1] = sol[1], fit[2] = sol[2];
+    }
+    c[0] = float(fit[0]), c[1] = float(fit[1]), c[2] = float(fit[2]);
+    return true;
 }
 
 void TraversabilityGrid::addObstacle(double x, double y) {
@@ -149,6 +206,12 @@ void TraversabilityGrid::addObstacle(double x, double y) {
 std::size_t TraversabilityGrid::endFrame(double time_s, const GridFusionParams& fusion) {
     std::size_t updated = 0;
     const float diagonal = float(geometry_.resolution) * 1.41421356f;
+    // The frame's ground against the ground fused so far: an attitude (or height) error of the
+    // frame tilts (shifts) all its ground heights by a plane in x, y; remove it before fusing, so
+    // that heights of neighbouring cells seen from different frames can be compared.
+    float corr[3] = {0.f, 0.f, 0.f};
+    double xm = 0, ym = 0;
+    if (fusion.max_neighbour_step > 0) frameHeightCorrection(corr, xm, ym);
     for (std::size_t k = 0; k < frame_touched_.size(); ++k) {
         const long cell = frame_touched_[k];
         const FrameCell& f = frame_cells_[k];
@@ -161,10 +224,21 @@ std::size_t TraversabilityGrid::endFrame(double time_s, const GridFusionParams& 
         if (f.ground >= uint32_t(fusion.min_step_points)) {
             // Second-lowest to second-highest: one stray point cannot make a step. The rise a
             // sloped plane has across the cell is not a step.
-            const float slope = slopeDeg(cell);
+            const float slope = f.slope_sum / float(f.ground);
             const float rise = diagonal * std::tan(std::min(slope, 80.f) * kDegToRad);
             const float step = (f.z_high[1] - f.z_low[1]) - (std::isfinite(rise) ? rise : 0.f);
             step_height_[cell] = std::max(step_height_[cell], step);
+        }
+        if (f.ground > 0) {  // merge the frame's ground statistics (Chan et al.)
+            const float cx = float(cellCenterX(int(cell % size_x_)) - xm);
+            const float cy = float(cellCenterY(int(cell / size_x_)) - ym);
+            const float mean_b = f.z_mean - (corr[0] + corr[1] * cx + corr[2] * cy);
+            const uint32_t na = ground_count_[cell], nb = f.ground, nab = na + nb;
+            const float delta = mean_b - ground_mean_[cell];
+            ground_mean_[cell] += delta * float(nb) / float(nab);
+            ground_m2_[cell] += f.z_m2 + delta * delta * float(na) * float(nb) / float(nab);
+            ground_count_[cell] = nab;
+            slope_sum_[cell] += f.slope_sum;
         }
         if (frames_seen_[cell]++ == 0) ++observed_cells_;
         last_seen_[cell] = time_s;
@@ -182,13 +256,35 @@ float TraversabilityGrid::neighbourStep(long cell, const GridFusionParams& fusio
     const int ix = int(cell % size_x_), iy = int(cell / size_x_);
     const float r = float(geometry_.resolution);
     const float max_slope = std::min(fusion.max_slope_deg, 80.f);
-    // The rise a slope explains over `distance` cells: the mean terrain-model slope of the two
-    // cells (capped at max_slope_deg: a steeper slope is not traversable anyway), so that a
-    // ramp's foot and top (a flat and a sloped cell) are not steps.
-    const auto rise = [&](long a, long b, float distance) {
-        float slope = 0.5f * (slopeDeg(a) + slopeDeg(b));
-        if (!std::isfinite(slope)) slope = 0.f;
-        return distance * r * std::tan(std::clamp(slope, 0.f, max_slope) * kDegToRad);
+    const float max_grade = std::tan(max_slope * kDegToRad);
+    // The rise a slope explains between cells a and b (offsets (dxa, dya), (dxb, dyb) from this
+    // cell): the steeper of the height gradients just OUTSIDE the pair (a against the reference
+    // one step further from b, and likewise for b), capped at max_slope_deg, times their
+    // distance. On a ramp, its foot or its top the outer cells continue the gradient; beside a
+    // kerb they are flat. Without an outer reference, the pair's mean terrain-model slope (that
+    // one is biased near a kerb: TRAVEL nodes straddling it fit planes tilted ~10 degrees).
+    const auto rise = [&](long a, int dxa, int dya, long b, int dxb, int dyb) {
+        const int ux = (dxb > dxa) - (dxb < dxa), uy = (dyb > dya) - (dyb < dya);  // a -> b
+        const float distance = std::hypot(float(dxb - dxa), float(dyb - dya));
+        const float unit = std::hypot(float(ux), float(uy));
+        float grade = -1.f;
+        const auto outer = [&](long inner, int x, int y, int steps) {
+            if (x < 0 || y < 0 || x >= size_x_ || y >= size_y_) return;
+            const long o = cellIndex(x, y);
+            if (!stepReference(o, fusion)) return;
+            grade = std::max(
+                grade, std::abs(ground_mean_[o] - ground_mean_[inner]) / (float(steps) * unit * r));
+        };
+        for (int k = 1; k <= 2; ++k) {  // 1 and 2 cells out: one noisy cell does not decide
+            outer(a, ix + dxa - k * ux, iy + dya - k * uy, k);
+            outer(b, ix + dxb + k * ux, iy + dyb + k * uy, k);
+        }
+        if (grade < 0) {
+            float slope = 0.5f * (slopeDeg(a) + slopeDeg(b));
+            if (!std::isfinite(slope)) slope = 0.f;
+            grade = std::tan(std::clamp(slope, 0.f, max_slope) * kDegToRad);
+        }
+        return distance * r * std::min(grade, max_grade);
     };
     // Reference cells within kStepRadius cells (Chebyshev), with their offsets.
     struct Ref {
@@ -211,8 +307,8 @@ float TraversabilityGrid::neighbourStep(long cell, const GridFusionParams& fusio
         const Ref& a = refs[i];
         // This cell and a reference: the edge lies between them.
         if (own && std::abs(a.dx) + std::abs(a.dy) == 1)
-            step = std::max(step, std::abs(h - ground_mean_[a.cell]) -
-                                      rise(cell, a.cell, std::hypot(float(a.dx), float(a.dy))));
+            step = std::max(
+                step, std::abs(h - ground_mean_[a.cell]) - rise(cell, 0, 0, a.cell, a.dx, a.dy));
         // Two references on opposite sides of this cell: the edge lies inside this cell when
         // its own height is between theirs (a cell holding both levels) or it has no ground.
         for (int j = i + 1; j < count; ++j) {
@@ -223,11 +319,17 @@ float TraversabilityGrid::neighbourStep(long cell, const GridFusionParams& fusio
             if (dot > -0.9f * la * lb) continue;  // not on opposite sides (within ~25 deg)
             const float lo = std::min(ground_mean_[a.cell], ground_mean_[b.cell]);
             const float hi = std::max(ground_mean_[a.cell], ground_mean_[b.cell]);
-            constexpr float kTolerance = 0.02f;  // [m]
-            if (ground_count_[cell] > 0 && (h < lo - kTolerance || h > hi + kTolerance)) continue;
-            const float dist = std::hypot(float(a.dx - b.dx), float(a.dy - b.dy));
+            // Own height in the middle half: the cell holds both levels (a cell at one of
+            // them is on one side of the edge, marked by the 4-neighbour test if adjacent).
+            const float quarter = 0.25f * (hi - lo);
+            if (ground_count_[cell] > 0 && (h <= lo + quarter || h >= hi - quarter)) continue;
+            const int ddx = b.dx - a.dx, ddy = b.dy - a.dy;
+            // Along an axis or a diagonal only, so that the outer gradients of rise() are
+            // measured along the pair.
+            if (ddx != 0 && ddy != 0 && std::abs(ddx) != std::abs(ddy)) continue;
+            const float dist = std::hypot(float(ddx), float(ddy));
             if (dist > kMaxPairDistance) continue;
-            step = std::max(step, (hi - lo) - rise(a.cell, b.cell, dist));
+            step = std::max(step, (hi - lo) - rise(a.cell, a.dx, a.dy, b.cell, b.dx, b.dy));
         }
     }
     return step;

@@ -133,11 +133,14 @@ void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFil
 
 void TraversabilityMapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& target,
                                                 const std::string& section) const {
+    // TRAVEL first, then the map's keys: a name both use (max_slope_deg) is the map's when read
+    // back, as loadFromConfigFile gives such a key to the map only (before this order, the map's
+    // max_slope_deg came back as libtravel's, and a serialized map changed its cell states).
+    travel.saveToConfigFile(target, section);
     for (const Key& k : keys()) {
         const double v = k.get(*this);
         target.write(section, k.name, k.integer ? std::to_string(long(v)) : exactText(v));
     }
-    travel.saveToConfigFile(target, section);
 }
 
 void TraversabilityMapOptions::validate() const {

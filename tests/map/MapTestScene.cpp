@@ -14,7 +14,8 @@ using travel::sim::Scene;
 
 namespace {
 constexpr double kSensorHeight = 1.8;
-}
+constexpr int kPoses = 17;
+}  // namespace
 
 Scene mapScene() {
     Scene s;
@@ -27,13 +28,13 @@ Scene mapScene() {
     ramp.plateau_length = 3.0;
     s.ramps.push_back(ramp);
     travel::sim::Step kerb;
-    kerb.start = {0.0, -3.1};  // inside a cell row, not on a cell edge
+    kerb.start = {0.0, -7.1};  // inside a cell row, not on a cell edge
     kerb.direction = {0.0, -1.0};
     kerb.height = 0.15;
     s.steps.push_back(kerb);
     travel::sim::Box box;
     box.id = 1;
-    box.centre = {3.0, -6.0};
+    box.centre = {3.0, -9.0};
     box.length = 2.0;
     box.width = 1.5;
     box.height = 1.2;
@@ -50,7 +51,7 @@ Scene mapScene() {
 
 std::vector<mrpt::poses::CPose3D> robotPoses() {
     std::vector<mrpt::poses::CPose3D> poses;
-    for (int k = 0; k < 9; ++k) poses.emplace_back(-10.0 + 2.5 * k, 0.0, 0.0, 0.0, 0.0, 0.0);
+    for (int k = 0; k < kPoses; ++k) poses.emplace_back(-12.0 + 1.5 * k, 0.0, 0.0, 0.0, 0.0, 0.0);
     return poses;
 }
 
@@ -142,7 +143,7 @@ std::string mapIni(const std::string& section) {
            "[" +
            section +
            "_traversabilityMap_00_creationOpts]\n"
-           "min_x=-14\nmax_x=14\nmin_y=-10\nmax_y=10\nresolution=0.25\noctomap_resolution=0.2\n"
+           "min_x=-14\nmax_x=14\nmin_y=-12\nmax_y=10\nresolution=0.25\noctomap_resolution=0.2\n"
            "[" +
            section +
            "_traversabilityMap_00_insertOpts]\n"

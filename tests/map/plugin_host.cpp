@@ -2,7 +2,7 @@
 //
 // A user's program: it does NOT link travel_mrpt. It loads libtravel_mrpt_plugin.so by path,
 // builds a CMultiMetricMap from an .ini naming traversabilityMap (TSetOfMetricMapInitializers),
-// inserts the nine synthetic sweeps of MapTestScene with their robot poses, and checks the map
+// inserts the 17 synthetic sweeps of MapTestScene with their robot poses, and checks the map
 // through the CMetricMap interface only:
 //   travel_map_plugin_host <plugin.so> <work dir>
 // Exit 0 when every check passes; each failure is printed.
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
             float x, y, z;
             points->getPoint(i, x, y, z);
             if (std::hypot(x + 5.0, y - 3.0) < 0.5 && z > 0.5) ++pole;
-            if (std::abs(x - 3.0) < 1.2 && std::abs(y + 6.0) < 1.0 && z > 0.5) ++box;
+            if (std::abs(x - 3.0) < 1.2 && std::abs(y + 9.0) < 1.0 && z > 0.5) ++box;
             if (std::abs(y) <= 2.0 && z > 0.4) ++road;
         }
         std::cout << "  obstacle points: " << points->size() << " (pole " << pole << ", box " << box

@@ -48,9 +48,10 @@ struct GridFusionParams {
     float max_step_height = 0.1f;
     float max_slope_deg = 20.0f;  ///< [deg] a steeper terrain model: not traversable
     /// [m] a larger step between the fused ground heights of neighbouring cells (across frames,
-    /// see TraversabilityGrid::neighbourStep): not traversable. 0 = off, the default: pose and
-    /// attitude errors between frames make such differences unreliable on a moving, tilting
-    /// robot; set it (e.g. to max_step_height) for well-registered maps.
+    /// see TraversabilityGrid::neighbourStep): not traversable. 0 = off, the default: on a
+    /// moving, pitching robot the frames' residual attitude errors within a sweep (not removed
+    /// by the per-frame levelling) still make cross-frame height differences exceed 0.1 m over
+    /// large areas; set it (e.g. to max_step_height) for well-registered maps.
     float max_neighbour_step = 0.0f;
 
     /// Throws travel::ConfigError on inconsistent values (naming the key).
@@ -88,7 +89,10 @@ class TraversabilityGrid {
     void addGround(double x, double y, float z, float slope_deg);
     /// An obstacle point (world frame) between the obstacle height limits.
     void addObstacle(double x, double y);
-    /// Fuses the frame's cells. Returns the number of cells updated.
+    /// Fuses the frame's cells. Returns the number of cells updated. With max_neighbour_step > 0
+    /// the frame's ground heights are corrected first by a plane (offset and tilt) fitted, with
+    /// shrinking inlier gates, to their differences from the fused ground over the cells both
+    /// hold (>= 50 cells with >= 2 points each): an attitude or height error of the frame.
     std::size_t endFrame(double time_s, const GridFusionParams& fusion);
 
     // ---- Reading ----
@@ -99,6 +103,9 @@ class TraversabilityGrid {
     float logodds(long cell) const { return logodds_[cell]; }
     /// Mean ground height [m] (NaN when no ground point fell in the cell).
     float groundHeight(long cell) const;
+    /// During a frame (before endFrame): the fused ground height, else this frame's mean ground
+    /// height in the cell so far, else NaN.
+    float groundHeightThisFrame(long cell) const;
     /// Standard deviation of the ground heights [m] (0 with fewer than 2 points).
     float groundSpread(long cell) const;
     /// Mean terrain-model slope of the cell's ground points [deg] (NaN if none).
@@ -108,11 +115,15 @@ class TraversabilityGrid {
     /// Largest step [m] on the cell's edges from the ground heights fused over all frames,
     /// against the "reference" cells within 2 cells (>= 2 ground points, log-odds below
     /// free_threshold): |height difference| between this cell (if a reference) and a
-    /// 4-neighbour reference; and between two references on opposite sides of this cell (at
-    /// most 4 cells apart) when this cell's own height lies between theirs or it has no ground
-    /// (the edge runs through the cell). Each minus the rise the pair's mean terrain-model slope
-    /// explains over their distance, so a ramp is not a step. state() makes an observed cell
-    /// with a step > max_step_height an obstacle.
+    /// 4-neighbour reference; and between two references on opposite sides of this cell (along
+    /// an axis or a diagonal, at most 4 cells apart) when this cell has no ground or its height
+    /// lies in the middle half between theirs (it holds both levels). Each minus the rise the
+    /// terrain explains over the pair's distance: the steepest height gradient measured just
+    /// outside the pair (1 and 2 cells beyond each end, along the pair), capped at max_slope_deg,
+    /// else the pair's mean terrain-model slope; so a ramp, its foot and its top are not steps,
+    /// while beside a kerb the outer cells are flat (the terrain-model slope is not used there:
+    /// TRAVEL nodes straddling a kerb fit planes tilted ~10 degrees). With max_neighbour_step > 0
+    /// each frame's ground is first levelled against the fused ground (see endFrame()).
     float neighbourStep(long cell, const GridFusionParams& fusion) const;
     /// Time of the last frame that updated the cell [s, MRPT clock] (0 = never).
     double lastSeen(long cell) const { return last_seen_[cell]; }
@@ -146,12 +157,16 @@ class TraversabilityGrid {
     // Per-frame scratch, reused: touched cells and their summaries.
     struct FrameCell {
         uint32_t ground = 0, obstacle = 0;
-        float z_low[2], z_high[2];  ///< two lowest / highest ground z (robust step)
+        float z_mean = 0, z_m2 = 0, slope_sum = 0;  ///< the frame's ground (Welford)
+        float z_low[2], z_high[2];                  ///< two lowest / highest ground z (robust step)
     };
     std::vector<int32_t> frame_slot_;  ///< per cell: index into frame_cells_, or -1
     std::vector<long> frame_touched_;
     std::vector<FrameCell> frame_cells_;
     FrameCell& frameCell(long cell);
+    /// Plane c0 + c1 (x - xm) + c2 (y - ym) fitted to this frame's ground heights minus the fused
+    /// ones (see endFrame); false with too few common ground cells.
+    bool frameHeightCorrection(float c[3], double& xm, double& ym) const;
     /// The cell's fused ground height can serve as a step reference (see neighbourStep()).
     bool stepReference(long cell, const GridFusionParams& fusion) const;
 };

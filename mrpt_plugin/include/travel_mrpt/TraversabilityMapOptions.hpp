@@ -28,7 +28,9 @@
 //   max_step_height             [m]    larger step inside a cell: not traversable (0.1)
 //   max_slope_deg               [deg]  steeper terrain model: not traversable (20)
 //   max_neighbour_step          [m]    larger step between neighbouring cells' fused ground
-//                                      heights: not traversable (0 = off)
+//                                      heights: not traversable (0 = off); when on, each
+//                                      frame's ground is levelled against the map first
+//   (max_slope_deg is also a libtravel parameter name: in these sections it is the map's.)
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
