@@ -77,6 +77,30 @@ if(EXISTS ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
   expect_success(${TRAVEL_MAP} -i ${DATA_DIR}/semantickitti/sequences/00 -o ${WORK_DIR}/kitti
     --max-frames 1)
   expect_exports(${WORK_DIR}/kitti 00)
+  # A KITTI-layout sequence with poses.txt (cam0 poses) and calib.txt (Tr: velodyne -> cam0):
+  # the same scan twice, the second 10 m further along cam0's z (= the LiDAR's x). The poses
+  # come from the files and the two frames are fused.
+  set(seq ${WORK_DIR}/kitti_posed)
+  file(MAKE_DIRECTORY ${seq}/velodyne)
+  file(COPY_FILE ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin
+       ${seq}/velodyne/000000.bin)
+  file(COPY_FILE ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin
+       ${seq}/velodyne/000001.bin)
+  file(WRITE ${seq}/poses.txt "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 10\n")
+  file(WRITE ${seq}/calib.txt
+       "Tr: 0 -1 0 0 0 0 -1 -0.08 1 0 0 -0.27\n")
+  expect_success(${TRAVEL_MAP} -i ${seq} -o ${WORK_DIR}/kitti_posed_out
+                 --extent " -40,50,-40,40" --resolution 0.5)
+  foreach(needle "poses: pose file" "poses.txt" "LiDAR frames mapped: 2, rejected: 0, without pose: 0")
+    string(FIND "${last_output}" "${needle}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "KITTI with poses: '${needle}' not in the summary:\n${last_output}")
+    endif()
+  endforeach()
+  expect_exports(${WORK_DIR}/kitti_posed_out kitti_posed)
+  # poses.txt with a wrong column count is an error naming the file and line.
+  file(WRITE ${seq}/poses.txt "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n")
+  expect_failure_mentioning("poses.txt:2" ${TRAVEL_MAP} -i ${seq} -o ${WORK_DIR}/kitti_posed_bad)
 else()
   message(STATUS "SKIPPED part: ${DATA_DIR}/semantickitti not found")
 endif()
