@@ -86,6 +86,16 @@ Eigen::Matrix3d levelPart(const Eigen::Matrix3d& R) {
     return Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
 }
 
+/// A filter configured like the README's demo (share/configs/mrpt_sample_vlp16.yaml), quiet.
+void configureForSample(TravelFilter& filter) {
+    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    filter.loadConfigFile(kSampleConfig);
+}
+
+#define SKIP_WITHOUT_SAMPLE()                     \
+    if (!mrpt::system::fileExists(kSampleRawlog)) \
+    GTEST_SKIP() << kSampleRawlog << " not found (Debian package mrpt-common)"
+
 mrpt::obs::CObservation::Ptr firstLidarOf(const std::string& path) {
     mrpt::io::CFileGZInputStream file(path);
     auto archive = mrpt::serialization::archiveFrom(file);
@@ -264,14 +274,12 @@ TEST(TravelFilterOptions, LoadsFilesByExtensionAndNamesTheFile) {
 // ---------------------------------------------------------------- LiDAR frames
 
 TEST(TravelFilter, MatchesThePipelineOnTheVlp16Sample) {
-    if (!mrpt::system::fileExists(kSampleRawlog))
-        GTEST_SKIP() << kSampleRawlog << " not found (Debian package mrpt-common)";
+    SKIP_WITHOUT_SAMPLE();
     const auto obs = firstLidarOf(kSampleRawlog);
     ASSERT_TRUE(obs);
 
     TravelFilter filter;
-    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-    filter.loadConfigFile(kSampleConfig);
+    configureForSample(filter);
     travel_mrpt::TravelFrame frame;
     std::string why;
     ASSERT_TRUE(filter.filter(*obs, frame, &why)) << why;
@@ -309,13 +317,11 @@ TEST(TravelFilter, MatchesThePipelineOnTheVlp16Sample) {
 }
 
 TEST(TravelFilter, ReusesItsBuffersFrameAfterFrame) {
-    if (!mrpt::system::fileExists(kSampleRawlog))
-        GTEST_SKIP() << kSampleRawlog << " not found (Debian package mrpt-common)";
+    SKIP_WITHOUT_SAMPLE();
     const auto obs = firstLidarOf(kSampleRawlog);
     ASSERT_TRUE(obs);
     TravelFilter filter;
-    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-    filter.loadConfigFile(kSampleConfig);
+    configureForSample(filter);
     travel_mrpt::TravelFrame frame;
     ASSERT_TRUE(filter.filter(*obs, frame));
     ASSERT_TRUE(filter.filter(*obs, frame));  // warm
@@ -339,13 +345,11 @@ TEST(TravelFilter, ReusesItsBuffersFrameAfterFrame) {
 // read-only. (ThreadSanitizer runs the libtravel version of this test in CI; MRPT's libraries
 // are not instrumented, so this one runs in the plain and ASan builds.)
 TEST(TravelFilter, OneFilterPerThreadGivesIdenticalResults) {
-    if (!mrpt::system::fileExists(kSampleRawlog))
-        GTEST_SKIP() << kSampleRawlog << " not found (Debian package mrpt-common)";
+    SKIP_WITHOUT_SAMPLE();
     const auto obs = firstLidarOf(kSampleRawlog);
     ASSERT_TRUE(obs);
     TravelFilter reference_filter;
-    reference_filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-    reference_filter.loadConfigFile(kSampleConfig);
+    configureForSample(reference_filter);
     travel_mrpt::TravelFrame reference;
     ASSERT_TRUE(reference_filter.filter(*obs, reference));
 
@@ -355,8 +359,7 @@ TEST(TravelFilter, OneFilterPerThreadGivesIdenticalResults) {
     for (int t = 0; t < kThreads; ++t)
         threads.emplace_back([&, t] {
             TravelFilter filter;
-            filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-            filter.loadConfigFile(kSampleConfig);
+            configureForSample(filter);
             travel_mrpt::TravelFrame frame;
             for (int k = 0; k < kFrames; ++k)
                 if (filter.filter(*obs, frame) && frame.result.labels == reference.result.labels &&

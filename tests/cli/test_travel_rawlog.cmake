@@ -17,6 +17,19 @@ function(expect_in text needle)
   endif()
 endfunction()
 
+# Reads `rawlog` in the plugin-only reader (another process) and compares every label with
+# `reference`; each further argument must appear in the reader's output.
+function(expect_read_back_through_plugin rawlog reference)
+  execute_process(COMMAND ${READER} ${PLUGIN} ${rawlog} ${reference}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "plugin-only reader failed on ${rawlog}:\n${o}${e}")
+  endif()
+  foreach(needle ${ARGN})
+    expect_in("${o}" "${needle}")
+  endforeach()
+endfunction()
+
 if(EXISTS ${SAMPLE})
   set(out ${WORK_DIR}/vlp16_travel.rawlog)
   expect_success(${TRAVEL_RAWLOG} -i ${SAMPLE} -o ${out} --config ${CONFIG}
@@ -35,25 +48,16 @@ if(EXISTS ${SAMPLE})
     message(FATAL_ERROR "vlp16.csv: expected a header and one frame, got ${csv_lines} lines")
   endif()
 
-  execute_process(COMMAND ${READER} ${PLUGIN} ${out} ${WORK_DIR}/vlp16.reference
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "plugin-only reader failed on travel-rawlog's output:\n${o}${e}")
-  endif()
-  expect_in("${o}" "1 labelled frames and 11305 points compared, 0 mismatches")
+  expect_read_back_through_plugin(${out} ${WORK_DIR}/vlp16.reference
+    "1 labelled frames and 11305 points compared, 0 mismatches")
 
   # Re-running on the output: the old _travel/_ground/... observations are replaced.
   expect_success(${TRAVEL_RAWLOG} -i ${out} -o ${WORK_DIR}/again.rawlog --config ${CONFIG}
                  --label-reference ${WORK_DIR}/again.reference)
   expect_in("${last_output}" "replacing the TRAVEL outputs of an earlier run")
   expect_in("${last_output}" "LiDAR frames processed: 1")
-  execute_process(COMMAND ${READER} ${PLUGIN} ${WORK_DIR}/again.rawlog
-                          ${WORK_DIR}/again.reference
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "plugin-only reader failed on the re-run output:\n${o}${e}")
-  endif()
-  expect_in("${o}" "1 labelled frames")
+  expect_read_back_through_plugin(${WORK_DIR}/again.rawlog ${WORK_DIR}/again.reference
+    "1 labelled frames" " 0 mismatches")
 else()
   message(STATUS "${SAMPLE} not found (mrpt-common): sample cases skipped")
 endif()
@@ -87,14 +91,8 @@ expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving_sf.rawlog -o ${WORK_DIR}/m
                ${moving_config} --label-reference ${WORK_DIR}/moving_sf.reference)
 expect_in("${last_output}" "records: 20, LiDAR frames processed: 10")
 expect_in("${last_output}" "frames levelled 10, deskewed 10")
-execute_process(COMMAND ${READER} ${PLUGIN} ${WORK_DIR}/moving_sf_out.rawlog
-                        ${WORK_DIR}/moving_sf.reference
-                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "plugin-only reader failed on the SensoryFrame output:\n${o}${e}")
-endif()
-expect_in("${o}" "10 labelled frames")
-expect_in("${o}" " 0 mismatches")
+expect_read_back_through_plugin(${WORK_DIR}/moving_sf_out.rawlog ${WORK_DIR}/moving_sf.reference
+  "10 labelled frames" " 0 mismatches")
 
 # Bad inputs: a class this build does not know (a renamed class in an uncompressed copy of the
 # sample), a rawlog without any LiDAR observation, a config with an unknown key.
