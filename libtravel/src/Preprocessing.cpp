@@ -19,12 +19,15 @@ Eigen::Matrix3d withoutYaw(const Eigen::Matrix3d& R) {
 
 }  // namespace
 
+Eigen::Matrix3d mountRotation(const Params& params) {
+    return (Eigen::AngleAxisd(params.mount_yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
+            Eigen::AngleAxisd(params.mount_pitch_deg * kDegToRad, Eigen::Vector3d::UnitY()) *
+            Eigen::AngleAxisd(params.mount_roll_deg * kDegToRad, Eigen::Vector3d::UnitX()))
+        .toRotationMatrix();
+}
+
 Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input) {
-    const Eigen::Matrix3d R_mount =
-        (Eigen::AngleAxisd(params.mount_yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
-         Eigen::AngleAxisd(params.mount_pitch_deg * kDegToRad, Eigen::Vector3d::UnitY()) *
-         Eigen::AngleAxisd(params.mount_roll_deg * kDegToRad, Eigen::Vector3d::UnitX()))
-            .toRotationMatrix();
+    const Eigen::Matrix3d R_mount = mountRotation(params);
     Eigen::Matrix3d R_level = Eigen::Matrix3d::Identity();
     if (params.align_attitude) {
         if (input.vehicle_attitude) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "travel/Preprocessing.hpp"
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
@@ -45,12 +46,6 @@ Eigen::Matrix3d yawPitchRoll(double yaw, double pitch, double roll) {
             Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
             Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
         .toRotationMatrix();
-}
-
-/// The rotation the pipeline uses for the sensor on the robot (params.mount_*).
-Eigen::Matrix3d mountRotation(const travel::Params& p) {
-    constexpr double kDeg = M_PI / 180.0;
-    return yawPitchRoll(p.mount_yaw_deg * kDeg, p.mount_pitch_deg * kDeg, p.mount_roll_deg * kDeg);
 }
 
 bool sameRotation(const mrpt::poses::CPose3D& a, const mrpt::poses::CPose3D& b) {
@@ -182,7 +177,7 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
                          mrpt::system::LVL_INFO);
         } else if (motion.linear_velocity && motion.angular_velocity) {
             // v_s = R^T (v + w x t), w_s = R^T w for the sensor at (R, t) on the robot.
-            const Eigen::Matrix3d R = mountRotation(params);
+            const Eigen::Matrix3d R = travel::mountRotation(params);  // as the pipeline
             const Eigen::Vector3d t(out.sensorPose.x(), out.sensorPose.y(), out.sensorPose.z());
             const Eigen::Vector3d& v = *motion.linear_velocity;
             const Eigen::Vector3d& w = *motion.angular_velocity;

@@ -39,6 +39,10 @@ struct AlignedCloud {
     Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();  ///< applied sensor->aligned
 };
 
+/// Rotation from the sensor frame to the vehicle frame, from mount_{yaw,pitch,roll}_deg:
+/// Rz(yaw) Ry(pitch) Rx(roll) (MRPT's CPose3D convention).
+Eigen::Matrix3d mountRotation(const Params& params);
+
 /// Rotation from the sensor frame to the aligned frame for this frame's parameters and input:
 /// R = R_level * R_mount, where R_mount comes from mount_{roll,pitch,yaw}_deg and R_level
 /// removes the vehicle's roll and pitch (or the measured gravity tilt).
