@@ -1,7 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Shared by the apps: MRPT's TCLAP returns false from parse() - after printing the message - on
-// a parse error and after --help / --version, instead of exiting. Callers must stop then.
+// Shared by the apps: command-line parsing (MRPT's TCLAP returns false from parse() - after
+// printing the message - on a parse error and after --help / --version, instead of exiting;
+// callers must stop then), the parameter sources in their documented order, and main()'s
+// one-line error reporting.
 #pragma once
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -9,7 +11,13 @@
 #include <exception>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "travel/Errors.hpp"
+#include "travel/Params.hpp"
+#include "travel/ParamsIO.hpp"
 
 namespace travel::apps {
 
@@ -24,16 +32,49 @@ inline std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char**
     return 1;
 }
 
-/// The apps' main(): runs `run`, turning any exception into "<name>: error: ..." on stderr and
-/// exit code 1 (never a crash or an uncaught exception).
+/// MRPT exception texts span many lines (banner, nested "Message:" lines, locations, call
+/// stacks); keep the innermost message, which says what went wrong. One-line texts are kept.
+inline std::string oneLine(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line, message, first;
+    while (std::getline(lines, line)) {
+        const auto start = line.find_first_not_of(" \t\r");
+        if (start == std::string::npos) continue;
+        line = line.substr(start);
+        if (first.empty()) first = line;
+        if (line.rfind("Message:", 0) == 0) message = line.substr(line.find_first_not_of(' ', 8));
+    }
+    std::string best = message.empty() ? first : message;
+    // MRPT's hint about gzip is wrong here: the readers accept plain and gzip files alike.
+    const auto hint = best.find(" (Perhaps it's a gz");
+    if (hint != std::string::npos) best.erase(hint);
+    return best.empty() ? text : best;
+}
+
+/// --preset (already applied to `params` by the caller), then --config, then each --set, then
+/// the cross-parameter checks: the order every app documents.
+inline void applyParamSources(const std::string& config, const std::vector<std::string>& overrides,
+                              Params& params) {
+    if (!config.empty()) applyParamsFile(config, params);
+    for (const std::string& kv : overrides) applyOverride(kv, params);  // errors quote kv
+    params.validate();
+}
+
+/// The apps' main(): runs `run`, turning any exception into one line on stderr,
+/// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
+/// or an uncaught exception).
 template <class Run>
 int runMain(const char* name, Run&& run, int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const TCLAP::ArgException& e) {
         std::cerr << name << ": " << e.error() << " (" << e.argId() << ")\n";
+    } catch (const ConfigError& e) {
+        std::cerr << name << ": configuration error: " << oneLine(e.what()) << "\n";
     } catch (const std::exception& e) {
-        std::cerr << name << ": error: " << e.what() << "\n";
+        std::cerr << name << ": error: " << oneLine(e.what()) << "\n";
+    } catch (...) {
+        std::cerr << name << ": error: unknown exception\n";
     }
     return 1;
 }

@@ -273,9 +273,7 @@ Summary summarize(const MethodRun& run) {
 travel::Params loadParams(const std::string& preset, const std::string& config,
                           const std::vector<std::string>& overrides) {
     travel::Params params = travel::loadPreset(preset);
-    if (!config.empty()) travel::applyParamsFile(config, params);
-    for (const std::string& kv : overrides) travel::applyOverride(kv, params);
-    params.validate();
+    travel::apps::applyParamSources(config, overrides, params);
     return params;
 }
 

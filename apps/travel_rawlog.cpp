@@ -66,24 +66,7 @@ namespace {
 // ------------------------------------------------------------------------------------------
 // Errors: every failure becomes one line "travel-rawlog: error: <file>[: record N]: <what>".
 
-/// MRPT exception texts span many lines (banner, nested "Message:" lines, locations, call
-/// stacks); keep the innermost message, which says what went wrong.
-std::string oneLine(const std::string& text) {
-    std::istringstream lines(text);
-    std::string line, message, first;
-    while (std::getline(lines, line)) {
-        const auto start = line.find_first_not_of(" \t\r");
-        if (start == std::string::npos) continue;
-        line = line.substr(start);
-        if (first.empty()) first = line;
-        if (line.rfind("Message:", 0) == 0) message = line.substr(line.find_first_not_of(' ', 8));
-    }
-    std::string best = message.empty() ? first : message;
-    // MRPT's hint about gzip is wrong here: the reader accepts plain and gzip files alike.
-    const auto hint = best.find(" (Perhaps it's a gz");
-    if (hint != std::string::npos) best.erase(hint);
-    return best.empty() ? text : best;
-}
+using travel::apps::oneLine;
 
 /// A failure with the file (and record) it concerns; main() prints it on one line.
 struct AppError : std::runtime_error {
@@ -800,16 +783,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const travel::ConfigError& e) {
-        std::cerr << "travel-rawlog: configuration error: " << oneLine(e.what()) << "\n";
-    } catch (const std::regex_error& e) {
-        std::cerr << "travel-rawlog: error: --sensor-label: invalid regex: " << e.what() << "\n";
-    } catch (const std::exception& e) {
-        std::cerr << "travel-rawlog: error: " << oneLine(e.what()) << "\n";
-    } catch (...) {
-        std::cerr << "travel-rawlog: error: unknown exception\n";
-    }
-    return 1;
+    return travel::apps::runMain("travel-rawlog", run, argc, argv);
 }

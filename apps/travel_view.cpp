@@ -101,9 +101,7 @@ Options parseCommandLine(int argc, char** argv) {
 travel::Params loadParams(const Options& o) {
     travel::Params params;
     if (!o.preset.empty()) params = travel::loadPreset(o.preset);
-    if (!o.config.empty()) travel::applyParamsFile(o.config, params);
-    for (const auto& kv : o.overrides) travel::applyOverride(kv, params);
-    params.validate();
+    travel::apps::applyParamSources(o.config, o.overrides, params);
     return params;
 }
 
@@ -199,12 +197,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const travel::ConfigError& e) {
-        std::cerr << "travel-view: configuration error: " << e.what() << "\n";
-    } catch (const std::exception& e) {
-        std::cerr << "travel-view: error: " << e.what() << "\n";
-    }
-    return 1;
+    return travel::apps::runMain("travel-view", run, argc, argv);
 }
