@@ -8,7 +8,7 @@
 #      under ThreadSanitizer (./build-tsan)
 #   4. libFuzzer targets, 60 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
-# Tests that need ../shared/data (SemanticKITTI etc.) skip with a message when it is absent.
+# Tests that need the real scans (SemanticKITTI etc., TRAVEL_DATA_DIR) skip with a message when absent.
 set -euo pipefail
 
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
