@@ -39,7 +39,7 @@ if(TARGET travel-map)
   set_tests_properties(apps.travel_map_cli PROPERTIES TIMEOUT 300)
 endif()
 
-# See mrpt_plugin/labels.cmake: UBSan's alignment check misreads MRPT's opengl class layout.
+# See mrpt_plugin/CMakeLists.txt: UBSan's alignment check misreads MRPT's opengl class layout.
 if(TRAVEL_SANITIZE MATCHES "undefined|alignment")
   set_source_files_properties(test_map_fusion.cpp map/plugin_host.cpp
     PROPERTIES COMPILE_OPTIONS -fno-sanitize=alignment)

@@ -20,7 +20,7 @@ target_compile_options(travel_plugin_roundtrip_writer PRIVATE -Wall -Wextra -Wpe
 
 add_executable(travel_plugin_roundtrip_reader plugin/roundtrip_reader.cpp)
 target_include_directories(travel_plugin_roundtrip_reader PRIVATE
-  ${PROJECT_SOURCE_DIR}/mrpt_plugin/include)
+  ${PROJECT_SOURCE_DIR}/mrpt_plugin/obs/include)
 target_link_libraries(travel_plugin_roundtrip_reader PRIVATE travel::travel
   mrpt::io mrpt::maps mrpt::obs mrpt::opengl mrpt::rtti mrpt::serialization mrpt::system)
 target_compile_options(travel_plugin_roundtrip_reader PRIVATE -Wall -Wextra -Wpedantic)
@@ -84,7 +84,7 @@ if(NOT EXISTS ${TRAVEL_MRPT_SAMPLE_VLP16})
                  "plugin round-trip tests not registered")
 endif()
 
-# See mrpt_plugin/labels.cmake: UBSan's alignment check misreads MRPT's opengl class layout.
+# See mrpt_plugin/CMakeLists.txt: UBSan's alignment check misreads MRPT's opengl class layout.
 if(TRAVEL_SANITIZE MATCHES "undefined|alignment")
   set_source_files_properties(plugin/test_labels_observation.cpp
     PROPERTIES COMPILE_OPTIONS -fno-sanitize=alignment)
