@@ -1,7 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
 // Text <-> value helpers shared by the option loaders of the filter and the map layer (private
-// to mrpt_plugin/src). Errors are travel::ConfigError prefixed with `where` ("section [x]: key").
+// to mrpt_plugin). Errors are travel::ConfigError prefixed with `where` ("section [x]: key").
 #pragma once
 
 #include <cctype>
