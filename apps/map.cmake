@@ -3,6 +3,6 @@
 find_package(octomap REQUIRED)
 add_executable(travel-map travel_map.cpp MemoryLimit.cpp)
 target_link_libraries(travel-map PRIVATE
-  travel::mrpt mrpt::tclap mrpt::maps mrpt::obs mrpt::io mrpt::serialization octomap octomath)
+  travel::mrpt travel::eval mrpt::tclap mrpt::maps mrpt::obs mrpt::io mrpt::serialization octomap octomath)
 target_compile_options(travel-map PRIVATE ${TRAVEL_APP_WARNINGS})
 install(TARGETS travel-map RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

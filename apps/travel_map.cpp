@@ -30,7 +30,7 @@
 
 #include "CommandLine.hpp"
 #include "MemoryLimit.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/PoseFiles.hpp"

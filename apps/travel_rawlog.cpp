@@ -44,7 +44,7 @@
 #include "LabelReference.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/Errors.hpp"
-#include "travel/Metrics.hpp"
+#include "travel/eval/Metrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/Attitude.hpp"

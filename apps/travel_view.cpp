@@ -18,7 +18,7 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
