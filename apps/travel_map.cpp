@@ -4,14 +4,9 @@
 // from an MRPT rawlog or a KITTI sequence and writes every export (see --help).
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservationIMU.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
@@ -34,6 +29,7 @@
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/PoseFiles.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -135,7 +131,7 @@ class Progress {
 };
 
 struct Stats {
-    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0, actions = 0;
+    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
     std::string pose_source;
 };
 
@@ -154,89 +150,49 @@ struct PoseFileSource {
 
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
                const std::optional<PoseFileSource>& pose_file) {
-    if (!fs::exists(o.input)) throw std::runtime_error(o.input + ": no such file");
-    mrpt::io::CFileGZInputStream file;
-    if (!file.open(o.input)) throw std::runtime_error(o.input + ": cannot open for reading");
-    auto archive = mrpt::serialization::archiveFrom(file);
+    travel_mrpt::RawlogReader reader(o.input);
+    // Pose sources, by priority: the pose file, then the rawlog's motion (SensoryFrame actions
+    // composed from the identity, else the latest CObservationOdometry record).
+    travel_mrpt::RawlogMotion motion(map.filter());
     Progress progress(!o.quiet);
     const auto start = Clock::now();
-    // Pose sources, by priority: the pose file, SensoryFrame actions (increments composed from
-    // the identity), the latest CObservationOdometry record.
-    CPose3D action_pose, odometry_pose;
-    bool have_actions = false, have_odometry = false;
-    const auto insert = [&](const mrpt::obs::CObservation& obs) {
-        std::optional<CPose3D> pose;
-        if (pose_file)
-            pose = pose_file->at(mrpt::Clock::toDouble(obs.timestamp), stats.lidar);
-        else if (have_actions)
-            pose = action_pose;
-        else if (have_odometry)
-            pose = odometry_pose;
+    // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
+    // the robot pose, anything else is a LiDAR candidate.
+    const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
+        if (!obs || motion.process(*obs)) return;
+        const std::optional<CPose3D> pose =
+            pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), stats.lidar)
+                      : motion.robotPose();
         if (pose_file && !pose) {
             ++stats.no_pose;
             return;
         }
-        if (map.insertObservation(obs, pose ? *pose : CPose3D())) {
+        if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
             ++stats.inserted;
             ++stats.lidar;
         } else {
             ++stats.rejected;
         }
     };
-    for (;;) {
-        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
-        mrpt::serialization::CSerializable::Ptr object;
-        const uint64_t before = file.getPosition();
-        try {
-            object = archive.ReadObject();
-        } catch (const mrpt::serialization::CExceptionEOF&) {
-            if (file.getPosition() == before) break;
-            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
-                                     ": truncated (end of file inside the record)");
-        } catch (const std::bad_alloc&) {
-            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
-                                     ": corrupt (announces more data than --max-memory allows)");
-        } catch (const std::exception& e) {
-            std::string what = e.what();
-            what = what.substr(0, what.find('\n'));
-            throw std::runtime_error(
-                o.input + ": record " + std::to_string(stats.records) + ": cannot read" +
-                (stats.records == 0 ? " (is it an MRPT rawlog?)" : "") + ": " + what);
-        }
+    while (!(o.max_frames > 0 && long(stats.inserted) >= o.max_frames)) {
+        const auto record = reader.next();
+        if (!record) break;
         ++stats.records;
-        // One observation, at top level or inside a SensoryFrame: odometry and IMU feed the
-        // filter (motion, attitude), anything else is a LiDAR candidate.
-        const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
-            if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs)) {
-                odometry_pose = CPose3D(odo->odometry);
-                have_odometry = true;
-                map.filter().processOdometry(*odo);
-            } else if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(obs)) {
-                map.filter().processImu(*imu);
-            } else if (obs) {
-                insert(*obs);
-            }
-        };
-        if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object)) {
-            if (auto move = actions->getBestMovementEstimation()) {
-                action_pose = action_pose + CPose3D(move->poseChange->getMeanVal());
-                have_actions = true;
-                ++stats.actions;
-            }
-        } else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
+        if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(record))
             for (const auto& obs : *sf) observation(obs);
-        } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
+        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(record))
             observation(obs);
-        }
+        else
+            motion.process(*record);  // odometry actions
         progress.update(stats.inserted, 0,
                         std::chrono::duration<double>(Clock::now() - start).count());
     }
     progress.done();
-    stats.pose_source = pose_file      ? "pose file " + o.poses
-                        : have_actions ? "odometry actions of the SensoryFrames (" +
-                                             std::to_string(stats.actions) + " increments)"
-                        : have_odometry ? "odometry in the rawlog"
-                                        : "none (identity poses)";
+    stats.pose_source = pose_file          ? "pose file " + o.poses
+                        : motion.actions() ? "odometry actions of the SensoryFrames (" +
+                                                 std::to_string(motion.actions()) + " increments)"
+                        : motion.hasOdometry() ? "odometry in the rawlog"
+                                               : "none (identity poses)";
 }
 
 void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,

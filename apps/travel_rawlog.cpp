@@ -11,13 +11,8 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/img/CImage.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservationIMU.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
@@ -44,13 +39,14 @@
 #include "LabelReference.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/Errors.hpp"
-#include "travel/eval/Metrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/eval/Metrics.hpp"
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -259,59 +255,6 @@ void createParentDirectory(const std::string& path) {
     if (!parent.empty()) fs::create_directories(parent, ec);
     if (ec) throw AppError(parent.string() + ": cannot create directory: " + ec.message());
 }
-
-// ------------------------------------------------------------------------------------------
-// Input: one serialized object per record; clean end of file vs truncated record.
-
-class RawlogReader {
-  public:
-    explicit RawlogReader(const std::string& path) : path_(path) {
-        std::error_code ec;
-        if (!fs::exists(path, ec)) throw AppError(path + ": no such file");
-        if (fs::is_directory(path, ec)) throw AppError(path + ": is a directory, not a rawlog");
-        if (!file_.open(path)) throw AppError(path + ": cannot open for reading");
-    }
-
-    /// The next record, or null at the end of the file. Throws AppError naming the record when
-    /// it cannot be read (truncated, not a rawlog, class not registered ...).
-    mrpt::serialization::CSerializable::Ptr next() {
-        const uint64_t start = file_.getPosition();
-        try {
-            auto obj = archive_.ReadObject();
-            if (!obj) throw std::runtime_error("null object");
-            ++index_;
-            return obj;
-        } catch (const mrpt::serialization::CExceptionEOF&) {
-            // End of file exactly at a record boundary is the normal end; anywhere else the
-            // record was cut.
-            if (file_.getPosition() == start) return nullptr;
-            throw AppError(where(path_, index_) + ": truncated (end of file inside the record)");
-        } catch (const std::bad_alloc&) {
-            throw AppError(where(path_, index_) +
-                           ": corrupt record (it announces more data than --max-memory allows); "
-                           "is it a rawlog?");
-        } catch (const std::exception& e) {
-            const std::string what = oneLine(e.what());
-            // MRPT reports a short read inside an object as a generic error, not CExceptionEOF.
-            if (what.find("EOF") != std::string::npos ||
-                what.find("Cannot read object class name") != std::string::npos)
-                throw AppError(where(path_, index_) +
-                               ": truncated (end of file inside the record)");
-            throw AppError(
-                where(path_, index_) +
-                (index_ == 0 ? ": cannot read (is it an MRPT rawlog?): " : ": cannot read: ") +
-                what);
-        }
-    }
-
-    long index() const { return index_; }
-
-  private:
-    std::string path_;
-    mrpt::io::CFileGZInputStream file_;
-    mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive_{file_};
-    long index_ = 0;
-};
 
 // ------------------------------------------------------------------------------------------
 // Per-class output observations.
@@ -538,22 +481,14 @@ class RawlogSegmenter {
     }
 
     /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
-    void processMotion(const mrpt::serialization::CSerializable& record) {
-        if (auto* imu = dynamic_cast<const mrpt::obs::CObservationIMU*>(&record)) {
-            filter_.processImu(*imu);
-        } else if (auto* odo = dynamic_cast<const mrpt::obs::CObservationOdometry*>(&record)) {
-            filter_.processOdometry(*odo);
-        } else if (auto* actions = dynamic_cast<const mrpt::obs::CActionCollection*>(&record)) {
-            if (auto move = actions->getActionByClass<mrpt::obs::CActionRobotMovement2D>())
-                filter_.processAction(*move);
-        }
+    bool processMotion(const mrpt::serialization::CSerializable& record) {
+        return motion_.process(record);
     }
 
     /// Processes one observation of the record, appending the outputs to `added`.
     void processObservation(const CObservation& obs, long record,
                             std::vector<CObservation::Ptr>& added) {
-        processMotion(obs);
-        if (!travel_mrpt::isLidarObservation(obs) || isOurOutput(obs)) return;
+        if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs) || isOurOutput(obs)) return;
         std::string why_not;
         if (!filter_.filter(obs, frame_, &why_not)) {
             if (!std::regex_match(obs.sensorLabel, label_filter_)) {
@@ -649,6 +584,7 @@ class RawlogSegmenter {
     const Options& options_;
     std::regex label_filter_;
     travel_mrpt::TravelFilter filter_;
+    travel_mrpt::RawlogMotion motion_{filter_};
     CsvLog csv_;
     ReferenceLog reference_;
     travel_mrpt::BirdsEyeOptions birds_eye_;
@@ -705,7 +641,7 @@ int run(int argc, char** argv) {
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");
 
-    RawlogReader reader(options.input);
+    travel_mrpt::RawlogReader reader(options.input);
     RawlogSegmenter segmenter(options, filter_options);
 
     createParentDirectory(options.output);
@@ -748,13 +684,6 @@ int run(int argc, char** argv) {
                              index + 1, segmenter.totals().frames, segmenter.totals().frames / s);
                 progress_shown = true;
             }
-        }
-        if (reader.index() == 0) {
-            std::error_code ec;
-            throw AppError(options.input + (fs::file_size(options.input, ec) == 0
-                                                ? ": empty file, not a rawlog"
-                                                : ": no record could be read (not an MRPT rawlog, "
-                                                  "or a corrupt gzip stream)"));
         }
         segmenter.finish();
     } catch (...) {
