@@ -62,13 +62,6 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     return run;
 }
 
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
-}
-
 void createDir(const std::string& dir) {
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -327,7 +320,8 @@ int run(int argc, char** argv) {
                                            sweep.isSet() ? "--sweep" : "--method");
     if (is_sweep && !sweep.isSet())
         throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    travel::Params params = travel::loadPreset(preset.getValue());
+    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
     std::string setup = "preset " + preset.getValue();
     if (config.isSet()) setup += ", config " + config.getValue();
     for (const std::string& kv : set.getValue()) setup += ", " + kv;

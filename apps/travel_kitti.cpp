@@ -34,13 +34,6 @@ struct StageSeries {
     std::vector<double> ms;
 };
 
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
-}
-
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "Traversable ground segmentation of KITTI-format scans (TRAVEL, Oh et al. RA-L 2022).\n"
@@ -82,7 +75,8 @@ int run(int argc, char** argv) {
                           cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    travel::Params params = travel::loadPreset(preset.getValue());
+    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
     if (dump.getValue()) {
         std::cout << travel::paramsToYaml(params);
         return 0;
