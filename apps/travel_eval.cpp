@@ -29,10 +29,8 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
-#include "travel/Metrics.hpp"
-#include "travel/ObjectMetrics.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
 
 namespace fs = std::filesystem;
@@ -41,240 +39,27 @@ using mrpt::img::TColor;
 
 namespace {
 
-constexpr travel::GroundProtocol kProtocols[2] = {travel::GroundProtocol::A,
-                                                  travel::GroundProtocol::B};
+using travel::eval::EvaluationSummary;
+using travel::eval::FrameRef;
+using travel::eval::MethodRun;
 
 // ---------------------------------------------------------------------------------------------
-// Small helpers
-
-std::vector<std::string> splitList(const std::string& text, char sep) {
-    std::vector<std::string> items;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, sep)) items.push_back(item);
-    if (!text.empty() && text.back() == sep) items.emplace_back();  // "a,b," has an empty last
-    return items;
-}
-
-std::string format(const char* fmt, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), fmt, v);
-    return buf;
-}
-
-std::string cpuModel() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.rfind("model name", 0) != 0) continue;
-        const std::size_t colon = line.find(':');
-        if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
-    }
-    return "unknown CPU";
-}
-
-std::string nowText() {
-    const std::time_t t = std::time(nullptr);
-    char buf[64];
-    std::strftime(buf, sizeof(buf), "%Y-%m-%d %H:%M %Z", std::localtime(&t));
-    return buf;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Frames
-
-struct FrameRef {
-    std::string scan, label, name;  // name: "<sequence>/<stem>"
-};
-
-// A sequence's name for the report: ".../sequences/00/velodyne" -> "00".
-std::string sequenceName(const std::string& scans_dir) {
-    fs::path p = fs::path(scans_dir).lexically_normal();
-    if (p.filename().empty()) p = p.parent_path();
-    if (p.filename() == "velodyne" && p.has_parent_path()) p = p.parent_path();
-    return p.filename().string();
-}
-
-// The scans that have a label file, over all (scans, labels) pairs, in order.
-std::vector<FrameRef> labelledFrames(const std::vector<std::string>& scans,
-                                     const std::vector<std::string>& labels, int max_frames) {
-    if (scans.empty() || labels.empty())
-        throw TCLAP::CmdLineParseException("--scans DIR and --labels DIR are required", "--scans");
-    if (scans.size() != labels.size())
-        throw TCLAP::CmdLineParseException(
-            "give one --labels DIR per --scans DIR (paired by order): " +
-                std::to_string(scans.size()) + " --scans, " + std::to_string(labels.size()) +
-                " --labels",
-            "--labels");
-    std::vector<FrameRef> frames;
-    for (std::size_t s = 0; s < scans.size(); ++s) {
-        if (!fs::is_directory(labels[s]))
-            throw travel::InputError("labels directory " + labels[s] + " does not exist");
-        const std::string seq = sequenceName(scans[s]);
-        for (const std::string& bin : travel::listFiles(scans[s], ".bin")) {
-            const std::string stem = fs::path(bin).stem().string();
-            const fs::path label = fs::path(labels[s]) / (stem + ".label");
-            if (fs::exists(label)) frames.push_back({bin, label.string(), seq + "/" + stem});
-        }
-    }
-    if (frames.empty()) {
-        std::string dirs;
-        for (std::size_t s = 0; s < scans.size(); ++s)
-            dirs += (s ? ", " : "") + scans[s] + " with " + labels[s];
-        throw travel::InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
-    }
-    if (max_frames > 0 && frames.size() > static_cast<std::size_t>(max_frames))
-        frames.resize(max_frames);
-    return frames;
-}
-
-// "sequence 00, 000000-000002; sequence 01, ..." for the report header.
-std::string describeFrames(const std::vector<FrameRef>& frames) {
-    std::string text;
-    std::size_t i = 0;
-    while (i < frames.size()) {
-        const std::string seq = frames[i].name.substr(0, frames[i].name.find('/'));
-        std::size_t j = i;
-        // A run ends where the sequence changes or restarts (the same one given twice).
-        while (j + 1 < frames.size() && frames[j + 1].name.rfind(seq + "/", 0) == 0 &&
-               frames[j + 1].name > frames[j].name)
-            ++j;
-        const auto stem = [&](std::size_t k) { return frames[k].name.substr(seq.size() + 1); };
-        text += (text.empty() ? "" : "; ") + std::string("sequence ") + seq + ", " + stem(i) +
-                (j > i ? "-" + stem(j) : "");
-        i = j + 1;
-    }
-    return text;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Running one method over the frames
-
-struct FrameRow {
-    std::string frame;
-    std::size_t points = 0;
-    travel::GroundScores ground[2];  // protocols A, B
-    bool objects = false;            // the method clustered this frame
-    travel::SegmentationEntropy entropy;
-    double coverage = 0, purity = 0;
-    std::size_t instances = 0, clustered = 0, split = 0, merged = 0;
-    uint32_t clusters = 0;
-    double ground_ms = 0, objects_ms = 0;
-};
-
-struct MethodRun {
-    std::string method;
-    std::vector<FrameRow> rows;
-    travel::ObjectScoreAccumulator objects;
-    bool clusters = false;  // any frame clustered: the method has an object stage
-};
+// Running one method over the frames, with a progress display
 
 MethodRun runMethod(const std::string& method, const travel::Params& params,
                     const std::vector<FrameRef>& frames, const std::string& progress_label) {
-    MethodRun run;
-    run.method = method;
-    const std::unique_ptr<travel::eval::Segmenter> seg =
-        travel::eval::makeSegmenter(method, params);
-    travel::PointCloud cloud;
-    travel::eval::Segmentation out;
     const bool tty = isatty(fileno(stderr));
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        const FrameRef& ref = frames[f];
+    MethodRun run = travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
         // A terminal gets one updating line; a log every 100th frame (and the first and last).
         if (tty)
             std::fprintf(stderr, "\r%s: frame %zu/%zu %s   ", progress_label.c_str(), f + 1,
-                         frames.size(), ref.name.c_str());
+                         frames.size(), frames[f].name.c_str());
         else if (f == 0 || (f + 1) % 100 == 0 || f + 1 == frames.size())
             std::fprintf(stderr, "%s: frame %zu/%zu %s\n", progress_label.c_str(), f + 1,
-                         frames.size(), ref.name.c_str());
-        FrameRow row;
-        row.frame = ref.name;
-        try {
-            travel::readKittiBin(ref.scan, cloud);
-            const std::vector<uint32_t> gt = travel::readLabelFile(ref.label, cloud.size());
-            seg->segment(cloud, out);
-            for (int p = 0; p < 2; ++p)
-                row.ground[p] = travel::scoresFrom(travel::countGround(
-                    out.labels, gt, cloud.z, params.sensor_height, kProtocols[p]));
-            row.points = cloud.size();
-            row.ground_ms = out.ground_ms;
-            row.objects_ms = out.objects_ms;
-            row.clusters = out.cluster_id.empty()
-                               ? 0
-                               : *std::max_element(out.cluster_id.begin(), out.cluster_id.end());
-            // Ground-only methods have no object stage: their object scores would be all zero.
-            row.objects = out.objects_ms > 0 || row.clusters > 0;
-            if (row.objects) {
-                const travel::ObjectScores o =
-                    travel::evaluateObjects(out.cluster_id, out.labels, gt, cloud);
-                run.objects.add(o);
-                row.entropy = o.entropy;
-                row.coverage = o.mean_coverage;
-                row.purity = o.mean_purity;
-                row.instances = o.instances.size();
-                row.clustered = o.clustered;
-                row.split = o.split;
-                row.merged = o.merged;
-                run.clusters = true;
-            }
-        } catch (const std::exception& e) {
-            // Name the scan in every error (the pipeline's own messages do not know it).
-            const std::string what = e.what();
-            throw std::runtime_error(what.find(ref.scan) == std::string::npos &&
-                                             what.find(ref.label) == std::string::npos
-                                         ? ref.scan + ": " + what
-                                         : what);
-        }
-        run.rows.push_back(std::move(row));
-    }
+                         frames.size(), frames[f].name.c_str());
+    });
     if (tty) std::fprintf(stderr, "\n");
     return run;
-}
-
-struct Summary {
-    travel::MeanStd precision[2], recall[2], f1[2], accuracy[2];
-    travel::MeanStd use, ose;  // per-frame sums (the paper's values)
-    travel::ObjectSummary objects;
-    double ground_ms = 0, objects_ms = 0;  // medians
-    bool clusters = false;
-};
-
-Summary summarize(const MethodRun& run) {
-    Summary s;
-    std::vector<double> v[2][4], use, ose, gms, oms;
-    for (const FrameRow& r : run.rows) {
-        for (int p = 0; p < 2; ++p) {
-            v[p][0].push_back(r.ground[p].precision);
-            v[p][1].push_back(r.ground[p].recall);
-            v[p][2].push_back(r.ground[p].f1);
-            v[p][3].push_back(r.ground[p].accuracy);
-        }
-        gms.push_back(r.ground_ms);
-        if (!r.objects) continue;
-        use.push_back(r.entropy.use_sum);
-        ose.push_back(r.entropy.ose_sum);
-        oms.push_back(r.objects_ms);
-    }
-    for (int p = 0; p < 2; ++p) {
-        s.precision[p] = travel::meanStd(v[p][0]);
-        s.recall[p] = travel::meanStd(v[p][1]);
-        s.f1[p] = travel::meanStd(v[p][2]);
-        s.accuracy[p] = travel::meanStd(v[p][3]);
-    }
-    s.use = travel::meanStd(use);
-    s.ose = travel::meanStd(ose);
-    s.objects = run.objects.summary();
-    s.ground_ms = travel::median(gms);
-    s.objects_ms = travel::median(oms);
-    s.clusters = run.clusters;
-    return s;
-}
-
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
 }
 
 void createDir(const std::string& dir) {
@@ -287,75 +72,6 @@ std::ofstream openOut(const fs::path& path) {
     std::ofstream out(path);
     if (!out) throw travel::InputError("cannot write " + path.string());
     return out;
-}
-
-// ---------------------------------------------------------------------------------------------
-// report
-
-std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<Summary>& sums,
-                           const std::vector<FrameRef>& frames, const std::string& setup) {
-    std::ostringstream md;
-    md << "# TRAVEL evaluation report\n\n"
-       << frames.size() << " labelled SemanticKITTI frames (" << describeFrames(frames) << "); "
-       << setup << "; machine: " << cpuModel() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
-       << " logical CPUs, single thread; " << nowText() << ".\n\n"
-       << "Mean (mu) and population standard deviation (sigma) over frames; ms = median "
-          "milliseconds per frame (each frame run once, cold caches).\n";
-    for (int p = 0; p < 2; ++p) {
-        md << "\n## Ground, protocol " << travel::protocolName(kProtocols[p]) << "\n\n"
-           << "| method | P | R | F1 μ | F1 σ | accuracy μ | accuracy σ | ms |\n"
-           << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (std::size_t m = 0; m < runs.size(); ++m) {
-            const Summary& s = sums[m];
-            md << "| " << runs[m].method << " | " << format("%.2f", s.precision[p].mean) << " | "
-               << format("%.2f", s.recall[p].mean) << " | " << format("%.2f", s.f1[p].mean) << " | "
-               << format("%.2f", s.f1[p].std) << " | " << format("%.2f", s.accuracy[p].mean)
-               << " | " << format("%.2f", s.accuracy[p].std) << " | " << format("%.1f", s.ground_ms)
-               << " |\n";
-        }
-    }
-    md << "\n## Objects\n\n"
-       << "| method | USE μ | USE σ | OSE μ | OSE σ | coverage | purity | split | merged | ms |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    std::size_t instances = 0;
-    for (std::size_t m = 0; m < runs.size(); ++m) {
-        const Summary& s = sums[m];
-        if (!s.clusters) continue;
-        instances = s.objects.instances;
-        md << "| " << runs[m].method << " | " << format("%.2f", s.use.mean) << " | "
-           << format("%.2f", s.use.std) << " | " << format("%.2f", s.ose.mean) << " | "
-           << format("%.2f", s.ose.std) << " | " << format("%.3f", s.objects.mean_coverage) << " | "
-           << format("%.3f", s.objects.mean_purity) << " | " << s.objects.split << " | "
-           << s.objects.merged << " | " << format("%.1f", s.objects_ms) << " |\n";
-    }
-    md << "\nUSE / OSE: per-frame sums over clusters / ground-truth objects (paper eqs. 6-7, "
-          "natural log). Coverage, purity, split, merged: pooled over the "
-       << instances
-       << " thing instances with >= 50 points. Ground-only methods are not in this table.\n";
-    return md.str();
-}
-
-void writeFramesCsv(const fs::path& path, const std::vector<MethodRun>& runs) {
-    std::ofstream csv = openOut(path);
-    csv << "method,frame,points,A_precision,A_recall,A_f1,A_accuracy,B_precision,B_recall,B_f1,"
-           "B_accuracy,USE_sum,OSE_sum,USE_mean,OSE_mean,gt_objects,mean_coverage,mean_purity,"
-           "instances,clustered,split,merged,clusters,ground_ms,objects_ms\n";
-    for (const MethodRun& run : runs) {
-        for (const FrameRow& r : run.rows) {
-            csv << run.method << ',' << r.frame << ',' << r.points;
-            for (int p = 0; p < 2; ++p)
-                csv << ',' << r.ground[p].precision << ',' << r.ground[p].recall << ','
-                    << r.ground[p].f1 << ',' << r.ground[p].accuracy;
-            if (r.objects)  // empty cells, not zeros, for methods without an object stage
-                csv << ',' << r.entropy.use_sum << ',' << r.entropy.ose_sum << ','
-                    << r.entropy.use_mean << ',' << r.entropy.ose_mean << ','
-                    << r.entropy.num_gt_objects << ',' << r.coverage << ',' << r.purity << ','
-                    << r.instances << ',' << r.clustered << ',' << r.split << ',' << r.merged;
-            else
-                csv << ",,,,,,,,,,,";
-            csv << ',' << r.clusters << ',' << r.ground_ms << ',' << r.objects_ms << '\n';
-        }
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -493,106 +209,56 @@ void savePng(const CImage& img, const fs::path& path) {
 // ---------------------------------------------------------------------------------------------
 // sweep
 
-struct SweepSpec {
-    std::string key;
-    std::vector<std::string> values;
-};
-
-SweepSpec parseSweep(const std::string& spec, const travel::Params& base) {
-    const std::string help =
-        "--sweep '" + spec + "': expected KEY=v1,v2,... (e.g. " + "tgf_resolution=2,4,6,8,10)";
-    const std::size_t eq = spec.find('=');
-    if (eq == std::string::npos || eq == 0) throw travel::ConfigError(help);
-    SweepSpec s{spec.substr(0, eq), splitList(spec.substr(eq + 1), ',')};
-    if (s.values.empty()) throw travel::ConfigError(help + ": no values");
-    for (const std::string& v : s.values) {
-        if (v.empty()) throw travel::ConfigError(help + ": empty value");
-        // Every value is checked (key known, value in range, params consistent) before the
-        // first run, so a typo in the last value does not waste the whole sweep.
-        travel::Params p = base;
-        travel::applyOverride(s.key + "=" + v, p);
-        p.validate();
-    }
-    return s;
-}
-
-// x positions: the values themselves when all are numbers, else 0, 1, 2, ... (e.g. booleans).
-std::vector<double> sweepPositions(const std::vector<std::string>& values) {
-    std::vector<double> xs;
-    for (const std::string& v : values) {
-        char* end = nullptr;
-        const double x = std::strtod(v.c_str(), &end);
-        if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) {
-            xs.clear();
-            for (std::size_t i = 0; i < values.size(); ++i) xs.push_back(static_cast<double>(i));
-            return xs;
-        }
-        xs.push_back(x);
-    }
-    return xs;
-}
-
-void writeSweep(const fs::path& dir, const std::string& method, const SweepSpec& spec,
-                const std::vector<Summary>& sums, std::size_t frames) {
+void writeSweep(const fs::path& dir, const std::string& method, const travel::eval::SweepSpec& spec,
+                const std::vector<EvaluationSummary>& sums, std::size_t frames) {
     const std::string stem = "sweep_" + spec.key;
     std::ofstream csv = openOut(dir / (stem + ".csv"));
-    csv << spec.key
-        << ",frames,B_precision,B_recall,B_f1,B_f1_std,A_f1,A_f1_std,coverage,purity,USE,OSE,"
-           "ground_ms_median,objects_ms_median\n";
-    for (std::size_t i = 0; i < sums.size(); ++i) {
-        const Summary& s = sums[i];
-        csv << spec.values[i] << ',' << frames << ',' << s.precision[1].mean << ','
-            << s.recall[1].mean << ',' << s.f1[1].mean << ',' << s.f1[1].std << ',' << s.f1[0].mean
-            << ',' << s.f1[0].std;
-        if (s.clusters)
-            csv << ',' << s.objects.mean_coverage << ',' << s.objects.mean_purity << ','
-                << s.use.mean << ',' << s.ose.mean;
-        else
-            csv << ",,,,";
-        csv << ',' << s.ground_ms << ',' << s.objects_ms << '\n';
-    }
+    travel::eval::writeSweepCsv(csv, spec, sums, frames);
 
-    const std::vector<double> xs = sweepPositions(spec.values);
+    const std::vector<double> xs = travel::eval::sweepPositions(spec.values);
     const std::string what = method + ", " + std::to_string(frames) + " frames";
     const auto col = [&](auto get) {
         std::vector<double> y;
-        for (const Summary& s : sums) y.push_back(get(s));
+        for (const EvaluationSummary& s : sums) y.push_back(get(s));
         return y;
     };
     const auto obj = [&](auto get) {  // NaN (not drawn) when the method does not cluster
-        return col([&](const Summary& s) { return s.clusters ? get(s) : NAN; });
+        return col([&](const EvaluationSummary& s) { return s.clusters ? get(s) : NAN; });
     };
 
     CImage ground = whiteImage(800, 500);
-    drawChart(ground, 0, 0, 800, 500, "Ground F1 vs " + spec.key + " (" + what + ")", spec.key,
-              "F1 [%]", xs, spec.values,
-              {{"F1 protocol B", col([](const Summary& s) { return s.f1[1].mean; }), kBlue},
-               {"F1 protocol A", col([](const Summary& s) { return s.f1[0].mean; }), kOrange}});
+    drawChart(
+        ground, 0, 0, 800, 500, "Ground F1 vs " + spec.key + " (" + what + ")", spec.key, "F1 [%]",
+        xs, spec.values,
+        {{"F1 protocol B", col([](const EvaluationSummary& s) { return s.f1[1].mean; }), kBlue},
+         {"F1 protocol A", col([](const EvaluationSummary& s) { return s.f1[0].mean; }), kOrange}});
     savePng(ground, dir / (stem + "_ground.png"));
 
     CImage objects = whiteImage(800, 900);
     drawChart(objects, 0, 0, 800, 450, "Thing instances vs " + spec.key + " (" + what + ")",
               spec.key, "share of instance / cluster", xs, spec.values,
-              {{"coverage", obj([](const Summary& s) { return s.objects.mean_coverage; }), kGreen},
-               {"purity", obj([](const Summary& s) { return s.objects.mean_purity; }), kPurple}});
+              {{"coverage", obj([](const EvaluationSummary& s) { return s.objects.mean_coverage; }),
+                kGreen},
+               {"purity", obj([](const EvaluationSummary& s) { return s.objects.mean_purity; }),
+                kPurple}});
     drawChart(objects, 0, 450, 800, 450, "Segmentation entropy vs " + spec.key, spec.key,
               "per-frame sum (lower is better)", xs, spec.values,
-              {{"USE", obj([](const Summary& s) { return s.use.mean; }), kRed},
-               {"OSE", obj([](const Summary& s) { return s.ose.mean; }), kBlue}});
+              {{"USE", obj([](const EvaluationSummary& s) { return s.use.mean; }), kRed},
+               {"OSE", obj([](const EvaluationSummary& s) { return s.ose.mean; }), kBlue}});
     objects.line(20, 450, 780, 450, kGrid);
     savePng(objects, dir / (stem + "_objects.png"));
 
     CImage time = whiteImage(800, 500);
-    drawChart(time, 0, 0, 800, 500, "Median ms per frame vs " + spec.key + " (" + what + ")",
-              spec.key, "milliseconds (single thread)", xs, spec.values,
-              {{"ground", col([](const Summary& s) { return s.ground_ms; }), kBlue},
-               {"objects", obj([](const Summary& s) { return s.objects_ms; }), kGreen},
-               {"ground + objects",
-                col([](const Summary& s) { return s.ground_ms + s.objects_ms; }), kBlack}},
-              true);
+    drawChart(
+        time, 0, 0, 800, 500, "Median ms per frame vs " + spec.key + " (" + what + ")", spec.key,
+        "milliseconds (single thread)", xs, spec.values,
+        {{"ground", col([](const EvaluationSummary& s) { return s.ground_ms; }), kBlue},
+         {"objects", obj([](const EvaluationSummary& s) { return s.objects_ms; }), kGreen},
+         {"ground + objects",
+          col([](const EvaluationSummary& s) { return s.ground_ms + s.objects_ms; }), kBlack}},
+        true);
     savePng(time, dir / (stem + "_time.png"));
 }
-
 // ---------------------------------------------------------------------------------------------
 
 int run(int argc, char** argv) {
@@ -654,46 +320,54 @@ int run(int argc, char** argv) {
                                            sweep.isSet() ? "--sweep" : "--method");
     if (is_sweep && !sweep.isSet())
         throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    travel::Params params = travel::loadPreset(preset.getValue());
+    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
     std::string setup = "preset " + preset.getValue();
     if (config.isSet()) setup += ", config " + config.getValue();
     for (const std::string& kv : set.getValue()) setup += ", " + kv;
 
-    std::vector<std::string> names =
-        methods.isSet() ? splitList(methods.getValue(), ',') : travel::eval::methodNames();
+    std::vector<std::string> names = methods.isSet()
+                                         ? travel::eval::splitList(methods.getValue(), ',')
+                                         : travel::eval::methodNames();
     if (is_sweep) names = {method.getValue()};
     for (const std::string& name : names)
         travel::eval::makeSegmenter(name, params);  // throws, listing the valid names
-    const SweepSpec spec = is_sweep ? parseSweep(sweep.getValue(), params) : SweepSpec{};
+    const travel::eval::SweepSpec spec =
+        is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
+    if (scans.getValue().empty() || labels.getValue().empty())
+        throw TCLAP::CmdLineParseException("--scans DIR and --labels DIR are required", "--scans");
+    if (scans.getValue().size() != labels.getValue().size())
+        throw TCLAP::CmdLineParseException(
+            "give one --labels DIR per --scans DIR (paired by order): " +
+                std::to_string(scans.getValue().size()) + " --scans, " +
+                std::to_string(labels.getValue().size()) + " --labels",
+            "--labels");
     const std::vector<FrameRef> frames =
-        labelledFrames(scans.getValue(), labels.getValue(), max_frames.getValue());
+        travel::eval::labelledFrames(scans.getValue(), labels.getValue(), max_frames.getValue());
     createDir(out.getValue());
     const fs::path dir(out.getValue());
 
     if (!is_sweep) {
         std::vector<MethodRun> runs;
-        std::vector<Summary> sums;
-        for (const std::string& name : names) {
-            runs.push_back(runMethod(name, params, frames, name));
-            sums.push_back(summarize(runs.back()));
-        }
-        const std::string md = reportMarkdown(runs, sums, frames, setup);
+        for (const std::string& name : names) runs.push_back(runMethod(name, params, frames, name));
+        const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
         openOut(dir / "report.md") << md;
-        writeFramesCsv(dir / "frames.csv", runs);
+        std::ofstream frames_csv = openOut(dir / "frames.csv");
+        travel::eval::writeFramesCsv(frames_csv, runs);
         std::cout << md << "\nWritten: " << (dir / "report.md").string() << ", "
                   << (dir / "frames.csv").string() << "\n";
         return 0;
     }
 
-    std::vector<Summary> sums;
+    std::vector<EvaluationSummary> sums;
     for (const std::string& value : spec.values) {
         travel::Params p = params;
         travel::applyOverride(spec.key + "=" + value, p);
         p.validate();
         const MethodRun run = runMethod(names[0], p, frames, spec.key + "=" + value);
-        sums.push_back(summarize(run));
-        const Summary& s = sums.back();
+        sums.push_back(run.summary);
+        const EvaluationSummary& s = sums.back();
         std::printf("%s=%-8s B F1 %6.2f  A F1 %6.2f", spec.key.c_str(), value.c_str(), s.f1[1].mean,
                     s.f1[0].mean);
         if (s.clusters)

@@ -19,11 +19,10 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
-#include "travel/Metrics.hpp"
-#include "travel/ObjectMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/eval/FrameEvaluation.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Segmenter.hpp"
 
 namespace fs = std::filesystem;
@@ -34,13 +33,6 @@ struct StageSeries {
     const char* name;
     std::vector<double> ms;
 };
-
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
-}
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
@@ -83,7 +75,8 @@ int run(int argc, char** argv) {
                           cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    travel::Params params = travel::loadPreset(preset.getValue());
+    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
     if (dump.getValue()) {
         std::cout << travel::paramsToYaml(params);
         return 0;
@@ -117,12 +110,9 @@ int run(int argc, char** argv) {
                    "ms_clusters,ms_objects_total,ms_total\n";
     }
 
-    travel::PointCloud cloud;
-    travel::eval::Segmentation result;
+    travel::eval::FrameEvaluation frame;
+    travel::eval::EvaluationAccumulator totals;
     std::vector<uint32_t> encoded;
-    const travel::GroundProtocol protocols[2] = {travel::GroundProtocol::A,
-                                                 travel::GroundProtocol::B};
-    std::vector<double> f1[2], precision[2], recall[2], accuracy[2];
     StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}},   {"node_fitting", {}},
                             {"graph_search", {}}, {"ttmf", {}},        {"labelling", {}},
                             {"ground_total", {}}, {"range_image", {}}, {"horizontal", {}},
@@ -130,8 +120,6 @@ int run(int argc, char** argv) {
                             {"total", {}}};
     constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
     constexpr int kObjectsStage = 11;  // "objects_total"
-    travel::ObjectScoreAccumulator object_scores;
-    std::vector<double> ose_sum, use_sum;
     std::size_t unlabelled_frames = 0;
     const bool verbose = !quiet.getValue();
     const bool tty = isatty(fileno(stderr));
@@ -141,30 +129,25 @@ int run(int argc, char** argv) {
                     "objects: OSE USE (sums) coverage purity");
 
     for (std::size_t f = 0; f < files.size(); ++f) {
-        const fs::path bin(files[f]);
-        const std::string stem = bin.stem().string();
-        try {
-            travel::readKittiBin(files[f], cloud);
-            segmenter->segment(cloud, result);
-        } catch (const std::exception& e) {
-            // Name the scan in every error (the pipeline's own messages do not know it).
-            const std::string what = e.what();
-            throw std::runtime_error(
-                what.find(files[f]) == std::string::npos ? files[f] + ": " + what : what);
+        const std::string stem = fs::path(files[f]).stem().string();
+        std::string label_path;
+        if (labels.isSet()) {
+            label_path = (fs::path(labels.getValue()) / (stem + ".label")).string();
+            if (!fs::exists(label_path)) {
+                label_path.clear();
+                ++unlabelled_frames;
+            }
         }
+        travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame);
+        totals.add(frame);
+        const travel::PointCloud& cloud = frame.cloud;
+        const travel::eval::Segmentation& result = frame.segmentation;
 
         encoded.resize(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)
             encoded[i] = travel::encodeLabel(result.labels[i], result.cluster_id[i]);
         travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
 
-        std::size_t counts[4] = {0, 0, 0, 0};
-        for (const travel::PointClass c : result.labels) ++counts[static_cast<int>(c)];
-        const uint32_t num_clusters =
-            result.cluster_id.empty()
-                ? 0
-                : *std::max_element(result.cluster_id.begin(), result.cluster_id.end());
-        auto count = [&](travel::PointClass c) { return counts[static_cast<int>(c)]; };
         travel::StageTimings t = result.stages;  // per stage for TRAVEL's ground stage
         t.ground_total = result.ground_ms;
         t.objects_total = result.objects_ms;
@@ -183,34 +166,12 @@ int run(int argc, char** argv) {
                                    t.ground_total + t.objects_total};
         for (int s = 0; s < kNumStages; ++s) stages[s].ms.push_back(stage_ms[s]);
 
-        travel::GroundScores scores[2]{};
-        travel::ObjectScores objects;
-        bool scored = false;
-        if (labels.isSet()) {
-            const fs::path label_path = fs::path(labels.getValue()) / (stem + ".label");
-            if (fs::exists(label_path)) {
-                const std::vector<uint32_t> gt =
-                    travel::readLabelFile(label_path.string(), cloud.size());
-                for (int p = 0; p < 2; ++p) {
-                    scores[p] = travel::scoresFrom(travel::countGround(
-                        result.labels, gt, cloud.z, params.sensor_height, protocols[p]));
-                    precision[p].push_back(scores[p].precision);
-                    recall[p].push_back(scores[p].recall);
-                    f1[p].push_back(scores[p].f1);
-                    accuracy[p].push_back(scores[p].accuracy);
-                }
-                objects = travel::evaluateObjects(result.cluster_id, result.labels, gt, cloud);
-                object_scores.add(objects);
-                ose_sum.push_back(objects.entropy.ose_sum);
-                use_sum.push_back(objects.entropy.use_sum);
-                scored = true;
-            } else {
-                ++unlabelled_frames;
-            }
-        }
+        const bool scored = frame.scored;
+        const travel::GroundScores* scores = frame.ground;
+        const travel::ObjectScores& objects = frame.objects;
         if (verbose) {
             std::printf("%-8s %7zu %6zu %5zu %6.2f", stem.c_str(), cloud.size(),
-                        count(travel::PointClass::Ground), std::size_t{num_clusters},
+                        frame.count(travel::PointClass::Ground), std::size_t{frame.clusters},
                         t.ground_total + t.objects_total);
             for (int p = 0; p < 2 && scored; ++p)
                 std::printf(" | %5.2f %5.2f %5.2f %5.2f", scores[p].precision, scores[p].recall,
@@ -223,10 +184,11 @@ int run(int argc, char** argv) {
             std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
         }
         if (csv_out) {
-            csv_out << stem << ',' << cloud.size() << ',' << count(travel::PointClass::Invalid)
-                    << ',' << count(travel::PointClass::Ground) << ','
-                    << count(travel::PointClass::NonGround) << ','
-                    << count(travel::PointClass::Outlier);
+            csv_out << stem << ',' << cloud.size() << ','
+                    << frame.count(travel::PointClass::Invalid) << ','
+                    << frame.count(travel::PointClass::Ground) << ','
+                    << frame.count(travel::PointClass::NonGround) << ','
+                    << frame.count(travel::PointClass::Outlier);
             for (int p = 0; p < 2; ++p) {
                 if (scored)
                     csv_out << ',' << scores[p].precision << ',' << scores[p].recall << ','
@@ -234,7 +196,7 @@ int run(int argc, char** argv) {
                 else
                     csv_out << ",,,,";
             }
-            csv_out << ',' << std::size_t{num_clusters};
+            csv_out << ',' << std::size_t{frame.clusters};
             if (scored)
                 csv_out << ',' << objects.entropy.ose_sum << ',' << objects.entropy.use_sum << ','
                         << objects.entropy.ose_mean << ',' << objects.entropy.use_mean << ','
@@ -255,15 +217,14 @@ int run(int argc, char** argv) {
         if (unlabelled_frames)
             std::printf("%zu scans had no .label file and are not in the metrics\n",
                         unlabelled_frames);
-        for (int p = 0; p < 2; ++p) {
-            const auto P = travel::meanStd(precision[p]), R = travel::meanStd(recall[p]);
-            const auto F = travel::meanStd(f1[p]), A = travel::meanStd(accuracy[p]);
+        const travel::eval::EvaluationSummary sum = totals.summary();
+        for (int p = 0; p < 2; ++p)
             std::printf(
                 "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
                 "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
-                travel::protocolName(protocols[p]), F.n, P.mean, P.std, R.mean, R.std, F.mean,
-                F.std, A.mean, A.std);
-        }
+                travel::protocolName(travel::eval::kGroundProtocols[p]), sum.f1[p].n,
+                sum.precision[p].mean, sum.precision[p].std, sum.recall[p].mean, sum.recall[p].std,
+                sum.f1[p].mean, sum.f1[p].std, sum.accuracy[p].mean, sum.accuracy[p].std);
         const bool clusters_objects =
             std::any_of(stages[kObjectsStage].ms.begin(), stages[kObjectsStage].ms.end(),
                         [](double ms) { return ms > 0.0; });
@@ -271,12 +232,11 @@ int run(int argc, char** argv) {
             std::printf("Objects: not evaluated (%s segments ground only)\n",
                         method.getValue().c_str());
         } else {
-            const travel::ObjectSummary o = object_scores.summary();
-            const auto ose = travel::meanStd(ose_sum), use = travel::meanStd(use_sum);
+            const travel::ObjectSummary& o = sum.objects;
             std::printf(
                 "Objects over %zu frames: USE %.2f +- %.2f, OSE %.2f +- %.2f (per-frame sums, "
                 "paper eqs. 6-7); per object: OSE %.3f, USE %.3f per cluster\n",
-                o.frames, use.mean, use.std, ose.mean, ose.std, o.ose_per_object,
+                o.frames, sum.use.mean, sum.use.std, sum.ose.mean, sum.ose.std, o.ose_per_object,
                 o.use_per_cluster);
             std::printf(
                 "Thing instances (>= 50 points): %zu, mean coverage %.3f, mean purity %.3f, "

@@ -4,14 +4,9 @@
 // from an MRPT rawlog or a KITTI sequence and writes every export (see --help).
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservationIMU.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
@@ -29,11 +24,13 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "MapSources.hpp"
 #include "MemoryLimit.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/PoseFiles.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -43,22 +40,9 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-struct Options {
-    std::string input, output_dir, config, poses, calib;
-    std::vector<std::string> sets;
-    std::string extent;
-    double resolution = 0;
-    long max_frames = 0;
-    bool quiet = false;
-    std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
-};
-
-CPose3D toPose(const Eigen::Isometry3d& T) {
-    mrpt::math::CMatrixDouble44 m;
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
-    return CPose3D(m);
-}
+using travel::apps::Options;
+using travel::apps::PoseFileSource;
+using travel::apps::Stats;
 
 /// The map's options: defaults, --config (ini section [travel] or [traversabilityMap] of map
 /// and TRAVEL keys; YAML: TRAVEL keys), --extent / --resolution, then each --set.
@@ -113,185 +97,6 @@ travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
         throw std::runtime_error(std::string("--set/--extent/--resolution: ") + e.what());
     }
     return options;
-}
-
-class Progress {
-  public:
-    explicit Progress(bool enabled) : tty_(enabled && isatty(STDERR_FILENO)) {}
-    void update(std::size_t frames, std::size_t total, double seconds) {
-        if (!tty_) return;
-        if (total)
-            std::fprintf(stderr, "\r  frame %zu/%zu  %.1f s   ", frames, total, seconds);
-        else
-            std::fprintf(stderr, "\r  frame %zu  %.1f s   ", frames, seconds);
-        std::fflush(stderr);
-    }
-    void done() {
-        if (tty_) std::fprintf(stderr, "\n");
-    }
-
-  private:
-    bool tty_;
-};
-
-struct Stats {
-    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0, actions = 0;
-    std::string pose_source;
-};
-
-/// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.
-struct PoseFileSource {
-    travel_mrpt::PoseTrajectory trajectory;
-    std::optional<CPose3D> at(double t, std::size_t frame) const {
-        if (trajectory.timed()) {
-            const auto T = travel_mrpt::poseAt(trajectory, t);
-            return T ? std::optional<CPose3D>(toPose(*T)) : std::nullopt;
-        }
-        if (frame < trajectory.size()) return toPose(trajectory.poses[frame]);
-        return std::nullopt;
-    }
-};
-
-void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-               const std::optional<PoseFileSource>& pose_file) {
-    if (!fs::exists(o.input)) throw std::runtime_error(o.input + ": no such file");
-    mrpt::io::CFileGZInputStream file;
-    if (!file.open(o.input)) throw std::runtime_error(o.input + ": cannot open for reading");
-    auto archive = mrpt::serialization::archiveFrom(file);
-    Progress progress(!o.quiet);
-    const auto start = Clock::now();
-    // Pose sources, by priority: the pose file, SensoryFrame actions (increments composed from
-    // the identity), the latest CObservationOdometry record.
-    CPose3D action_pose, odometry_pose;
-    bool have_actions = false, have_odometry = false;
-    const auto insert = [&](const mrpt::obs::CObservation& obs) {
-        std::optional<CPose3D> pose;
-        if (pose_file)
-            pose = pose_file->at(mrpt::Clock::toDouble(obs.timestamp), stats.lidar);
-        else if (have_actions)
-            pose = action_pose;
-        else if (have_odometry)
-            pose = odometry_pose;
-        if (pose_file && !pose) {
-            ++stats.no_pose;
-            return;
-        }
-        if (map.insertObservation(obs, pose ? *pose : CPose3D())) {
-            ++stats.inserted;
-            ++stats.lidar;
-        } else {
-            ++stats.rejected;
-        }
-    };
-    for (;;) {
-        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
-        mrpt::serialization::CSerializable::Ptr object;
-        const uint64_t before = file.getPosition();
-        try {
-            object = archive.ReadObject();
-        } catch (const mrpt::serialization::CExceptionEOF&) {
-            if (file.getPosition() == before) break;
-            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
-                                     ": truncated (end of file inside the record)");
-        } catch (const std::bad_alloc&) {
-            throw std::runtime_error(o.input + ": record " + std::to_string(stats.records) +
-                                     ": corrupt (announces more data than --max-memory allows)");
-        } catch (const std::exception& e) {
-            std::string what = e.what();
-            what = what.substr(0, what.find('\n'));
-            throw std::runtime_error(
-                o.input + ": record " + std::to_string(stats.records) + ": cannot read" +
-                (stats.records == 0 ? " (is it an MRPT rawlog?)" : "") + ": " + what);
-        }
-        ++stats.records;
-        // One observation, at top level or inside a SensoryFrame: odometry and IMU feed the
-        // filter (motion, attitude), anything else is a LiDAR candidate.
-        const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
-            if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs)) {
-                odometry_pose = CPose3D(odo->odometry);
-                have_odometry = true;
-                map.filter().processOdometry(*odo);
-            } else if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(obs)) {
-                map.filter().processImu(*imu);
-            } else if (obs) {
-                insert(*obs);
-            }
-        };
-        if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object)) {
-            if (auto move = actions->getBestMovementEstimation()) {
-                action_pose = action_pose + CPose3D(move->poseChange->getMeanVal());
-                have_actions = true;
-                ++stats.actions;
-            }
-        } else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
-            for (const auto& obs : *sf) observation(obs);
-        } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
-            observation(obs);
-        }
-        progress.update(stats.inserted, 0,
-                        std::chrono::duration<double>(Clock::now() - start).count());
-    }
-    progress.done();
-    stats.pose_source = pose_file      ? "pose file " + o.poses
-                        : have_actions ? "odometry actions of the SensoryFrames (" +
-                                             std::to_string(stats.actions) + " increments)"
-                        : have_odometry ? "odometry in the rawlog"
-                                        : "none (identity poses)";
-}
-
-void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-              std::optional<PoseFileSource> pose_file) {
-    const fs::path dir(o.input);
-    const fs::path scans = fs::exists(dir / "velodyne") ? dir / "velodyne" : dir;
-    std::vector<std::string> files = travel::listFiles(scans.string(), ".bin");
-    if (files.empty()) throw std::runtime_error(scans.string() + ": no .bin scans");
-    std::string calib = o.calib;
-    if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
-    if (pose_file && !pose_file->trajectory.timed()) {
-        if (!calib.empty())
-            travel_mrpt::kittiCameraToLidar(pose_file->trajectory,
-                                            travel_mrpt::readKittiCalibTr(calib));
-        else
-            std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
-        if (pose_file->trajectory.size() < files.size())
-            std::cerr << "travel-map: warning: " << pose_file->trajectory.size() << " poses for "
-                      << files.size() << " scans: the scans without a pose are skipped\n";
-    }
-    Progress progress(!o.quiet);
-    const auto start = Clock::now();
-    travel::PointCloud cloud;
-    auto obs = mrpt::obs::CObservationPointCloud::Create();
-    auto points = mrpt::maps::CPointsMapXYZI::Create();
-    obs->pointcloud = points;
-    obs->sensorLabel = "velodyne";
-    for (std::size_t k = 0; k < files.size(); ++k) {
-        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
-        ++stats.records;
-        std::optional<CPose3D> pose;
-        if (pose_file) {
-            pose = pose_file->at(0.1 * double(k), k);
-            if (!pose) {
-                ++stats.no_pose;
-                continue;
-            }
-        }
-        travel::readKittiBin(files[k], cloud);  // errors name the file
-        points->clear();
-        points->reserve(cloud.size());
-        for (std::size_t i = 0; i < cloud.size(); ++i)
-            points->insertPointFast(cloud.x[i], cloud.y[i], cloud.z[i]);
-        points->mark_as_modified();
-        obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
-        ++stats.lidar;
-        if (map.insertObservation(*obs, pose ? *pose : CPose3D()))
-            ++stats.inserted;
-        else
-            ++stats.rejected;
-        progress.update(k + 1, files.size(),
-                        std::chrono::duration<double>(Clock::now() - start).count());
-    }
-    progress.done();
-    stats.pose_source = pose_file ? "pose file " + o.poses : "none (identity poses)";
 }
 
 int run(int argc, char** argv) {
@@ -395,9 +200,9 @@ int run(int argc, char** argv) {
 
     Stats stats;
     if (kitti)
-        mapKitti(o, map, stats, pose_file);
+        travel::apps::mapKitti(o, map, stats, pose_file);
     else
-        mapRawlog(o, map, stats, pose_file);
+        travel::apps::mapRawlog(o, map, stats, pose_file);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (stats.pose_source.rfind("none", 0) == 0 && !o.quiet)
         std::cerr << "travel-map: warning: " << o.input

@@ -18,10 +18,11 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
+#include "travel/eval/KittiIO.hpp"
+#include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 
@@ -42,15 +43,6 @@ struct Options {
     int size = 800;
     bool nodes = true;
 };
-
-std::vector<std::string> splitCommas(const std::string& s) {
-    std::vector<std::string> parts;
-    std::stringstream in(s);
-    std::string part;
-    while (std::getline(in, part, ','))
-        if (!part.empty()) parts.push_back(part);
-    return parts;
-}
 
 Options parseCommandLine(int argc, char** argv) {
     TCLAP::CmdLine cmd(
@@ -84,7 +76,8 @@ Options parseCommandLine(int argc, char** argv) {
 
     o.scan = scan.getValue();
     o.out = out.getValue();
-    o.methods = splitCommas(methods.getValue());
+    for (const std::string& m : travel::eval::splitList(methods.getValue(), ','))
+        if (!m.empty()) o.methods.push_back(m);
     o.preset = preset.getValue();
     o.config = config.getValue();
     o.overrides = set.getValue();

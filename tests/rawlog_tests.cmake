@@ -16,3 +16,7 @@ add_test(NAME apps.travel_rawlog_cli
     -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_rawlog
     -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog.cmake)
 set_tests_properties(apps.travel_rawlog_cli PROPERTIES TIMEOUT 300)
+
+# The one rawlog reader of travel-rawlog and travel-map: records, exact error messages, motion.
+travel_mrpt_test(test_rawlog_reader test_rawlog_reader.cpp)
+target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::io mrpt::serialization)

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 
 namespace fs = std::filesystem;
 using travel::InputError;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "travel/Metrics.hpp"
+#include "travel/eval/Metrics.hpp"
 
 using travel::ConfusionCounts;
 using travel::countGround;

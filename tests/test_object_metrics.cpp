@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "travel/KittiIO.hpp"
-#include "travel/ObjectMetrics.hpp"
+#include "travel/eval/KittiIO.hpp"
+#include "travel/eval/ObjectMetrics.hpp"
 
 namespace fs = std::filesystem;
 

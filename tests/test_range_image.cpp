@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/Params.hpp"
 #include "travel/RangeImage.hpp"
 #include "travel/sim/Scenes.hpp"

@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <string>
 
-#include "travel/KittiIO.hpp"
-#include "travel/Metrics.hpp"
-#include "travel/ObjectMetrics.hpp"
+#include "travel/eval/KittiIO.hpp"
+#include "travel/eval/Metrics.hpp"
+#include "travel/eval/ObjectMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "travel/GroundLabelling.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/NodeFitting.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"

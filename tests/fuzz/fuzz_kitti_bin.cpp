@@ -4,7 +4,7 @@
 
 #include "FuzzCommon.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 
 namespace {
 constexpr std::size_t kMaxPoints = 20000;

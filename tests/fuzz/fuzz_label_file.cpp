@@ -4,7 +4,7 @@
 
 #include "FuzzCommon.hpp"
 #include "travel/Errors.hpp"
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::string& path = travel_fuzz::tempPath(".label");

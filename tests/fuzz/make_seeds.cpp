@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "travel/KittiIO.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 

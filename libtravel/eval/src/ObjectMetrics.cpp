@@ -1,7 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel/ObjectMetrics.hpp"
+#include "travel/eval/ObjectMetrics.hpp"
 
-#include "travel/Metrics.hpp"
+#include "travel/eval/Metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel/Metrics.hpp"
+#include "travel/eval/Metrics.hpp"
 
 #include <algorithm>
 

@@ -1,0 +1,165 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "MapSources.hpp"
+
+#include <mrpt/maps/CPointsMapXYZI.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "travel/eval/KittiIO.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace fs = std::filesystem;
+using mrpt::poses::CPose3D;
+using Clock = std::chrono::steady_clock;
+
+namespace travel::apps {
+
+namespace {
+
+CPose3D toPose(const Eigen::Isometry3d& T) {
+    mrpt::math::CMatrixDouble44 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
+    return CPose3D(m);
+}
+
+class Progress {
+  public:
+    explicit Progress(bool enabled) : tty_(enabled && isatty(STDERR_FILENO)) {}
+    void update(std::size_t frames, std::size_t total, double seconds) {
+        if (!tty_) return;
+        if (total)
+            std::fprintf(stderr, "\r  frame %zu/%zu  %.1f s   ", frames, total, seconds);
+        else
+            std::fprintf(stderr, "\r  frame %zu  %.1f s   ", frames, seconds);
+        std::fflush(stderr);
+    }
+    void done() {
+        if (tty_) std::fprintf(stderr, "\n");
+    }
+
+  private:
+    bool tty_;
+};
+
+}  // namespace
+
+std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
+    if (trajectory.timed()) {
+        const auto T = travel_mrpt::poseAt(trajectory, t);
+        return T ? std::optional<CPose3D>(toPose(*T)) : std::nullopt;
+    }
+    if (frame < trajectory.size()) return toPose(trajectory.poses[frame]);
+    return std::nullopt;
+}
+
+void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+               const std::optional<PoseFileSource>& pose_file) {
+    travel_mrpt::RawlogReader reader(o.input);
+    // Pose sources, by priority: the pose file, then the rawlog's motion (SensoryFrame actions
+    // composed from the identity, else the latest CObservationOdometry record).
+    travel_mrpt::RawlogMotion motion(map.filter());
+    Progress progress(!o.quiet);
+    const auto start = Clock::now();
+    // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
+    // the robot pose, anything else is a LiDAR candidate.
+    const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
+        if (!obs || motion.process(*obs)) return;
+        const std::optional<CPose3D> pose =
+            pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), stats.lidar)
+                      : motion.robotPose();
+        if (pose_file && !pose) {
+            ++stats.no_pose;
+            return;
+        }
+        if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
+            ++stats.inserted;
+            ++stats.lidar;
+        } else {
+            ++stats.rejected;
+        }
+    };
+    while (!(o.max_frames > 0 && long(stats.inserted) >= o.max_frames)) {
+        const auto record = reader.next();
+        if (!record) break;
+        ++stats.records;
+        if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(record))
+            for (const auto& obs : *sf) observation(obs);
+        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(record))
+            observation(obs);
+        else
+            motion.process(*record);  // odometry actions
+        progress.update(stats.inserted, 0,
+                        std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    progress.done();
+    stats.pose_source = pose_file          ? "pose file " + o.poses
+                        : motion.actions() ? "odometry actions of the SensoryFrames (" +
+                                                 std::to_string(motion.actions()) + " increments)"
+                        : motion.hasOdometry() ? "odometry in the rawlog"
+                                               : "none (identity poses)";
+}
+
+void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+              std::optional<PoseFileSource> pose_file) {
+    const fs::path dir(o.input);
+    const fs::path scans = fs::exists(dir / "velodyne") ? dir / "velodyne" : dir;
+    std::vector<std::string> files = travel::listFiles(scans.string(), ".bin");
+    if (files.empty()) throw std::runtime_error(scans.string() + ": no .bin scans");
+    std::string calib = o.calib;
+    if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
+    if (pose_file && !pose_file->trajectory.timed()) {
+        if (!calib.empty())
+            travel_mrpt::kittiCameraToLidar(pose_file->trajectory,
+                                            travel_mrpt::readKittiCalibTr(calib));
+        else
+            std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
+        if (pose_file->trajectory.size() < files.size())
+            std::cerr << "travel-map: warning: " << pose_file->trajectory.size() << " poses for "
+                      << files.size() << " scans: the scans without a pose are skipped\n";
+    }
+    Progress progress(!o.quiet);
+    const auto start = Clock::now();
+    travel::PointCloud cloud;
+    auto obs = mrpt::obs::CObservationPointCloud::Create();
+    auto points = mrpt::maps::CPointsMapXYZI::Create();
+    obs->pointcloud = points;
+    obs->sensorLabel = "velodyne";
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
+        ++stats.records;
+        std::optional<CPose3D> pose;
+        if (pose_file) {
+            pose = pose_file->at(0.1 * double(k), k);
+            if (!pose) {
+                ++stats.no_pose;
+                continue;
+            }
+        }
+        travel::readKittiBin(files[k], cloud);  // errors name the file
+        points->clear();
+        points->reserve(cloud.size());
+        for (std::size_t i = 0; i < cloud.size(); ++i)
+            points->insertPointFast(cloud.x[i], cloud.y[i], cloud.z[i]);
+        points->mark_as_modified();
+        obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
+        ++stats.lidar;
+        if (map.insertObservation(*obs, pose ? *pose : CPose3D()))
+            ++stats.inserted;
+        else
+            ++stats.rejected;
+        progress.update(k + 1, files.size(),
+                        std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    progress.done();
+    stats.pose_source = pose_file ? "pose file " + o.poses : "none (identity poses)";
+}
+
+}  // namespace travel::apps

@@ -1,0 +1,49 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel-map's inputs: an MRPT rawlog (through travel_mrpt::RawlogReader / RawlogMotion) or a
+// KITTI sequence, fed frame by frame at its robot pose into a CTraversabilityMap.
+#pragma once
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "MemoryLimit.hpp"
+#include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/PoseFiles.hpp"
+
+namespace travel::apps {
+
+struct Options {
+    std::string input, output_dir, config, poses, calib;
+    std::vector<std::string> sets;
+    std::string extent;
+    double resolution = 0;
+    long max_frames = 0;
+    bool quiet = false;
+    std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
+};
+
+struct Stats {
+    std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
+    std::string pose_source;
+};
+
+/// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.
+struct PoseFileSource {
+    travel_mrpt::PoseTrajectory trajectory;
+    std::optional<mrpt::poses::CPose3D> at(double t, std::size_t frame) const;
+};
+
+/// Maps every LiDAR observation of the rawlog o.input.
+void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+               const std::optional<PoseFileSource>& pose_file);
+
+/// Maps the KITTI sequence directory o.input (velodyne/*.bin or the .bin files directly).
+void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
+              std::optional<PoseFileSource> pose_file);
+
+}  // namespace travel::apps

@@ -1,0 +1,222 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel-rawlog's job, apart from its command line: the options, the per-record work
+// (RawlogSegmenter: the filter, the added observations, the notes), the output files besides the
+// rawlog (per-frame CSV, label reference, bird's-eye PNG and PLY) and the summary. Errors:
+// every failure becomes one line "travel-rawlog: error: <file>[: record N]: <what>".
+#pragma once
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/serialization/CSerializable.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <regex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "MemoryLimit.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
+#include "travel_mrpt/LabelledOutputs.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace travel::apps {
+
+using mrpt::obs::CObservation;
+using travel::PointClass;
+
+/// A failure with the file (and record) it concerns; main() prints it on one line.
+struct AppError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+inline std::string where(const std::string& file, long record = -1) {
+    return record < 0 ? file : file + ": record " + std::to_string(record);
+}
+
+/// Creates the directory that will hold `path`.
+void createParentDirectory(const std::string& path);
+
+/// The valid points of a frame as an ASCII PLY (x y z red green blue), in the aligned frame, in
+/// the bird's-eye colours.
+void writePly(const std::string& path, const travel::AlignedCloud& aligned,
+              const travel::Result& result);
+
+struct Totals {
+    std::size_t frames = 0, points = 0, skipped = 0, clusters = 0, levelled = 0, deskewed = 0;
+    std::array<std::size_t, 4> per_class{};
+    std::vector<double> process_ms, convert_ms;
+};
+
+/// The per-frame CSV (--csv); nothing when the path is empty.
+class CsvLog {
+  public:
+    explicit CsvLog(const std::string& path);
+    void add(std::size_t frame, const mrpt::obs::CObservation& obs,
+             const travel_mrpt::TravelFrame& f);
+
+  private:
+    std::string path_;
+    std::ofstream file_;
+};
+
+/// The label reference file (--label-reference), written frame by frame; nothing when the path
+/// is empty.
+class ReferenceLog {
+  public:
+    explicit ReferenceLog(const std::string& path);
+    void add(const travel::Result& r);
+    void finish();
+
+  private:
+    std::string path_;
+    std::ofstream file_;
+    std::size_t frames_ = 0;
+};
+
+struct Options {
+    std::optional<int> exit_code;  // set when the command line says stop (--help, error)
+    std::string input, output, config, preset, sensor_label_regex, png_prefix, csv, label_reference;
+    bool plain_clouds = true;
+    std::vector<std::string> overrides;
+    bool quiet = false;
+    bool ignore_sensor_pose = false;
+    int png_size = 800;
+    double png_metres_per_pixel = 0.075;
+    std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
+};
+
+class RawlogSegmenter {
+  public:
+    RawlogSegmenter(const Options& options, const travel_mrpt::TravelFilterOptions& filter_options)
+        : options_(options),
+          label_filter_(filter_options.sensor_label),
+          filter_(filter_options),
+          csv_(options.csv),
+          reference_(options.label_reference) {
+        // Notes from the filter (no motion data, ...) once each, in our own format.
+        filter_.setMinLoggingLevel(options.quiet ? mrpt::system::LVL_ERROR
+                                                 : mrpt::system::LVL_INFO);
+        filter_.logging_enable_console_output = false;
+        filter_.logRegisterCallback(
+            [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,
+                   const mrpt::Clock::time_point&) { noteOnce(std::string(msg)); });
+        if (!options.png_prefix.empty()) {
+            createParentDirectory(options.png_prefix + "_x");
+            birds_eye_.size_px = options.png_size;
+            birds_eye_.metres_per_pixel = options.png_metres_per_pixel;
+        }
+    }
+
+    /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
+    bool processMotion(const mrpt::serialization::CSerializable& record) {
+        return motion_.process(record);
+    }
+
+    /// Processes one observation of the record, appending the outputs to `added`.
+    void processObservation(const CObservation& obs, long record,
+                            std::vector<CObservation::Ptr>& added) {
+        if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs) ||
+            travel_mrpt::isTravelOutput(obs))
+            return;
+        std::string why_not;
+        if (!filter_.filter(obs, frame_, &why_not)) {
+            if (!std::regex_match(obs.sensorLabel, label_filter_)) {
+                noteOnce("ignored (does not match the sensor label regex): " + obs.sensorLabel);
+                return;
+            }
+            ++totals_.skipped;
+            noteOnce("skipped " + obs.sensorLabel + " (" + why_not + ")");
+            return;
+        }
+        const travel::Result& result = frame_.result;
+        if (result.labels.size() != frame_.cloud.size())
+            throw AppError(where(options_.input, record) + ": pipeline returned " +
+                           std::to_string(result.labels.size()) + " labels for " +
+                           std::to_string(frame_.cloud.size()) + " points");
+
+        outputs_.add(obs, frame_, options_.plain_clouds, added);
+
+        const std::size_t frame = totals_.frames++;
+        totals_.points += frame_.cloud.size();
+        for (std::size_t c = 0; c < 4; ++c) totals_.per_class[c] += result.class_counts[c];
+        totals_.clusters += result.clusters.size();
+        totals_.levelled += frame_.levelled;
+        totals_.deskewed += frame_.deskewed;
+        totals_.process_ms.push_back(frame_.process_ms);
+        totals_.convert_ms.push_back(frame_.convert_ms);
+        csv_.add(frame, obs, frame_);
+        reference_.add(result);
+        if (!options_.png_prefix.empty() && frame_.aligned)
+            writePictures(frame, obs, *frame_.aligned);
+    }
+
+    /// Outputs of an earlier run (<label>_travel, <label>_ground ... of a label we process
+    /// now) are dropped: they are regenerated, and keeping them would duplicate the labels.
+    bool isStaleOutput(const CObservation& obs) {
+        if (!travel_mrpt::isTravelOutput(obs)) return false;
+        const std::string base = travel_mrpt::travelOutputSource(obs);
+        if (!std::regex_match(base, label_filter_)) return false;
+        noteOnce("replacing the TRAVEL outputs of an earlier run: " + base + "_*");
+        return true;
+    }
+
+    void startRecord() { outputs_.startRecord(); }
+    void finish() { reference_.finish(); }
+    const Totals& totals() const { return totals_; }
+
+  private:
+    void writePictures(std::size_t frame, const CObservation& obs,
+                       const travel::AlignedCloud& aligned) {
+        const travel::Result& result = frame_.result;
+        char suffix[32];
+        std::snprintf(suffix, sizeof suffix, "_%06zu", frame);
+        const std::string stem = options_.png_prefix + suffix;
+        const auto total = std::max<std::size_t>(1, frame_.cloud.size());
+        char title[256];
+        std::snprintf(title, sizeof title,
+                      "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%  %zu clusters",
+                      frame, obs.sensorLabel.c_str(), frame_.cloud.size(),
+                      100.0 * result.count(PointClass::Ground) / total,
+                      100.0 * result.count(PointClass::NonGround) / total, result.clusters.size());
+        birds_eye_.title = title;
+        travel_mrpt::renderBirdsEye(aligned, result.labels, result.cluster_id, &result.terrain,
+                                    birds_eye_, image_);
+        if (!image_.saveToFile(stem + ".png")) throw AppError(stem + ".png: cannot write PNG");
+        travel::apps::writePly(stem + ".ply", aligned, result);
+    }
+
+    void noteOnce(const std::string& note) {
+        if (notes_.insert(note).second && !options_.quiet)
+            std::cerr << "travel-rawlog: note: " << note << "\n";
+    }
+
+    const Options& options_;
+    std::regex label_filter_;
+    travel_mrpt::TravelFilter filter_;
+    travel_mrpt::RawlogMotion motion_{filter_};
+    CsvLog csv_;
+    ReferenceLog reference_;
+    travel_mrpt::BirdsEyeOptions birds_eye_;
+    mrpt::img::CImage image_;  // reused across frames
+    std::set<std::string> notes_;
+    travel_mrpt::LabelledOutputPool outputs_;
+    Totals totals_;
+    travel_mrpt::TravelFrame frame_;  // reused across frames
+};
+
+/// The summary on stdout.
+void printSummary(const Options& o, const Totals& t, long records, double seconds);
+
+}  // namespace travel::apps

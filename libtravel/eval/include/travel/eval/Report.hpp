@@ -1,0 +1,87 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel-eval's evaluation: the labelled frames of one or more SemanticKITTI sequences, every
+// method run over them (evaluateFrame per frame), the markdown report, frames.csv and the
+// parameter-sweep table. The plots are drawn by the app.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "travel/Params.hpp"
+#include "travel/eval/FrameEvaluation.hpp"
+
+namespace travel::eval {
+
+/// "a,b,c" -> {"a", "b", "c"}; "a,b," has an empty last item.
+std::vector<std::string> splitList(const std::string& text, char sep);
+
+struct FrameRef {
+    std::string scan, label, name;  ///< name: "<sequence>/<stem>"
+};
+
+/// A sequence's name for the report: ".../sequences/00/velodyne" -> "00".
+std::string sequenceName(const std::string& scans_dir);
+
+/// The scans that have a label file, over all (scans[s], labels[s]) pairs, in order, at most
+/// max_frames of them (when > 0). Throws InputError for a missing labels directory or when no
+/// scan has a label. The two lists must have the same size.
+std::vector<FrameRef> labelledFrames(const std::vector<std::string>& scans,
+                                     const std::vector<std::string>& labels, int max_frames);
+
+/// "sequence 00, 000000-000002; sequence 01, ..." for the report header.
+std::string describeFrames(const std::vector<FrameRef>& frames);
+
+/// One (method, frame) row of frames.csv.
+struct FrameRow {
+    std::string frame;
+    std::size_t points = 0;
+    GroundScores ground[2];  ///< per kGroundProtocols
+    bool objects = false;    ///< the method clustered this frame
+    SegmentationEntropy entropy;
+    double coverage = 0, purity = 0;
+    std::size_t instances = 0, clustered = 0, split = 0, merged = 0;
+    uint32_t clusters = 0;
+    double ground_ms = 0, objects_ms = 0;
+};
+
+struct MethodRun {
+    std::string method;
+    std::vector<FrameRow> rows;
+    EvaluationSummary summary;
+};
+
+/// Runs `method` over `frames`; `before_frame(f)` is called before frame f (progress display).
+MethodRun runMethod(const std::string& method, const Params& params,
+                    const std::vector<FrameRef>& frames,
+                    const std::function<void(std::size_t)>& before_frame);
+
+/// report.md: ground tables for both protocols and the object table; `setup` describes the
+/// parameters (preset, config, overrides).
+std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<FrameRef>& frames,
+                           const std::string& setup);
+
+/// frames.csv: one row per method and frame, every per-frame value.
+void writeFramesCsv(std::ostream& csv, const std::vector<MethodRun>& runs);
+
+/// A parameter sweep, "KEY=v1,v2,...".
+struct SweepSpec {
+    std::string key;
+    std::vector<std::string> values;
+};
+
+/// Parses and checks every value against `base` (key known, value in range, parameters
+/// consistent), so a typo in the last value does not waste the whole sweep. Throws ConfigError.
+SweepSpec parseSweep(const std::string& spec, const Params& base);
+
+/// x positions: the values themselves when all are numbers, else 0, 1, 2, ... (e.g. booleans).
+std::vector<double> sweepPositions(const std::vector<std::string>& values);
+
+/// sweep_KEY.csv: one row per value of the sweep.
+void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
+                   const std::vector<EvaluationSummary>& sums, std::size_t frames);
+
+}  // namespace travel::eval

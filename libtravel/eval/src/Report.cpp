@@ -1,0 +1,263 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/eval/Report.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "travel/Errors.hpp"
+#include "travel/ParamsIO.hpp"
+#include "travel/eval/KittiIO.hpp"
+
+namespace travel::eval {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string format(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), fmt, v);
+    return buf;
+}
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) != 0) continue;
+        const std::size_t colon = line.find(':');
+        if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+    return "unknown CPU";
+}
+
+std::string nowText() {
+    const std::time_t t = std::time(nullptr);
+    char buf[64];
+    std::strftime(buf, sizeof(buf), "%Y-%m-%d %H:%M %Z", std::localtime(&t));
+    return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> splitList(const std::string& text, char sep) {
+    std::vector<std::string> items;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, sep)) items.push_back(item);
+    if (!text.empty() && text.back() == sep) items.emplace_back();  // "a,b," has an empty last
+    return items;
+}
+
+std::string sequenceName(const std::string& scans_dir) {
+    fs::path p = fs::path(scans_dir).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();
+    if (p.filename() == "velodyne" && p.has_parent_path()) p = p.parent_path();
+    return p.filename().string();
+}
+
+std::vector<FrameRef> labelledFrames(const std::vector<std::string>& scans,
+                                     const std::vector<std::string>& labels, int max_frames) {
+    std::vector<FrameRef> frames;
+    for (std::size_t s = 0; s < scans.size(); ++s) {
+        if (!fs::is_directory(labels[s]))
+            throw InputError("labels directory " + labels[s] + " does not exist");
+        const std::string seq = sequenceName(scans[s]);
+        for (const std::string& bin : listFiles(scans[s], ".bin")) {
+            const std::string stem = fs::path(bin).stem().string();
+            const fs::path label = fs::path(labels[s]) / (stem + ".label");
+            if (fs::exists(label)) frames.push_back({bin, label.string(), seq + "/" + stem});
+        }
+    }
+    if (frames.empty()) {
+        std::string dirs;
+        for (std::size_t s = 0; s < scans.size(); ++s)
+            dirs += (s ? ", " : "") + scans[s] + " with " + labels[s];
+        throw InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
+    }
+    if (max_frames > 0 && frames.size() > static_cast<std::size_t>(max_frames))
+        frames.resize(max_frames);
+    return frames;
+}
+
+std::string describeFrames(const std::vector<FrameRef>& frames) {
+    std::string text;
+    std::size_t i = 0;
+    while (i < frames.size()) {
+        const std::string seq = frames[i].name.substr(0, frames[i].name.find('/'));
+        std::size_t j = i;
+        // A run ends where the sequence changes or restarts (the same one given twice).
+        while (j + 1 < frames.size() && frames[j + 1].name.rfind(seq + "/", 0) == 0 &&
+               frames[j + 1].name > frames[j].name)
+            ++j;
+        const auto stem = [&](std::size_t k) { return frames[k].name.substr(seq.size() + 1); };
+        text += (text.empty() ? "" : "; ") + std::string("sequence ") + seq + ", " + stem(i) +
+                (j > i ? "-" + stem(j) : "");
+        i = j + 1;
+    }
+    return text;
+}
+
+MethodRun runMethod(const std::string& method, const Params& params,
+                    const std::vector<FrameRef>& frames,
+                    const std::function<void(std::size_t)>& before_frame) {
+    MethodRun run;
+    run.method = method;
+    const std::unique_ptr<Segmenter> segmenter = makeSegmenter(method, params);
+    FrameEvaluation frame;
+    EvaluationAccumulator totals;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        if (before_frame) before_frame(f);
+        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, params.sensor_height, frame);
+        totals.add(frame);
+        FrameRow row;
+        row.frame = frames[f].name;
+        row.points = frame.cloud.size();
+        for (int p = 0; p < 2; ++p) row.ground[p] = frame.ground[p];
+        row.ground_ms = frame.segmentation.ground_ms;
+        row.objects_ms = frame.segmentation.objects_ms;
+        row.clusters = frame.clusters;
+        // Ground-only methods have no object stage: their object scores would be all zero.
+        row.objects = frame.clustered;
+        if (row.objects) {
+            const ObjectScores& o = frame.objects;
+            row.entropy = o.entropy;
+            row.coverage = o.mean_coverage;
+            row.purity = o.mean_purity;
+            row.instances = o.instances.size();
+            row.clustered = o.clustered;
+            row.split = o.split;
+            row.merged = o.merged;
+        }
+        run.rows.push_back(std::move(row));
+    }
+    run.summary = totals.summary();
+    return run;
+}
+
+std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<FrameRef>& frames,
+                           const std::string& setup) {
+    std::ostringstream md;
+    md << "# TRAVEL evaluation report\n\n"
+       << frames.size() << " labelled SemanticKITTI frames (" << describeFrames(frames) << "); "
+       << setup << "; machine: " << cpuModel() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
+       << " logical CPUs, single thread; " << nowText() << ".\n\n"
+       << "Mean (mu) and population standard deviation (sigma) over frames; ms = median "
+          "milliseconds per frame (each frame run once, cold caches).\n";
+    for (int p = 0; p < 2; ++p) {
+        md << "\n## Ground, protocol " << protocolName(kGroundProtocols[p]) << "\n\n"
+           << "| method | P | R | F1 μ | F1 σ | accuracy μ | accuracy σ | ms |\n"
+           << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (std::size_t m = 0; m < runs.size(); ++m) {
+            const EvaluationSummary& s = runs[m].summary;
+            md << "| " << runs[m].method << " | " << format("%.2f", s.precision[p].mean) << " | "
+               << format("%.2f", s.recall[p].mean) << " | " << format("%.2f", s.f1[p].mean) << " | "
+               << format("%.2f", s.f1[p].std) << " | " << format("%.2f", s.accuracy[p].mean)
+               << " | " << format("%.2f", s.accuracy[p].std) << " | " << format("%.1f", s.ground_ms)
+               << " |\n";
+        }
+    }
+    md << "\n## Objects\n\n"
+       << "| method | USE μ | USE σ | OSE μ | OSE σ | coverage | purity | split | merged | ms |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::size_t instances = 0;
+    for (std::size_t m = 0; m < runs.size(); ++m) {
+        const EvaluationSummary& s = runs[m].summary;
+        if (!s.clusters) continue;
+        instances = s.objects.instances;
+        md << "| " << runs[m].method << " | " << format("%.2f", s.use.mean) << " | "
+           << format("%.2f", s.use.std) << " | " << format("%.2f", s.ose.mean) << " | "
+           << format("%.2f", s.ose.std) << " | " << format("%.3f", s.objects.mean_coverage) << " | "
+           << format("%.3f", s.objects.mean_purity) << " | " << s.objects.split << " | "
+           << s.objects.merged << " | " << format("%.1f", s.objects_ms) << " |\n";
+    }
+    md << "\nUSE / OSE: per-frame sums over clusters / ground-truth objects (paper eqs. 6-7, "
+          "natural log). Coverage, purity, split, merged: pooled over the "
+       << instances
+       << " thing instances with >= 50 points. Ground-only methods are not in this table.\n";
+    return md.str();
+}
+
+void writeFramesCsv(std::ostream& csv, const std::vector<MethodRun>& runs) {
+    csv << "method,frame,points,A_precision,A_recall,A_f1,A_accuracy,B_precision,B_recall,B_f1,"
+           "B_accuracy,USE_sum,OSE_sum,USE_mean,OSE_mean,gt_objects,mean_coverage,mean_purity,"
+           "instances,clustered,split,merged,clusters,ground_ms,objects_ms\n";
+    for (const MethodRun& run : runs) {
+        for (const FrameRow& r : run.rows) {
+            csv << run.method << ',' << r.frame << ',' << r.points;
+            for (int p = 0; p < 2; ++p)
+                csv << ',' << r.ground[p].precision << ',' << r.ground[p].recall << ','
+                    << r.ground[p].f1 << ',' << r.ground[p].accuracy;
+            if (r.objects)  // empty cells, not zeros, for methods without an object stage
+                csv << ',' << r.entropy.use_sum << ',' << r.entropy.ose_sum << ','
+                    << r.entropy.use_mean << ',' << r.entropy.ose_mean << ','
+                    << r.entropy.num_gt_objects << ',' << r.coverage << ',' << r.purity << ','
+                    << r.instances << ',' << r.clustered << ',' << r.split << ',' << r.merged;
+            else
+                csv << ",,,,,,,,,,,";
+            csv << ',' << r.clusters << ',' << r.ground_ms << ',' << r.objects_ms << '\n';
+        }
+    }
+}
+
+SweepSpec parseSweep(const std::string& spec, const Params& base) {
+    const std::string help =
+        "--sweep '" + spec + "': expected KEY=v1,v2,... (e.g. " + "tgf_resolution=2,4,6,8,10)";
+    const std::size_t eq = spec.find('=');
+    if (eq == std::string::npos || eq == 0) throw ConfigError(help);
+    SweepSpec s{spec.substr(0, eq), splitList(spec.substr(eq + 1), ',')};
+    if (s.values.empty()) throw ConfigError(help + ": no values");
+    for (const std::string& v : s.values) {
+        if (v.empty()) throw ConfigError(help + ": empty value");
+        // Every value is checked (key known, value in range, params consistent) before the
+        // first run, so a typo in the last value does not waste the whole sweep.
+        Params p = base;
+        applyOverride(s.key + "=" + v, p);
+        p.validate();
+    }
+    return s;
+}
+
+std::vector<double> sweepPositions(const std::vector<std::string>& values) {
+    std::vector<double> xs;
+    for (const std::string& v : values) {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) {
+            xs.clear();
+            for (std::size_t i = 0; i < values.size(); ++i) xs.push_back(static_cast<double>(i));
+            return xs;
+        }
+        xs.push_back(x);
+    }
+    return xs;
+}
+
+void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
+                   const std::vector<EvaluationSummary>& sums, std::size_t frames) {
+    csv << spec.key
+        << ",frames,B_precision,B_recall,B_f1,B_f1_std,A_f1,A_f1_std,coverage,purity,USE,OSE,"
+           "ground_ms_median,objects_ms_median\n";
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        const EvaluationSummary& s = sums[i];
+        csv << spec.values[i] << ',' << frames << ',' << s.precision[1].mean << ','
+            << s.recall[1].mean << ',' << s.f1[1].mean << ',' << s.f1[1].std << ',' << s.f1[0].mean
+            << ',' << s.f1[0].std;
+        if (s.clusters)
+            csv << ',' << s.objects.mean_coverage << ',' << s.objects.mean_purity << ','
+                << s.use.mean << ',' << s.ose.mean;
+        else
+            csv << ",,,,";
+        csv << ',' << s.ground_ms << ',' << s.objects_ms << '\n';
+    }
+}
+
+}  // namespace travel::eval

@@ -1,0 +1,117 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel_mrpt/RawlogReader.hpp"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <new>
+#include <sstream>
+
+#include "travel/Errors.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace fs = std::filesystem;
+
+namespace travel_mrpt {
+
+namespace {
+
+/// MRPT's exception texts span many lines (banner, nested "Message:" lines, call stack): the
+/// innermost "Message:" says what went wrong. Its hint about gzip does not apply (both are read).
+std::string mrptMessage(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line, message;
+    while (std::getline(lines, line)) {
+        const std::size_t at = line.find("Message:");
+        if (at != std::string::npos && line.find_first_not_of(" \t") == at)
+            message = line.substr(line.find_first_not_of(' ', at + 8));
+    }
+    if (message.empty()) message = text.substr(0, text.find('\n'));
+    return message.substr(0, message.find(" (Perhaps it's a gz"));
+}
+
+}  // namespace
+
+struct RawlogReader::Stream {
+    mrpt::io::CFileGZInputStream file;
+    mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive{file};
+};
+
+RawlogReader::RawlogReader(const std::string& path) : path_(path), stream_(new Stream) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw travel::InputError(path + ": no such file");
+    if (fs::is_directory(path, ec))
+        throw travel::InputError(path + ": is a directory, not a rawlog");
+    if (!stream_->file.open(path)) throw travel::InputError(path + ": cannot open for reading");
+}
+
+RawlogReader::~RawlogReader() = default;
+
+std::shared_ptr<mrpt::serialization::CSerializable> RawlogReader::next() {
+    const std::string record = path_ + ": record " + std::to_string(index_);
+    const uint64_t start = stream_->file.getPosition();
+    try {
+        auto object = stream_->archive.ReadObject();
+        if (!object) throw std::runtime_error("null object");
+        ++index_;
+        return object;
+    } catch (const mrpt::serialization::CExceptionEOF&) {
+        // End of file exactly at a record boundary is the normal end; anywhere else the record
+        // was cut.
+        if (stream_->file.getPosition() != start)
+            throw travel::InputError(record + ": truncated (end of file inside the record)");
+    } catch (const std::bad_alloc&) {
+        throw travel::InputError(record +
+                                 ": corrupt record (it announces more data than --max-memory "
+                                 "allows); is it a rawlog?");
+    } catch (const std::exception& e) {
+        const std::string what = mrptMessage(e.what());
+        // MRPT reports a short read inside an object as a generic error, not CExceptionEOF.
+        if (what.find("EOF") != std::string::npos ||
+            what.find("Cannot read object class name") != std::string::npos)
+            throw travel::InputError(record + ": truncated (end of file inside the record)");
+        throw travel::InputError(
+            record + (index_ == 0 ? ": cannot read (is it an MRPT rawlog?): " : ": cannot read: ") +
+            what);
+    }
+    if (index_ == 0) {
+        std::error_code ec;
+        throw travel::InputError(path_ + (fs::file_size(path_, ec) == 0
+                                              ? ": empty file, not a rawlog"
+                                              : ": no record could be read (not an MRPT rawlog, "
+                                                "or a corrupt gzip stream)"));
+    }
+    return nullptr;
+}
+
+bool RawlogMotion::process(const mrpt::serialization::CSerializable& record) {
+    if (auto* imu = dynamic_cast<const mrpt::obs::CObservationIMU*>(&record)) {
+        filter_.processImu(*imu);
+    } else if (auto* odometry = dynamic_cast<const mrpt::obs::CObservationOdometry*>(&record)) {
+        odometry_pose_ = mrpt::poses::CPose3D(odometry->odometry);
+        has_odometry_ = true;
+        filter_.processOdometry(*odometry);
+    } else if (auto* actions = dynamic_cast<const mrpt::obs::CActionCollection*>(&record)) {
+        if (auto move = actions->getBestMovementEstimation()) {
+            action_pose_ = action_pose_ + mrpt::poses::CPose3D(move->poseChange->getMeanVal());
+            ++actions_;
+            filter_.processAction(*move);
+        }
+    } else {
+        return false;
+    }
+    return true;
+}
+
+std::optional<mrpt::poses::CPose3D> RawlogMotion::robotPose() const {
+    if (actions_) return action_pose_;
+    if (has_odometry_) return odometry_pose_;
+    return std::nullopt;
+}
+
+}  // namespace travel_mrpt

@@ -1,0 +1,155 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel::eval::evaluateFrame and EvaluationAccumulator: the one frame evaluation behind
+// travel-kitti and travel-eval. A simulated HDL-64 scan of the urban scene is written as a KITTI
+// .bin with SemanticKITTI-style labels (road 40, car 10 with its instance id).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "travel/eval/FrameEvaluation.hpp"
+#include "travel/eval/KittiIO.hpp"
+#include "travel/sim/Scenes.hpp"
+#include "travel/sim/SyntheticLidar.hpp"
+
+namespace fs = std::filesystem;
+
+namespace travel::eval {
+namespace {
+
+// One directory per process: ctest runs the tests of this file in parallel processes.
+fs::path testDir() {
+    const fs::path dir =
+        fs::temp_directory_path() / ("travel_test_frame_evaluation_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+struct Files {
+    std::string scan, label;
+};
+
+const Files& urbanFrame() {
+    static const Files files = [] {
+        const fs::path dir = testDir();
+        const sim::Scene scene = sim::urbanObjects();
+        const sim::Scan s = sim::scan(scene, sim::LidarModel::hdl64(),
+                                      sim::sensorPoseAt(scene, 0, 0, sim::kSensorHeight, 0, 0, 0));
+        std::vector<uint32_t> gt(s.cloud.size(), 0);
+        for (std::size_t i = 0; i < gt.size(); ++i)
+            if (s.gt.cls[i] == sim::Ground)
+                gt[i] = 40;
+            else if (s.gt.cls[i] == sim::NonGround)
+                gt[i] = (s.gt.instance[i] << 16) | 10u;
+        Files f{(dir / "000000.bin").string(), (dir / "000000.label").string()};
+        writeKittiBin(f.scan, s.cloud);
+        writeLabelFile(f.label, gt);
+        return f;
+    }();
+    return files;
+}
+
+TEST(EvaluateFrame, ScoresAreTheMetricsOfTheSegmentation) {
+    const Files& f = urbanFrame();
+    const Params params;
+    const auto segmenter = makeSegmenter("travel", params);
+    FrameEvaluation frame;
+    evaluateFrame(f.scan, f.label, *segmenter, params.sensor_height, frame);
+
+    // The same scan segmented independently, scored with the metric functions directly.
+    PointCloud cloud;
+    readKittiBin(f.scan, cloud);
+    Segmentation expected;
+    makeSegmenter("travel", params)->segment(cloud, expected);
+    const std::vector<uint32_t> gt = readLabelFile(f.label, cloud.size());
+    ASSERT_TRUE(frame.scored);
+    ASSERT_EQ(frame.cloud.size(), cloud.size());
+    EXPECT_EQ(frame.segmentation.labels, expected.labels);
+    EXPECT_EQ(frame.segmentation.cluster_id, expected.cluster_id);
+    EXPECT_EQ(frame.ground_truth, gt);
+    for (int p = 0; p < 2; ++p) {
+        const GroundScores s = scoresFrom(
+            countGround(expected.labels, gt, cloud.z, params.sensor_height, kGroundProtocols[p]));
+        EXPECT_DOUBLE_EQ(frame.ground[p].f1, s.f1) << p;
+        EXPECT_DOUBLE_EQ(frame.ground[p].precision, s.precision) << p;
+        EXPECT_DOUBLE_EQ(frame.ground[p].recall, s.recall) << p;
+        EXPECT_DOUBLE_EQ(frame.ground[p].accuracy, s.accuracy) << p;
+    }
+    const ObjectScores o = evaluateObjects(expected.cluster_id, expected.labels, gt, cloud);
+    EXPECT_DOUBLE_EQ(frame.objects.entropy.use_sum, o.entropy.use_sum);
+    EXPECT_DOUBLE_EQ(frame.objects.entropy.ose_sum, o.entropy.ose_sum);
+    EXPECT_EQ(frame.objects.instances.size(), o.instances.size());
+    EXPECT_EQ(frame.clusters,
+              *std::max_element(expected.cluster_id.begin(), expected.cluster_id.end()));
+    EXPECT_GT(frame.clusters, 0u);
+    EXPECT_TRUE(frame.clustered);
+    std::size_t total = 0;
+    for (std::size_t c : frame.class_counts) total += c;
+    EXPECT_EQ(total, cloud.size());
+    EXPECT_GT(frame.ground[1].f1, 90.0);  // a flat street: TRAVEL finds its ground
+}
+
+TEST(EvaluateFrame, WithoutLabelsNothingIsScored) {
+    const Params params;
+    const auto segmenter = makeSegmenter("travel", params);
+    FrameEvaluation frame;
+    evaluateFrame(urbanFrame().scan, "", *segmenter, params.sensor_height, frame);
+    EXPECT_FALSE(frame.scored);
+    EXPECT_TRUE(frame.ground_truth.empty());
+    EXPECT_EQ(frame.segmentation.labels.size(), frame.cloud.size());
+
+    EvaluationAccumulator totals;
+    totals.add(frame);  // unscored: not counted
+    EXPECT_EQ(totals.summary().f1[0].n, 0u);
+    EXPECT_FALSE(totals.summary().clusters);
+}
+
+TEST(EvaluateFrame, GroundOnlyMethodsHaveNoObjectStage) {
+    const Params params;
+    const auto segmenter = makeSegmenter("tgs", params);
+    FrameEvaluation frame;
+    EvaluationAccumulator totals;
+    for (int k = 0; k < 2; ++k) {
+        evaluateFrame(urbanFrame().scan, urbanFrame().label, *segmenter, params.sensor_height,
+                      frame);
+        totals.add(frame);
+    }
+    EXPECT_FALSE(frame.clustered);
+    EXPECT_EQ(frame.clusters, 0u);
+    const EvaluationSummary s = totals.summary();
+    EXPECT_EQ(s.f1[1].n, 2u);
+    EXPECT_DOUBLE_EQ(s.f1[1].mean, frame.ground[1].f1);
+    EXPECT_DOUBLE_EQ(s.f1[1].std, 0.0);
+    EXPECT_FALSE(s.clusters);
+    EXPECT_EQ(s.objects.frames, 0u);
+    EXPECT_EQ(s.use.n, 0u);
+}
+
+TEST(EvaluateFrame, ErrorsNameTheFile) {
+    const Params params;
+    const auto segmenter = makeSegmenter("travel", params);
+    FrameEvaluation frame;
+    const std::string missing = (testDir() / "missing.bin").string();
+    try {
+        evaluateFrame(missing, "", *segmenter, params.sensor_height, frame);
+        FAIL() << "no error for a missing scan";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
+    }
+    // A label file with the wrong number of labels.
+    const std::string short_label = (testDir() / "short.label").string();
+    writeLabelFile(short_label, {40, 40, 40});
+    try {
+        evaluateFrame(urbanFrame().scan, short_label, *segmenter, params.sensor_height, frame);
+        FAIL() << "no error for a short label file";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find(short_label), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace travel::eval

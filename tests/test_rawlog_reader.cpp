@@ -1,0 +1,140 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel_mrpt::RawlogReader and RawlogMotion, the rawlog reading of travel-rawlog and
+// travel-map: records of both formats, the exact error messages (file, record, what), and the
+// robot pose from odometry actions and odometry observations.
+#include <gtest/gtest.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "travel/Errors.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace fs = std::filesystem;
+
+namespace travel_mrpt {
+namespace {
+
+// One directory per process: ctest runs the tests of this file in parallel processes.
+std::string testPath(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("travel_test_rawlog_reader_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return (dir / name).string();
+}
+
+mrpt::obs::CObservationOdometry::Ptr odometry(double x) {
+    auto odo = mrpt::obs::CObservationOdometry::Create();
+    odo->odometry = mrpt::poses::CPose2D(x, 0, 0);
+    odo->sensorLabel = "odometry";
+    return odo;
+}
+
+mrpt::obs::CActionCollection::Ptr moveBy(double dx) {
+    mrpt::obs::CActionRobotMovement2D move;
+    move.computeFromOdometry(mrpt::poses::CPose2D(dx, 0, 0),
+                             mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    auto actions = mrpt::obs::CActionCollection::Create();
+    actions->insert(move);
+    return actions;
+}
+
+/// An observation-format rawlog of three odometry records (plain, not gzip); returns the file
+/// offset where each record ends.
+std::vector<std::size_t> writeOdometryRawlog(const std::string& path) {
+    std::vector<std::size_t> ends;
+    mrpt::io::CFileOutputStream file(path);
+    auto out = mrpt::serialization::archiveFrom(file);
+    for (int k = 0; k < 3; ++k) {
+        out << *odometry(k);
+        ends.push_back(file.getPosition());
+    }
+    return ends;
+}
+
+std::string errorOf(const std::string& path) {
+    try {
+        RawlogReader reader(path);
+        while (reader.next()) {
+        }
+    } catch (const travel::InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(RawlogReader, ReadsEveryRecordThenEndOfFile) {
+    const std::string path = testPath("odometry.rawlog");
+    writeOdometryRawlog(path);
+    RawlogReader reader(path);
+    for (int k = 0; k < 3; ++k) {
+        const auto record = reader.next();
+        ASSERT_TRUE(record) << k;
+        EXPECT_TRUE(std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(record));
+        EXPECT_EQ(reader.index(), k + 1);
+    }
+    EXPECT_FALSE(reader.next());
+    EXPECT_EQ(reader.index(), 3);
+}
+
+TEST(RawlogReader, TruncatedRecordIsNamed) {
+    const std::string path = testPath("odometry.rawlog");
+    const std::vector<std::size_t> ends = writeOdometryRawlog(path);
+    const std::string cut = testPath("cut.rawlog");
+    fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, (ends[1] + ends[2]) / 2);  // inside record 2
+    EXPECT_EQ(errorOf(cut), cut + ": record 2: truncated (end of file inside the record)");
+}
+
+TEST(RawlogReader, NotARawlog) {
+    const std::string path = testPath("text.rawlog");
+    std::ofstream(path) << "hello, I am text\n";
+    const std::string error = errorOf(path);
+    const std::string expected = path + ": record 0: cannot read (is it an MRPT rawlog?): ";
+    EXPECT_EQ(error.substr(0, expected.size()), expected) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;  // MRPT's message on one line
+}
+
+TEST(RawlogReader, EmptyFile) {
+    const std::string path = testPath("empty.rawlog");
+    std::ofstream{path};
+    EXPECT_EQ(errorOf(path), path + ": empty file, not a rawlog");
+}
+
+TEST(RawlogReader, MissingFileAndDirectory) {
+    const std::string missing = testPath("missing.rawlog");
+    EXPECT_EQ(errorOf(missing), missing + ": no such file");
+    const std::string dir = fs::path(testPath("x")).parent_path().string();
+    EXPECT_EQ(errorOf(dir), dir + ": is a directory, not a rawlog");
+}
+
+TEST(RawlogMotion, PoseFromActionsElseOdometry) {
+    TravelFilter filter;
+    RawlogMotion motion(filter);
+    EXPECT_FALSE(motion.robotPose());
+    EXPECT_FALSE(motion.process(mrpt::obs::CSensoryFrame()));  // not a motion record
+
+    EXPECT_TRUE(motion.process(*odometry(2.0)));
+    ASSERT_TRUE(motion.robotPose());
+    EXPECT_NEAR(motion.robotPose()->x(), 2.0, 1e-9);
+    EXPECT_TRUE(motion.hasOdometry());
+
+    // Odometry actions take precedence once there are any: composed from the identity.
+    EXPECT_TRUE(motion.process(*moveBy(0.5)));
+    EXPECT_TRUE(motion.process(*moveBy(0.25)));
+    EXPECT_EQ(motion.actions(), 2u);
+    EXPECT_NEAR(motion.robotPose()->x(), 0.75, 1e-6);
+}
+
+}  // namespace
+}  // namespace travel_mrpt
