@@ -18,10 +18,11 @@
 // Points higher than max_height above the local ground (overhangs, trees above the robot) are
 // dropped.
 //
-// Height above the local ground of a non-ground point: the lowest of its heights over the TTMF
-// planes of the traversable, not too steep nodes of its cell and the 4 neighbouring cells (so
+// Height above the local ground of a non-ground point: travel::TerrainModel::heightAboveGround
+// (the lowest of its heights over the ground planes of its cell and the 4 neighbouring cells, so
 // that the foot of a ramp is not lifted by a flat node's plane); when there is none, over the
-// nearest such node within ground_search_radius; otherwise over the robot's own base plane.
+// nearest node with ground (TerrainModel::groundPlane) within ground_search_radius; otherwise
+// over the robot's own base plane. Steps: travel::TerrainModel::stepBetween.
 #pragma once
 
 #include "travel_mrpt/ObstacleSource.hpp"
