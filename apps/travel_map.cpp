@@ -31,9 +31,9 @@
 #include "CommandLine.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/KittiIO.hpp"
+#include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
-#include "travel_mrpt/PoseFiles.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -141,10 +141,10 @@ struct Stats {
 
 /// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.
 struct PoseFileSource {
-    travel_mrpt::PoseTrajectory trajectory;
+    travel::PoseTrajectory trajectory;
     std::optional<CPose3D> at(double t, std::size_t frame) const {
         if (trajectory.timed()) {
-            const auto T = travel_mrpt::poseAt(trajectory, t);
+            const auto T = travel::poseAt(trajectory, t);
             return T ? std::optional<CPose3D>(toPose(*T)) : std::nullopt;
         }
         if (frame < trajectory.size()) return toPose(trajectory.poses[frame]);
@@ -249,8 +249,7 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
     if (pose_file && !pose_file->trajectory.timed()) {
         if (!calib.empty())
-            travel_mrpt::kittiCameraToLidar(pose_file->trajectory,
-                                            travel_mrpt::readKittiCalibTr(calib));
+            travel::kittiCameraToLidar(pose_file->trajectory, travel::readKittiCalibTr(calib));
         else
             std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
         if (pose_file->trajectory.size() < files.size())
@@ -386,7 +385,7 @@ int run(int argc, char** argv) {
     if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))
         pose_path = (fs::path(o.input) / "poses.txt").string();
     std::optional<PoseFileSource> pose_file;
-    if (!pose_path.empty()) pose_file = PoseFileSource{travel_mrpt::readPoseFile(pose_path)};
+    if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
     o.poses = pose_path;
 
     std::error_code ec;
@@ -454,7 +453,7 @@ int run(int argc, char** argv) {
     for (const auto& [x, y] : probes) {
         const long cell = map.grid().cellIndex(x, y);
         std::printf("probe %g,%g: %s\n", x, y,
-                    cell < 0 ? "outside" : travel_mrpt::toString(map.state(cell)));
+                    cell < 0 ? "outside" : travel::toString(map.state(cell)));
     }
     return 0;
 }

@@ -7,13 +7,11 @@ find_package(mrpt-io REQUIRED)
 find_package(octomap REQUIRED)
 
 target_sources(travel_mrpt PRIVATE
-  ${CMAKE_CURRENT_LIST_DIR}/src/TraversabilityGrid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/TraversabilityMapOptions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/CTraversabilityMap.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/MapExport.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/PoseFiles.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/MapExport.cpp)
 # CTraversabilityMap.hpp derives from CMetricMap (mrpt-maps); tests and apps read the OctoMap.
-target_link_libraries(travel_mrpt PUBLIC mrpt::maps mrpt::opengl mrpt::io octomap octomath)
+target_link_libraries(travel_mrpt PUBLIC travel::traversability mrpt::maps mrpt::opengl mrpt::io octomap octomath)
 target_include_directories(travel_mrpt PUBLIC ${OCTOMAP_INCLUDE_DIRS})
 
 # See labels.cmake: UBSan's alignment check misreads MRPT's opengl class layout.

@@ -4,7 +4,7 @@ find_package(mrpt-nav REQUIRED)
 find_package(mrpt-kinematics REQUIRED)
 target_sources(travel_mrpt PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/src/ObstacleSource.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/TravelObstacleSource.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/ObstacleSources.cpp)
-# ObstacleSource.hpp includes <mrpt/core/Clock.h>; latest() fills a CSimplePointsMap.
-target_link_libraries(travel_mrpt PUBLIC mrpt::maps mrpt::nav mrpt::kinematics)
+# ObstacleSource.hpp includes <mrpt/core/Clock.h>; latest() fills a CSimplePointsMap; the
+# obstacle rules are travel::TravelObstacles.
+target_link_libraries(travel_mrpt PUBLIC travel::traversability mrpt::maps mrpt::nav mrpt::kinematics)

@@ -15,11 +15,18 @@
 #include <string>
 #include <vector>
 
+#include <memory>
 #include "nav/World.hpp"
+
 #include "travel/Params.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel_mrpt/ObstacleSource.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
+
+namespace travel_mrpt {
+class TravelFilter;
+struct TravelFrame;
+}  // namespace travel_mrpt
 
 namespace travel::navsim {
 
@@ -84,6 +91,24 @@ Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
 /// The robot's footprint from the navigator config (LEVEL1_VECTORX/Y of
 /// [CReactiveNavigationSystem3D]); throws std::runtime_error naming the file.
 std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& nav_config_file);
+
+/// TRAVEL in the simulator, run as every MRPT user runs it: through travel_mrpt::TravelFilter,
+/// fed with the simulated scan and the robot's true pose (whose roll and pitch level the frame,
+/// as an IMU would). Simulated scans are instantaneous: no deskew.
+class SimTravel {
+  public:
+    /// Throws travel::ConfigError on invalid parameters.
+    explicit SimTravel(const travel::Params& params);
+    ~SimTravel();
+    /// Segments `cloud`, seen at time t by the sensor at `mount` on the robot at world pose
+    /// `robot`; fills frame.cloud, frame.result and frame.aligned (valid until the next call).
+    void process(const travel::PointCloud& cloud, const Eigen::Isometry3d& robot,
+                 const Eigen::Isometry3d& mount, double t, travel_mrpt::ObstacleFrame& frame);
+
+  private:
+    std::unique_ptr<travel_mrpt::TravelFilter> filter_;
+    std::unique_ptr<travel_mrpt::TravelFrame> frame_;
+};
 
 /// Runs one closed loop. Throws std::runtime_error on configuration errors.
 RunReport runSimulation(const World& world, const SimOptions& options);

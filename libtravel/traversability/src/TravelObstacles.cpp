@@ -1,36 +1,28 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel_mrpt/TravelObstacleSource.hpp"
+#include "travel/traversability/TravelObstacles.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace travel_mrpt {
-namespace {
+namespace travel {
 
-using travel::NodeClass;
-using travel::PointClass;
-using travel::TerrainModel;
-using travel::TriNode;
-
-}  // namespace
-
-TravelObstacleSource::TravelObstacleSource(const TravelObstacleOptions& options) {
+TravelObstacles::TravelObstacles(const TravelObstacleOptions& options) {
     setOptions(options);
 }
 
-void TravelObstacleSource::setOptions(const TravelObstacleOptions& o) {
+void TravelObstacles::setOptions(const TravelObstacleOptions& o) {
     if (!(o.max_step_height >= 0) || !(o.max_height > 0) || !(o.report_floor >= 0.01) ||
         !(o.ground_search_radius >= 0) || !(o.step_min_spread >= 0))
         throw std::invalid_argument(
-            "TravelObstacleSource: need max_step_height >= 0, max_height > 0, report_floor >= "
+            "travel obstacles: need max_step_height >= 0, max_height > 0, report_floor >= "
             "0.01 m (the navigator drops lower points), ground_search_radius >= 0, step_min_spread "
             ">= 0");
     options_ = o;
 }
 
-void TravelObstacleSource::findGroundNodes(const TerrainModel& t) {
+void TravelObstacles::findGroundNodes(const TerrainModel& t) {
     const int n = static_cast<int>(t.nodes.size()), side = t.cells_per_side;
     ground_node_.assign(t.nodes.size(), -1);
     const int reach = static_cast<int>(std::ceil(options_.ground_search_radius / t.resolution));
@@ -61,7 +53,7 @@ void TravelObstacleSource::findGroundNodes(const TerrainModel& t) {
     }
 }
 
-void TravelObstacleSource::findSteps(const TerrainModel& t) {
+void TravelObstacles::findSteps(const TerrainModel& t) {
     step_height_.assign(t.nodes.size(), 0.f);
     const int side = t.cells_per_side;
     const float limit = static_cast<float>(options_.max_step_height);
@@ -82,15 +74,12 @@ void TravelObstacleSource::findSteps(const TerrainModel& t) {
         }
 }
 
-void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
-    const travel::PointCloud& cloud = *frame.cloud;
-    if (frame.result == nullptr)
-        throw std::invalid_argument("travel obstacle source: the frame has no TRAVEL result");
-    const travel::Result& result = *frame.result;
-    if (result.labels.size() != cloud.size())
-        throw std::invalid_argument(
-            "travel obstacle source: " + std::to_string(result.labels.size()) + " labels for " +
-            std::to_string(cloud.size()) + " points");
+void TravelObstacles::compute(const Result& result, const AlignedCloud& aligned,
+                              const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out) {
+    const std::size_t n = aligned.x.size();
+    if (result.labels.size() != n || aligned.y.size() != n || aligned.z.size() != n)
+        throw std::invalid_argument("travel obstacles: " + std::to_string(result.labels.size()) +
+                                    " labels for " + std::to_string(n) + " aligned points");
     const TerrainModel& terrain = result.terrain;
     const bool have_terrain = terrain.usable();
     if (have_terrain) {
@@ -100,9 +89,8 @@ void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& o
 
     // Robot -> aligned rotation, and the robot origin and base-plane normal in the aligned
     // (sensor-centred) frame: the fallback ground and the origin of the output xy.
-    const Eigen::Matrix3f R_level =
-        frame.alignedRotation * frame.sensorOnRobot.linear().transpose();
-    const Eigen::Vector3f origin = -(R_level * frame.sensorOnRobot.translation());
+    const Eigen::Matrix3f R_level = aligned.rotation * sensor_on_robot.linear().transpose();
+    const Eigen::Vector3f origin = -(R_level * sensor_on_robot.translation());
     const Eigen::Vector3f base_normal = R_level.col(2);
     const auto baseHeight = [&](float x, float y) {
         return origin.z() -
@@ -113,11 +101,10 @@ void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& o
     const float max_step = static_cast<float>(options_.max_step_height);
     const float max_h = static_cast<float>(options_.max_height);
     const float floor_z = static_cast<float>(options_.report_floor);
-    const Eigen::Matrix3f& A = frame.alignedRotation;
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         const PointClass label = result.labels[i];
         if (label != PointClass::Ground && label != PointClass::NonGround) continue;
-        const Eigen::Vector3f a = A * Eigen::Vector3f(cloud.x[i], cloud.y[i], cloud.z[i]);
+        const Eigen::Vector3f a(aligned.x[i], aligned.y[i], aligned.z[i]);
         const int node = have_terrain ? terrain.nodeAt(a.x(), a.y()) : -1;
         float h = node >= 0 && label == PointClass::NonGround
                       ? terrain.heightAboveGround(a.x(), a.y(), a.z())
@@ -141,4 +128,4 @@ void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& o
     }
 }
 
-}  // namespace travel_mrpt
+}  // namespace travel
