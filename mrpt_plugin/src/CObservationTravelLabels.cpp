@@ -450,7 +450,7 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
     nodes->enableLight(false);
     const mrpt::img::TColor node_colour(230, 200, 90, 110);
     for (const TerrainNodeRecord& node : terrain.nodes) {
-        if (!node.traversable || node.normal.z() < 0.1f || terrain.cells_per_side <= 0) continue;
+        if (!node.traversable || !terrain.hasCells()) continue;
         const std::array<Eigen::Vector2f, 3> xy = terrain.triangleCorners(int(node.index));
         mrpt::opengl::TTriangle tri;
         bool finite = true;
