@@ -3,8 +3,9 @@
 // One closed-loop run of travel-nav-sim: MRPT's CVehicleSimul_DiffDriven drives in x, y, yaw;
 // the robot's z, roll and pitch come from the terrain under its footprint (a least-squares
 // plane through the terrain heights at the footprint's corners and centre). Each step (dt):
-// ray-cast a scan from the LiDAR's true 3-D pose, run TRAVEL (levelled with the robot's
-// attitude, as an IMU would give it), update the obstacle source, run one step of
+// ray-cast a scan from the LiDAR's true 3-D pose, run TRAVEL through travel_mrpt::TravelFilter
+// (levelled with the robot's attitude, as an IMU would give it), update the obstacle source with
+// the filter's frame, run one step of
 // CReactiveNavigationSystem3D, advance the simulator, check the footprint against the world's
 // obstacles. A run ends on: the goal reached (within goal_tolerance), a collision (footprint
 // overlapping an obstacle), the navigator giving up (NAV_ERROR: target blocked, not
