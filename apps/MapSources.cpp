@@ -53,7 +53,7 @@ class Progress {
 
 std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
     if (trajectory.timed()) {
-        const auto T = travel_mrpt::poseAt(trajectory, t);
+        const auto T = travel::poseAt(trajectory, t);
         return T ? std::optional<CPose3D>(toPose(*T)) : std::nullopt;
     }
     if (frame < trajectory.size()) return toPose(trajectory.poses[frame]);
@@ -117,8 +117,8 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
     if (pose_file && !pose_file->trajectory.timed()) {
         if (!calib.empty())
-            travel_mrpt::kittiCameraToLidar(pose_file->trajectory,
-                                            travel_mrpt::readKittiCalibTr(calib));
+            travel::kittiCameraToLidar(pose_file->trajectory,
+                                            travel::readKittiCalibTr(calib));
         else
             std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
         if (pose_file->trajectory.size() < files.size())

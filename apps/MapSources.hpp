@@ -13,7 +13,7 @@
 
 #include "MemoryLimit.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
-#include "travel_mrpt/PoseFiles.hpp"
+#include "travel/traversability/PoseFiles.hpp"
 
 namespace travel::apps {
 
@@ -34,7 +34,7 @@ struct Stats {
 
 /// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.
 struct PoseFileSource {
-    travel_mrpt::PoseTrajectory trajectory;
+    travel::PoseTrajectory trajectory;
     std::optional<mrpt::poses::CPose3D> at(double t, std::size_t frame) const;
 };
 

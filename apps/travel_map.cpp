@@ -29,7 +29,7 @@
 #include "travel/eval/KittiIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
-#include "travel_mrpt/PoseFiles.hpp"
+#include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
@@ -191,7 +191,7 @@ int run(int argc, char** argv) {
     if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))
         pose_path = (fs::path(o.input) / "poses.txt").string();
     std::optional<PoseFileSource> pose_file;
-    if (!pose_path.empty()) pose_file = PoseFileSource{travel_mrpt::readPoseFile(pose_path)};
+    if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
     o.poses = pose_path;
 
     std::error_code ec;
@@ -238,8 +238,8 @@ int run(int argc, char** argv) {
     if (!o.quiet) {
         std::size_t traversable = 0, obstacle = 0;
         for (std::size_t c = 0; c < map.grid().cellCount(); ++c) {
-            traversable += map.state(long(c)) == travel_mrpt::CellState::Traversable;
-            obstacle += map.state(long(c)) == travel_mrpt::CellState::Obstacle;
+            traversable += map.state(long(c)) == travel::CellState::Traversable;
+            obstacle += map.state(long(c)) == travel::CellState::Obstacle;
         }
         std::printf("travel-map: %s -> %s\n", o.input.c_str(), o.output_dir.c_str());
         std::printf("  records: %zu, LiDAR frames mapped: %zu, rejected: %zu, without pose: %zu\n",
@@ -259,7 +259,7 @@ int run(int argc, char** argv) {
     for (const auto& [x, y] : probes) {
         const long cell = map.grid().cellIndex(x, y);
         std::printf("probe %g,%g: %s\n", x, y,
-                    cell < 0 ? "outside" : travel_mrpt::toString(map.state(cell)));
+                    cell < 0 ? "outside" : travel::toString(map.state(cell)));
     }
     return 0;
 }

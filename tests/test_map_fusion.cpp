@@ -249,7 +249,10 @@ TEST_F(MapFusion, BoxAndPoleAreObstaclesInGridAndOctoMap) {
     std::printf("[ map      ] box: %zu/%zu observed footprint cells obstacle; pole: %zu/%zu\n",
                 box_obstacle, box_cells, pole_obstacle, pole_cells);
     EXPECT_GE(box_cells, 10u);
-    EXPECT_GE(double(box_obstacle), 0.9 * double(box_cells));
+    // 44/48 when the map measured heights from the point's own node first, 43/48 since it uses
+    // TerrainModel::heightAboveGround (the highest ground plane of the cell and its 4
+    // neighbours, the obstacle source's rule): one footprint cell at the box's edge is missed.
+    EXPECT_GE(double(box_obstacle), 0.85 * double(box_cells));
     EXPECT_GE(pole_cells, 1u);
     EXPECT_EQ(pole_obstacle, pole_cells);
 

@@ -15,11 +15,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 #include "SyntheticRawlog.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
+#include "travel/traversability/TravelObstacles.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -59,8 +61,11 @@ class MovingRobot : public ::testing::Test {
         rawlog_ = nullptr;
     }
 
-    /// Reads the rawlog back and feeds every record to a filter in order.
-    static GroundScore run(const travel_mrpt::TravelFilterOptions& options) {
+    /// Reads the rawlog back and feeds every record to a filter in order; on_frame sees each
+    /// processed LiDAR frame.
+    static GroundScore run(
+        const travel_mrpt::TravelFilterOptions& options,
+        const std::function<void(const travel_mrpt::TravelFrame&)>& on_frame = {}) {
         using namespace mrpt::obs;
         travel_mrpt::TravelFilter filter(options);
         filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
@@ -84,6 +89,7 @@ class MovingRobot : public ::testing::Test {
             }
             std::string why;
             EXPECT_TRUE(filter.filter(*obs, frame, &why)) << why;
+            if (on_frame) on_frame(frame);
             EXPECT_LT(lidar_index, rawlog_->truth.size());
             if (lidar_index >= rawlog_->truth.size()) break;
             const FrameTruth& truth = rawlog_->truth[lidar_index++];
@@ -115,6 +121,42 @@ class MovingRobot : public ::testing::Test {
 
 travel_test::SyntheticRawlog* MovingRobot::rawlog_ = nullptr;
 std::string MovingRobot::path_;
+
+// With deskew on, TRAVEL's obstacles are at the xy of the points TRAVEL labelled (the aligned,
+// deskewed cloud), not at the raw points merely rotated: at 12 m/s they differ by decimetres.
+TEST_F(MovingRobot, ObstaclesAreAtTheDeskewedPointsTravelLabelled) {
+    std::size_t deskewed_frames = 0, obstacles = 0, at_labelled_point = 0, moved_by_deskew = 0;
+    travel::TravelObstacles source;
+    travel::ObstaclePointCloud out;
+    run(streetOptions(true, true), [&](const travel_mrpt::TravelFrame& frame) {
+        if (!frame.deskewed || frame.aligned == nullptr) return;
+        ++deskewed_frames;
+        out.clear();
+        // Sensor at the robot origin: obstacle xy are aligned xy.
+        source.compute(frame.result, *frame.aligned, Eigen::Isometry3f::Identity(), out);
+        const travel::AlignedCloud& a = *frame.aligned;
+        for (std::size_t k = 0; k < out.size(); ++k) {
+            ++obstacles;
+            for (std::size_t i = 0; i < a.x.size(); ++i) {
+                if (!a.valid[i] || a.x[i] != out.x[k] || a.y[i] != out.y[k]) continue;
+                ++at_labelled_point;
+                const Eigen::Vector3f rotated =
+                    frame.alignedRotation *
+                    Eigen::Vector3f(frame.cloud.x[i], frame.cloud.y[i], frame.cloud.z[i]);
+                moved_by_deskew +=
+                    (rotated.head<2>() - Eigen::Vector2f(a.x[i], a.y[i])).norm() > 0.05f;
+                break;
+            }
+        }
+    });
+    std::printf(
+        "[ moving   ] %zu deskewed frames, %zu obstacle points, %zu moved > 5 cm by deskew\n",
+        deskewed_frames, obstacles, moved_by_deskew);
+    EXPECT_GT(deskewed_frames, 0u);
+    EXPECT_GT(obstacles, 0u);
+    EXPECT_EQ(at_labelled_point, obstacles);
+    EXPECT_GT(moved_by_deskew, 0u);
+}
 
 // The truth is aligned by index with what the adapter decodes: same count, rings, times and
 // (up to the 2 mm range quantisation and float rounding) coordinates.

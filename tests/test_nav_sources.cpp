@@ -11,7 +11,6 @@
 #include "nav/Collision.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
-#include "travel/Pipeline.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
@@ -23,9 +22,8 @@ const std::string kShare = TRAVEL_SHARE_DIR_FOR_TESTS;
 
 struct Snapshot {
     travel::sim::Scan scan;
-    travel::Result result;
     travel_mrpt::ObstacleFrame frame;
-    std::unique_ptr<travel::Pipeline> pipeline;
+    std::unique_ptr<SimTravel> travel;
 };
 
 /// One scan of `world` from the robot at (x, y, yaw), TRAVEL run on it, frame filled.
@@ -39,15 +37,8 @@ void snapshot(const World& world, double x, double y, double yaw, Snapshot& s) {
     pose.translation() = Eigen::Vector3d(x, y, z);
     const Eigen::Isometry3d mount(Eigen::Translation3d(0, 0, o.sensor_height));
     travel::sim::scan(world.scene, o.lidar, pose * mount, s.scan);
-    travel::FrameInput in;
-    const double yaw_f = std::atan2(R(1, 0), R(0, 0));
-    in.vehicle_attitude =
-        Eigen::AngleAxisd(-yaw_f, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
-    s.pipeline = std::make_unique<travel::Pipeline>(o.travel);
-    s.pipeline->process(s.scan.cloud, in, s.result);
-    s.frame.cloud = &s.scan.cloud;
-    s.frame.result = &s.result;
-    s.frame.alignedRotation = s.pipeline->aligned().rotation;
+    s.travel = std::make_unique<SimTravel>(o.travel);
+    s.travel->process(s.scan.cloud, pose, mount, 0.0, s.frame);
     s.frame.sensorOnRobot = mount.cast<float>();
 }
 

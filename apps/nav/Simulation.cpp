@@ -21,8 +21,8 @@
 #include <unistd.h>
 
 #include "nav/Collision.hpp"
-#include "travel/Pipeline.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
 
 namespace travel::navsim {
 namespace fs = std::filesystem;
@@ -228,12 +228,38 @@ struct ScratchDir {
 
 }  // namespace
 
+SimTravel::SimTravel(const travel::Params& params)
+    : filter_(std::make_unique<travel_mrpt::TravelFilter>()),
+      frame_(std::make_unique<travel_mrpt::TravelFrame>()) {
+    travel_mrpt::TravelFilterOptions options;
+    options.params = params;
+    options.velocity_source = travel_mrpt::VelocitySource::None;
+    filter_->setOptions(options);
+}
+
+SimTravel::~SimTravel() = default;
+
+void SimTravel::process(const travel::PointCloud& cloud, const Eigen::Isometry3d& robot,
+                        const Eigen::Isometry3d& mount, double t,
+                        travel_mrpt::ObstacleFrame& frame) {
+    const auto toPose = [](const Eigen::Isometry3d& T) {
+        return mrpt::poses::CPose3D::FromRotationAndTranslation(
+            mrpt::math::CMatrixDouble33(T.linear()),
+            mrpt::math::TVector3D(T.translation().x(), T.translation().y(), T.translation().z()));
+    };
+    filter_->setRobotPose(toPose(robot), simStamp(t));
+    filter_->filter(cloud, toPose(mount), simStamp(t), "SIM_LIDAR", *frame_);
+    frame.cloud = &cloud;
+    frame.result = &frame_->result;
+    frame.aligned = frame_->aligned;
+}
+
 RunReport runSimulation(const World& world, const SimOptions& o) {
     if (!(o.dt > 0) || !(o.timeout > 0) || !(o.goal_tolerance > 0) || !(o.sensor_height > 0))
         throw std::runtime_error("dt, timeout, goal_tolerance and sensor_height must be > 0");
     const std::vector<Eigen::Vector2d> footprint = footprintFromConfig(o.nav_config_file);
     o.lidar.validate();
-    travel::Pipeline pipeline(o.travel);  // validates (throws travel::ConfigError)
+    SimTravel segmenter(o.travel);  // validates (throws travel::ConfigError)
     auto source = makeSource(o);
 
     // The navigator writes PTG caches and its log into a directory of its own.
@@ -266,8 +292,6 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         // Mount: sensor straight above the robot origin.
         const Eigen::Isometry3d mount(Eigen::Translation3d(0.0, 0.0, o.sensor_height));
         sim::Scan scan;
-        travel::Result result;
-        travel::FrameInput input;
         travel_mrpt::ObstacleFrame frame;
         frame.sensorOnRobot = mount.cast<float>();
 
@@ -328,16 +352,9 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
                 robot_pose.translation() = Eigen::Vector3d(p.x, p.y, z);
                 sim::LidarModel lidar = o.lidar;
                 sim::scan(world.scene, lidar, robot_pose * mount, scan);
-                // Attitude without yaw: Rz(-yaw) R (robot -> levelled, heading kept).
-                const double yaw_f = std::atan2(R(1, 0), R(0, 0));
-                input.vehicle_attitude =
-                    Eigen::AngleAxisd(-yaw_f, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
-                if (o.source == SourceKind::Travel) pipeline.process(scan.cloud, input, result);
                 frame.cloud = &scan.cloud;
-                frame.result = o.source == SourceKind::Travel ? &result : nullptr;
-                frame.alignedRotation = pipeline.aligned().rotation;
-                if (o.source != SourceKind::Travel)
-                    frame.alignedRotation = input.vehicle_attitude->cast<float>();
+                if (o.source == SourceKind::Travel)
+                    segmenter.process(scan.cloud, robot_pose, mount, t, frame);
                 frame.robotOdometry = {p.x, p.y, p.phi};
                 frame.timestamp = simStamp(t);
                 source->update(frame);

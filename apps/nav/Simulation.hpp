@@ -3,8 +3,9 @@
 // One closed-loop run of travel-nav-sim: MRPT's CVehicleSimul_DiffDriven drives in x, y, yaw;
 // the robot's z, roll and pitch come from the terrain under its footprint (a least-squares
 // plane through the terrain heights at the footprint's corners and centre). Each step (dt):
-// ray-cast a scan from the LiDAR's true 3-D pose, run TRAVEL (levelled with the robot's
-// attitude, as an IMU would give it), update the obstacle source, run one step of
+// ray-cast a scan from the LiDAR's true 3-D pose, run TRAVEL through travel_mrpt::TravelFilter
+// (levelled with the robot's attitude, as an IMU would give it), update the obstacle source with
+// the filter's frame, run one step of
 // CReactiveNavigationSystem3D, advance the simulator, check the footprint against the world's
 // obstacles. A run ends on: the goal reached (within goal_tolerance), a collision (footprint
 // overlapping an obstacle), the navigator giving up (NAV_ERROR: target blocked, not
@@ -15,11 +16,18 @@
 #include <string>
 #include <vector>
 
+#include <memory>
 #include "nav/World.hpp"
+
 #include "travel/Params.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel_mrpt/ObstacleSource.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
+
+namespace travel_mrpt {
+class TravelFilter;
+struct TravelFrame;
+}  // namespace travel_mrpt
 
 namespace travel::navsim {
 
@@ -84,6 +92,24 @@ Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
 /// The robot's footprint from the navigator config (LEVEL1_VECTORX/Y of
 /// [CReactiveNavigationSystem3D]); throws std::runtime_error naming the file.
 std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& nav_config_file);
+
+/// TRAVEL in the simulator, run as every MRPT user runs it: through travel_mrpt::TravelFilter,
+/// fed with the simulated scan and the robot's true pose (whose roll and pitch level the frame,
+/// as an IMU would). Simulated scans are instantaneous: no deskew.
+class SimTravel {
+  public:
+    /// Throws travel::ConfigError on invalid parameters.
+    explicit SimTravel(const travel::Params& params);
+    ~SimTravel();
+    /// Segments `cloud`, seen at time t by the sensor at `mount` on the robot at world pose
+    /// `robot`; fills frame.cloud, frame.result and frame.aligned (valid until the next call).
+    void process(const travel::PointCloud& cloud, const Eigen::Isometry3d& robot,
+                 const Eigen::Isometry3d& mount, double t, travel_mrpt::ObstacleFrame& frame);
+
+  private:
+    std::unique_ptr<travel_mrpt::TravelFilter> filter_;
+    std::unique_ptr<travel_mrpt::TravelFrame> frame_;
+};
 
 /// Runs one closed loop. Throws std::runtime_error on configuration errors.
 RunReport runSimulation(const World& world, const SimOptions& options);

@@ -1,6 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Point labels (paper eq. 5). With the refitted plane (s, d) of the point's node and the signed
+// Point labels (paper eq. 5). With the ground plane (s, d) of the point's node
+// (TerrainModel::groundPlane: TTMF's refitted plane of a traversable node) and the signed
 // distance e = s.p + d:
 //   e < -outlier_dist          -> Outlier (below-ground returns: reflections, multipath)
 //   -outlier_dist <= e < eps3  -> Ground
@@ -28,10 +29,13 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const uint32_t* order = field.order().data();
     const float ground_dist = static_cast<float>(params.ground_dist);
     const float outlier_dist = static_cast<float>(params.outlier_dist);
-    for (const TriNode& node : model.nodes) {
-        if (!node.traversable || node.count == 0) continue;
-        const float s0 = node.refit_normal.x(), s1 = node.refit_normal.y();
-        const float s2 = node.refit_normal.z(), d = node.refit_d;
+    const int num_nodes = static_cast<int>(model.nodes.size());
+    for (int k = 0; k < num_nodes; ++k) {
+        const TriNode& node = model.nodes[k];
+        const std::optional<GroundPlane> ground = model.groundPlane(k);
+        if (!ground || node.count == 0) continue;
+        const float s0 = ground->normal.x(), s1 = ground->normal.y();
+        const float s2 = ground->normal.z(), d = ground->d;
         // The node's own plane, when the search verified it: a point on either surface is
         // ground. Its signed distance is folded in as min(e, e_own) unless e_own says outlier.
         const bool own = params.label_with_node_plane && node.reached;

@@ -10,29 +10,19 @@ void TriGridField::configure(const Params& params) {
     const float r = static_cast<float>(params.tgf_resolution);
     const int half = static_cast<int>(std::ceil(params.max_range / params.tgf_resolution));
     const int n = 2 * std::max(half, 1);
-    if (r == resolution_ && n == cells_per_side_) return;
-    resolution_ = r;
-    cells_per_side_ = n;
-    origin_ = -half * r;
+    if (r == geometry_.resolution && n == geometry_.cells_per_side) return;
+    geometry_.resolution = r;
+    geometry_.cells_per_side = n;
+    geometry_.origin_xy = -half * r;
 
     const int num_nodes = 4 * n * n;
     const int lattice = 2 * n + 1;
-    // Triangle k's corners on the half-cell lattice: the cell centre (2ix+1, 2iy+1) and the
-    // two cell corners of its side (east, north, west, south).
-    static constexpr int kCornerOffsets[4][2][2] = {
-        {{2, 0}, {2, 2}}, {{2, 2}, {0, 2}}, {{0, 2}, {0, 0}}, {{0, 0}, {2, 0}}};
     vertices_.resize(3 * num_nodes);
-    for (int cell = 0; cell < n * n; ++cell) {
-        const int ix = cell % n, iy = cell / n;
-        for (int k = 0; k < 4; ++k) {
-            const int node = 4 * cell + k;
-            vertices_[3 * node] = (2 * iy + 1) * lattice + (2 * ix + 1);
-            for (int c = 0; c < 2; ++c) {
-                vertices_[3 * node + 1 + c] = (2 * iy + kCornerOffsets[k][c][1]) * lattice +
-                                              (2 * ix + kCornerOffsets[k][c][0]);
-            }
+    for (int node = 0; node < num_nodes; ++node)
+        for (int k = 0; k < 3; ++k) {
+            const std::array<int, 2> l = geometry_.cornerOnLattice(node, k);
+            vertices_[3 * node + k] = l[1] * lattice + l[0];
         }
-    }
     // Neighbours = triangles of the 3x3 surrounding cells sharing at least one vertex.
     neighbours_.assign(num_nodes, Neighbours{});
     for (int node = 0; node < num_nodes; ++node) {
@@ -57,16 +47,14 @@ void TriGridField::configure(const Params& params) {
 }
 
 void TriGridField::vertexXY(int vertex, float& x, float& y) const {
-    const int lattice = 2 * cells_per_side_ + 1;
-    x = origin_ + 0.5f * resolution_ * static_cast<float>(vertex % lattice);
-    y = origin_ + 0.5f * resolution_ * static_cast<float>(vertex / lattice);
+    const int lattice = 2 * geometry_.cells_per_side + 1;
+    const Eigen::Vector2f xy = geometry_.latticeXY(vertex % lattice, vertex / lattice);
+    x = xy.x(), y = xy.y();
 }
 
 void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     const int num_nodes = numNodes();
-    model.resolution = resolution_;
-    model.cells_per_side = cells_per_side_;
-    model.origin_xy = origin_;
+    static_cast<TriGridGeometry&>(model) = geometry_;
     model.nodes.assign(num_nodes, TriNode{});
 
     // Counting sort by node: pass 1 counts, pass 2 scatters into contiguous slices.
@@ -83,12 +71,12 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     const uint8_t* valid = cloud.valid.data();
     int32_t* point_node = point_node_.data();
     uint32_t* start = node_start_.data();
-    // Node of every point: the same arithmetic as nodeOf(), written as selects so that it
-    // vectorises (with -fno-trapping-math, see CMakeLists). Coordinates outside the grid are
+    // Node of every point: the same code as nodeOf() (triangleNodeOfGridCoords, selects that
+    // vectorise with -fno-trapping-math, see CMakeLists). Coordinates outside the grid are
     // replaced before the float->int conversion, so NaN and huge values stay defined.
-    const float inv_r = 1.f / resolution_, origin = origin_;
-    const float limit = static_cast<float>(cells_per_side_);
-    const int side = cells_per_side_;
+    const float inv_r = 1.f / geometry_.resolution, origin = geometry_.origin_xy;
+    const float limit = static_cast<float>(geometry_.cells_per_side);
+    const int side = geometry_.cells_per_side;
     for (std::size_t i = 0; i < n; ++i) {
         const float gx = (px[i] - origin) * inv_r, gy = (py[i] - origin) * inv_r;
         const int inside = (valid[i] != 0 ? 1 : 0) & (gx >= 0.f ? 1 : 0) & (gy >= 0.f ? 1 : 0) &
@@ -97,13 +85,7 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
         // inside points keep their exact position (same triangle as nodeOf()).
         const float cx = gx >= 0.f && gx < limit ? gx : 0.f;
         const float cy = gy >= 0.f && gy < limit ? gy : 0.f;
-        const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
-        const float u = cx - (static_cast<float>(ix) + 0.5f);
-        const float v = cy - (static_cast<float>(iy) + 0.5f);
-        const float abs_u = u < 0.f ? -u : u, abs_v = v < 0.f ? -v : v;
-        const int horizontal = abs_u >= abs_v ? 1 : 0;
-        const int negative = horizontal ? (u < 0.f ? 1 : 0) : (v < 0.f ? 1 : 0);
-        const int node = 4 * (iy * side + ix) + (1 - horizontal) + 2 * negative;
+        const int node = triangleNodeOfGridCoords(cx, cy, side);
         point_node[i] = inside ? node : -1;
     }
     int run_node = -1;

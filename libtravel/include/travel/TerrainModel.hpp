@@ -6,7 +6,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace travel {
@@ -55,20 +57,126 @@ inline float planeHeightAt(const Eigen::Vector3f& s, float d, float x, float y) 
     return -(s.x() * x + s.y() * y + d) / s.z();
 }
 
-struct TerrainModel {
-    float resolution = 0.f;      ///< r [m]
-    int cells_per_side = 0;      ///< the grid is cells_per_side x cells_per_side cells
-    float origin_xy = 0.f;       ///< x and y of the grid's lower-left corner (= -R)
-    std::vector<TriNode> nodes;  ///< 4 per cell; index = 4 * (iy * cells_per_side + ix) + tri
-    int seed_node = -1;          ///< start node of the first search (-1: no terrain near sensor)
-    int num_components = 0;      ///< searches run (first + re-seeds)
+/// A ground plane s.p + d = 0 (s unit, s.z > 0).
+struct GroundPlane {
+    Eigen::Vector3f normal{0.f, 0.f, 1.f};
+    float d = 0.f;
+    float heightAt(float x, float y) const { return planeHeightAt(normal, d, x, y); }
+};
 
-    /// Triangle k of a cell: 0 = +x side (east), 1 = +y (north), 2 = -x (west), 3 = -y (south).
-    /// Its corners are the cell centre and the two cell corners of that side.
+/// Triangle k of a cell: 0 = +x side (east), 1 = +y (north), 2 = -x (west), 3 = -y (south).
+/// Its corners are the cell centre and the two cell corners of that side, counter-clockwise;
+/// kTriangleSideCorners[k][c] = (x, y) of side corner c as 0/1 steps from the cell's lower-left
+/// corner. The one corner table of the tri-grid (TriGridField's vertex lattice uses it too).
+inline constexpr int kTriangleSideCorners[4][2][2] = {
+    {{1, 0}, {1, 1}}, {{1, 1}, {0, 1}}, {{0, 1}, {0, 0}}, {{0, 0}, {1, 0}}};
+
+/// Which triangle of cell (ix, iy) = (int(gx), int(gy)) holds grid coordinates (gx, gy)
+/// (metres / r from the grid's lower-left corner, inside the grid): compare the offsets from
+/// the cell centre (the diagonals are |u| = |v|). Written as selects, without branches, so that
+/// TriGridField::embed's loop over all points vectorises; nodeAt() uses the same code.
+inline int triangleNodeOfGridCoords(float gx, float gy, int cells_per_side) {
+    const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
+    const float u = gx - (static_cast<float>(ix) + 0.5f);
+    const float v = gy - (static_cast<float>(iy) + 0.5f);
+    const float abs_u = u < 0.f ? -u : u, abs_v = v < 0.f ? -v : v;
+    const int horizontal = abs_u >= abs_v ? 1 : 0;
+    const int negative = horizontal ? (u < 0.f ? 1 : 0) : (v < 0.f ? 1 : 0);
+    return 4 * (iy * cells_per_side + ix) + (1 - horizontal) + 2 * negative;
+}
+
+/// Geometry of the tri-grid (paper Sec. III-B): a square of cells_per_side^2 cells of side r,
+/// lower-left corner at (origin_xy, origin_xy), 4 triangular nodes per cell,
+/// node index = 4 * (iy * cells_per_side + ix) + triangle.
+struct TriGridGeometry {
+    float resolution = 0.f;  ///< r [m]
+    int cells_per_side = 0;  ///< the grid is cells_per_side x cells_per_side cells
+    float origin_xy = 0.f;   ///< x and y of the grid's lower-left corner (= -R)
+
+    bool hasCells() const { return cells_per_side > 0 && resolution > 0.f; }
+    int numNodes() const { return 4 * cells_per_side * cells_per_side; }
+
     Eigen::Vector2f cellCenter(int cell) const {
         const int ix = cell % cells_per_side, iy = cell / cells_per_side;
         return {origin_xy + (ix + 0.5f) * resolution, origin_xy + (iy + 0.5f) * resolution};
     }
+
+    /// Node holding (x, y), or -1 outside the grid (also for NaN and huge coordinates).
+    int nodeAt(float x, float y) const {
+        if (!hasCells()) return -1;
+        const float inv_r = 1.f / resolution;
+        const float gx = (x - origin_xy) * inv_r, gy = (y - origin_xy) * inv_r;
+        // Bounds before the float->int conversion (huge values would be undefined).
+        const float limit = static_cast<float>(cells_per_side);
+        if (!(gx >= 0.f && gy >= 0.f && gx < limit && gy < limit)) return -1;
+        return triangleNodeOfGridCoords(gx, gy, cells_per_side);
+    }
+
+    /// Corner k (0 = cell centre, 1, 2 = the side's cell corners, counter-clockwise) of a
+    /// node's triangle on the lattice of half-cell steps: ((2n+1) x (2n+1) points, cell corners
+    /// at even coordinates, cell centres at odd ones). Neighbouring nodes share lattice points
+    /// exactly, where float corners computed from two cells could differ in the last bit.
+    std::array<int, 2> cornerOnLattice(int node, int k) const {
+        const int cell = node / 4, tri = node % 4;
+        const int ix = cell % cells_per_side, iy = cell / cells_per_side;
+        if (k == 0) return {2 * ix + 1, 2 * iy + 1};
+        return {2 * ix + 2 * kTriangleSideCorners[tri][k - 1][0],
+                2 * iy + 2 * kTriangleSideCorners[tri][k - 1][1]};
+    }
+    /// xy of a lattice point.
+    Eigen::Vector2f latticeXY(int lx, int ly) const {
+        return {origin_xy + 0.5f * resolution * static_cast<float>(lx),
+                origin_xy + 0.5f * resolution * static_cast<float>(ly)};
+    }
+    /// xy of the 3 corners of a node's triangle (cell centre first, counter-clockwise).
+    std::array<Eigen::Vector2f, 3> triangleCorners(int node) const {
+        std::array<Eigen::Vector2f, 3> xy;
+        for (int k = 0; k < 3; ++k) {
+            const std::array<int, 2> l = cornerOnLattice(node, k);
+            xy[k] = latticeXY(l[0], l[1]);
+        }
+        return xy;
+    }
+};
+
+struct TerrainModel : TriGridGeometry {
+    std::vector<TriNode> nodes;  ///< 4 per cell; index = 4 * (iy * cells_per_side + ix) + tri
+    int seed_node = -1;          ///< start node of the first search (-1: no terrain near sensor)
+    int num_components = 0;      ///< searches run (first + re-seeds)
+
+    /// True when `nodes` matches the geometry (a model read from a file may not).
+    bool usable() const {
+        return hasCells() && nodes.size() == static_cast<std::size_t>(numNodes());
+    }
+
+    /// THE ground rule: a node has ground iff TTMF made it traversable, and its ground is the
+    /// plane its points were labelled against (paper eq. 5): TTMF's refitted plane, or the
+    /// node's own plane when TTMF is off (TerrainModelFitting copies it into refit_*). Every
+    /// point labelled Ground lies within ground_dist of this plane, so a map or navigator
+    /// measuring heights against any other plane could call a point "ground" and "an obstacle
+    /// above the ground" at once. Its normal is within max_slope of vertical (so s.z > 0).
+    std::optional<GroundPlane> groundPlane(int node) const {
+        const TriNode& n = nodes[static_cast<std::size_t>(node)];
+        if (!n.traversable) return std::nullopt;
+        return GroundPlane{n.refit_normal, n.refit_d};
+    }
+
+    /// Height of (x, y, z) above the local ground: the lowest of its heights over the ground
+    /// planes of the nodes of its cell and of the 4 cells sharing an edge with it. The lowest,
+    /// because where the terrain bends (the foot of a ramp, a kerb) one node's plane
+    /// extrapolated across the bend lifts the ground; a point standing on the upper level is
+    /// measured from that level. NaN outside the grid or when none of these nodes has ground:
+    /// the caller's own fallback (fused map ground, robot base plane, sensor height) follows.
+    float heightAboveGround(float x, float y, float z) const;
+
+    /// Step of node a over node b at their shared edge, from each node's OWN (node-wise PCA)
+    /// plane: TTMF smooths steps away. The step must show three times: a's plane above b's at
+    /// the midpoint of the shared edge, a's mean above b's plane, and b's mean below a's plane;
+    /// the result is the smallest of the three (> 0: a is higher, < 0: b is higher by -result,
+    /// 0: no consistent step, no shared edge, or either node is not traversable terrain of its
+    /// own (NodeClass::Terrain) whose points spread at least min_spread [m, std. dev.] in their
+    /// second direction: a plane fitted to one ring's arc or a small patch has an unknown tilt).
+    float stepBetween(int a, int b, float min_spread) const;
 };
 
 }  // namespace travel

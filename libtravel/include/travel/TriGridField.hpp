@@ -7,7 +7,6 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -36,20 +35,23 @@ class TriGridField {
     /// labels them).
     void embed(const AlignedCloud& cloud, TerrainModel& model);
 
-    int cellsPerSide() const { return cells_per_side_; }
-    int numNodes() const { return 4 * cells_per_side_ * cells_per_side_; }
-    float resolution() const { return resolution_; }
-    float originXY() const { return origin_; }
+    const TriGridGeometry& geometry() const { return geometry_; }
+    int cellsPerSide() const { return geometry_.cells_per_side; }
+    int numNodes() const { return geometry_.numNodes(); }
+    float resolution() const { return geometry_.resolution; }
+    float originXY() const { return geometry_.origin_xy; }
 
-    /// Node index of a point, or -1 outside the grid.
-    int nodeOf(float x, float y) const;
+    /// Node index of a point, or -1 outside the grid (TriGridGeometry::nodeAt).
+    int nodeOf(float x, float y) const { return geometry_.nodeAt(x, y); }
 
     const Neighbours& neighbours(int node) const { return neighbours_[node]; }
 
     /// Corner k (0..2) of a node's triangle as a vertex id on the (2n+1) x (2n+1) lattice of
     /// half-cell steps (cell corners at even coordinates, cell centres at odd ones).
     int vertexId(int node, int k) const { return vertices_[3 * node + k]; }
-    int numVertices() const { return (2 * cells_per_side_ + 1) * (2 * cells_per_side_ + 1); }
+    int numVertices() const {
+        return (2 * geometry_.cells_per_side + 1) * (2 * geometry_.cells_per_side + 1);
+    }
     /// xy of a lattice vertex.
     void vertexXY(int vertex, float& x, float& y) const;
 
@@ -60,9 +62,7 @@ class TriGridField {
     const std::vector<uint32_t>& order() const { return order_; }
 
   private:
-    float resolution_ = 0.f;
-    float origin_ = 0.f;  // x and y of the grid's lower-left corner
-    int cells_per_side_ = 0;
+    TriGridGeometry geometry_;
     std::vector<Neighbours> neighbours_;
     std::vector<int32_t> vertices_;  // 3 per node
 
@@ -71,23 +71,5 @@ class TriGridField {
     std::vector<float> sx_, sy_, sz_;
     std::vector<uint32_t> order_;
 };
-
-inline int TriGridField::nodeOf(float x, float y) const {
-    const float inv_r = 1.f / resolution_;
-    const float gx = (x - origin_) * inv_r, gy = (y - origin_) * inv_r;
-    // Bounds before the float->int conversion (huge values would be undefined); NaN fails too.
-    const float limit = static_cast<float>(cells_per_side_);
-    if (!(gx >= 0.f && gy >= 0.f && gx < limit && gy < limit)) return -1;
-    const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
-    // Which of the 4 triangles: compare the offsets from the cell centre (diagonals |u| = |v|).
-    const float u = gx - (static_cast<float>(ix) + 0.5f);
-    const float v = gy - (static_cast<float>(iy) + 0.5f);
-    // Branch-free (the choice is unpredictable along a scan line): east 0, north 1, west 2,
-    // south 3.
-    const int horizontal = std::fabs(u) >= std::fabs(v);
-    const int negative = (horizontal & (u < 0.f)) | ((horizontal ^ 1) & (v < 0.f));
-    const int tri = (horizontal ^ 1) + 2 * negative;
-    return 4 * (iy * cells_per_side_ + ix) + tri;
-}
 
 }  // namespace travel

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "travel/Errors.hpp"
@@ -60,67 +62,13 @@ octomap::OcTreeKey unpack(uint64_t v) {
     return octomap::OcTreeKey(uint16_t(v >> 32), uint16_t(v >> 16), uint16_t(v));
 }
 
-/// The plane of a node TRAVEL accepted as traversable, if any (s.z > 0.5: not a wall).
-bool nodePlane(const travel::TriNode& node, Eigen::Vector3f& s, float& d) {
-    if (!node.traversable) return false;
-    s = node.refitted ? node.refit_normal : node.normal;
-    d = node.refitted ? node.refit_d : node.d;
-    return s.z() > 0.5f && std::isfinite(d);
-}
-
-/// Index of the node holding aligned (x, y), or -1 outside the terrain grid.
-long nodeIndex(const travel::TerrainModel& t, float x, float y, int* cx = nullptr,
-               int* cy = nullptr) {
-    if (t.cells_per_side <= 0 || !(t.resolution > 0)) return -1;
-    const float fx = (x - t.origin_xy) / t.resolution, fy = (y - t.origin_xy) / t.resolution;
-    if (!(fx >= 0 && fy >= 0 && fx < t.cells_per_side && fy < t.cells_per_side)) return -1;
-    const int ix = int(fx), iy = int(fy);
-    const float dx = fx - (ix + 0.5f), dy = fy - (iy + 0.5f);
-    const int tri = std::abs(dx) >= std::abs(dy) ? (dx >= 0 ? 0 : 2) : (dy >= 0 ? 1 : 3);
-    if (cx) *cx = ix;
-    if (cy) *cy = iy;
-    const long index = 4L * (long(iy) * t.cells_per_side + ix) + tri;
-    return index < long(t.nodes.size()) ? index : -1;
-}
-
-/// Terrain height under aligned (x, y) from its own node's plane, if traversable.
-bool ownNodeHeight(const travel::TerrainModel& t, float x, float y, float& z) {
-    const long own = nodeIndex(t, x, y);
-    Eigen::Vector3f s;
-    float d = 0;
-    if (own < 0 || !nodePlane(t.nodes[own], s, d)) return false;
-    z = travel::planeHeightAt(s, d, x, y);
-    return true;
-}
-
-/// Terrain height under aligned (x, y) from the plane of a traversable node of the same cell or
-/// of a neighbouring cell (the first found).
-bool neighbourNodeHeight(const travel::TerrainModel& t, float x, float y, float& z) {
-    int cx = 0, cy = 0;
-    if (nodeIndex(t, x, y, &cx, &cy) < 0) return false;
-    Eigen::Vector3f s;
-    float d = 0;
-    for (int oy = -1; oy <= 1; ++oy)
-        for (int ox = -1; ox <= 1; ++ox) {
-            const int ix = cx + ox, iy = cy + oy;
-            if (ix < 0 || iy < 0 || ix >= t.cells_per_side || iy >= t.cells_per_side) continue;
-            for (int tri = 0; tri < 4; ++tri) {
-                const long k = 4L * (long(iy) * t.cells_per_side + ix) + tri;
-                if (k < long(t.nodes.size()) && nodePlane(t.nodes[k], s, d)) {
-                    z = travel::planeHeightAt(s, d, x, y);
-                    return true;
-                }
-            }
-        }
-    return false;
-}
-
-float nodeSlopeDeg(const travel::TerrainModel& t, float x, float y) {
-    const long k = nodeIndex(t, x, y);
-    if (k < 0) return std::numeric_limits<float>::quiet_NaN();
-    const travel::TriNode& n = t.nodes[k];
-    const float sz = n.refitted ? n.refit_normal.z() : n.normal.z();
-    return std::acos(std::clamp(sz, -1.f, 1.f)) * 57.2957795f;
+/// Slope of the ground under a ground point (TerrainModel::groundPlane of its node).
+float groundSlopeDeg(const travel::TerrainModel& t, float x, float y) {
+    const int node = t.nodeAt(x, y);
+    const std::optional<travel::GroundPlane> ground =
+        node >= 0 && t.usable() ? t.groundPlane(node) : std::nullopt;
+    if (!ground) return std::numeric_limits<float>::quiet_NaN();
+    return std::acos(std::clamp(ground->normal.z(), -1.f, 1.f)) * 57.2957795f;
 }
 
 }  // namespace
@@ -231,32 +179,27 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         if (!a.valid[i] || result.labels[i] != PointClass::Ground) continue;
         const Eigen::Vector3f pa(a.x[i], a.y[i], a.z[i]);
         const Eigen::Vector3f pw = to_world * pa + origin;
-        grid_.addGround(pw.x(), pw.y(), pw.z(), nodeSlopeDeg(terrain, pa.x(), pa.y()));
+        grid_.addGround(pw.x(), pw.y(), pw.z(), groundSlopeDeg(terrain, pa.x(), pa.y()));
         endKey(pw, s.ground_ends);
     }
-    // Pass 2: non-ground points, by their height above the local ground: the frame's own
-    // traversable node under the point, else the ground fused in the grid cell (so a raised
-    // level TRAVEL did not accept this time is not an obstacle when earlier frames saw it as
-    // ground), else a neighbouring node's plane, its cluster's ground, the sensor height.
+    // Pass 2: non-ground points, by their height above the local ground: TRAVEL's
+    // (TerrainModel::heightAboveGround), else the ground fused in the grid cell this frame, else
+    // its cluster's ground, else the sensor height.
     for (std::size_t i = 0; i < n; ++i) {
         if (!a.valid[i] || result.labels[i] != PointClass::NonGround) continue;
         const Eigen::Vector3f pa(a.x[i], a.y[i], a.z[i]);
         const Eigen::Vector3f pw = to_world * pa + origin;
-        float height = 0;
-        float z_ground = 0;
-        const long cell = grid_.cellIndex(pw.x(), pw.y());
-        if (ownNodeHeight(terrain, pa.x(), pa.y(), z_ground)) {
-            height = pa.z() - z_ground;
-        } else if (cell >= 0 && std::isfinite(grid_.groundHeightThisFrame(cell))) {
-            height = pw.z() - grid_.groundHeightThisFrame(cell);
-        } else if (neighbourNodeHeight(terrain, pa.x(), pa.y(), z_ground)) {
-            height = pa.z() - z_ground;
-        } else if (i < result.cluster_id.size() && result.cluster_id[i] > 0 &&
-                   result.cluster_id[i] <= result.clusters.size() &&
-                   std::isfinite(result.clusters[result.cluster_id[i] - 1].ground_z)) {
-            height = pa.z() - result.clusters[result.cluster_id[i] - 1].ground_z;
-        } else {
-            height = pa.z() + sensor_height;
+        float height = terrain.heightAboveGround(pa.x(), pa.y(), pa.z());
+        if (!std::isfinite(height)) {
+            const long cell = grid_.cellIndex(pw.x(), pw.y());
+            const uint32_t cluster = i < result.cluster_id.size() ? result.cluster_id[i] : 0;
+            if (cell >= 0 && std::isfinite(grid_.groundHeightThisFrame(cell)))
+                height = pw.z() - grid_.groundHeightThisFrame(cell);
+            else if (cluster > 0 && cluster <= result.clusters.size() &&
+                     std::isfinite(result.clusters[cluster - 1].ground_z))
+                height = pa.z() - result.clusters[cluster - 1].ground_z;
+            else
+                height = pa.z() + sensor_height;
         }
         if (height < min_h) continue;  // kerb faces, low vegetation: neither ground nor obstacle
         if (height <= max_h) grid_.addObstacle(pw.x(), pw.y());

@@ -19,7 +19,6 @@ void ObstacleSource::setMemory(const ObstacleMemoryOptions& memory) {
 }
 
 void ObstacleSource::update(const ObstacleFrame& frame) {
-    if (frame.cloud == nullptr) throw std::invalid_argument(name() + " obstacle source: no cloud");
     std::lock_guard<std::mutex> lock(update_mutex_);
     work_.clear();
     compute(frame, work_);

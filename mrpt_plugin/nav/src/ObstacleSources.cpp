@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel_mrpt/ObstacleSources.hpp"
 
+#include "travel_mrpt/TravelObstacleSource.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -21,7 +23,15 @@ std::unique_ptr<RobotFrameBandSource> RobotFrameBandSource::heightThreshold(doub
     return std::make_unique<RobotFrameBandSource>("threshold", min_z, 3.0);
 }
 
+void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+    if (frame.result == nullptr || frame.aligned == nullptr)
+        throw std::invalid_argument(
+            "travel obstacle source: the frame has no TRAVEL result or aligned cloud");
+    obstacles_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, out);
+}
+
 void RobotFrameBandSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+    if (frame.cloud == nullptr) throw std::invalid_argument(name() + " obstacle source: no cloud");
     const travel::PointCloud& c = *frame.cloud;
     const Eigen::Matrix3f& R = frame.sensorOnRobot.linear();
     const Eigen::Vector3f t = frame.sensorOnRobot.translation();

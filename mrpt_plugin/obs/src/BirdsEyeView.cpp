@@ -95,21 +95,11 @@ void fillTriangle(CImage& img, const std::array<double, 6>& p, const Rgb& c) {
 
 /// Faint fills (pass 0) or outlines (pass 1) of the traversable nodes.
 void drawNodes(CImage& img, const travel::TerrainModel& terrain, const Projection& proj, int pass) {
-    if (terrain.cells_per_side <= 0 || !(terrain.resolution > 0)) return;
-    const float h = 0.5f * terrain.resolution;
-    // Corners of triangle k (see TerrainModel::cellCenter): the centre and the two cell corners
-    // of side k, as offsets from the centre.
-    static constexpr float kSide[4][4] = {
-        {1, -1, 1, 1}, {1, 1, -1, 1}, {-1, 1, -1, -1}, {-1, -1, 1, -1}};
+    if (!terrain.usable()) return;
     const auto corners = [&](std::size_t node) {
-        const auto c = terrain.cellCenter(static_cast<int>(node / 4));
-        const float* s = kSide[node % 4];
-        return std::array<double, 6>{proj.u(c.y()),
-                                     proj.v(c.x()),
-                                     proj.u(c.y() + h * s[1]),
-                                     proj.v(c.x() + h * s[0]),
-                                     proj.u(c.y() + h * s[3]),
-                                     proj.v(c.x() + h * s[2])};
+        const std::array<Eigen::Vector2f, 3> c = terrain.triangleCorners(static_cast<int>(node));
+        return std::array<double, 6>{proj.u(c[0].y()), proj.v(c[0].x()), proj.u(c[1].y()),
+                                     proj.v(c[1].x()), proj.u(c[2].y()), proj.v(c[2].x())};
     };
     if (pass == 0) {
         for (std::size_t k = 0; k < terrain.nodes.size(); ++k)

@@ -175,19 +175,6 @@ std::size_t TerrainSummary::numTraversable() const {
         nodes.begin(), nodes.end(), [](const TerrainNodeRecord& n) { return n.traversable; }));
 }
 
-void TerrainSummary::triangleXY(uint32_t index, Eigen::Vector2f corners[3]) const {
-    const int cell = static_cast<int>(index / 4), tri = static_cast<int>(index % 4);
-    const int ix = cell % cells_per_side, iy = cell / cells_per_side;
-    const float x0 = origin_xy + ix * resolution, y0 = origin_xy + iy * resolution;
-    const float x1 = x0 + resolution, y1 = y0 + resolution;
-    corners[0] = {x0 + 0.5f * resolution, y0 + 0.5f * resolution};
-    // Triangle 0 = +x side, 1 = +y, 2 = -x, 3 = -y (travel::TerrainModel), counter-clockwise.
-    static const int kCornerOfSide[4][2][2] = {
-        {{1, 0}, {1, 1}}, {{1, 1}, {0, 1}}, {{0, 1}, {0, 0}}, {{0, 0}, {1, 0}}};
-    for (int k = 0; k < 2; ++k)
-        corners[1 + k] = {kCornerOfSide[tri][k][0] ? x1 : x0, kCornerOfSide[tri][k][1] ? y1 : y0};
-}
-
 // ---------------------------------------------------------------- filling
 
 void CObservationTravelLabels::assign(const travel::PointCloud& cloud, const travel::Result& result,
@@ -218,9 +205,7 @@ void CObservationTravelLabels::assign(const travel::PointCloud& cloud, const tra
     clusters.assign(result.clusters.begin(), result.clusters.end());
 
     const travel::TerrainModel& t = result.terrain;
-    terrain.resolution = t.resolution;
-    terrain.cells_per_side = t.cells_per_side;
-    terrain.origin_xy = t.origin_xy;
+    static_cast<travel::TriGridGeometry&>(terrain) = t;
     terrain.nodes.clear();
     for (std::size_t i = 0; i < t.nodes.size(); ++i) {
         const travel::TriNode& node = t.nodes[i];
@@ -464,10 +449,9 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
     nodes->setName("travel_traversable_nodes");
     nodes->enableLight(false);
     const mrpt::img::TColor node_colour(230, 200, 90, 110);
-    Eigen::Vector2f xy[3];
     for (const TerrainNodeRecord& node : terrain.nodes) {
-        if (!node.traversable || node.normal.z() < 0.1f || terrain.cells_per_side <= 0) continue;
-        terrain.triangleXY(node.index, xy);
+        if (!node.traversable || !terrain.hasCells()) continue;
+        const std::array<Eigen::Vector2f, 3> xy = terrain.triangleCorners(int(node.index));
         mrpt::opengl::TTriangle tri;
         bool finite = true;
         for (int k = 0; k < 3; ++k) {

@@ -139,10 +139,26 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
     out.convert_ms = msSince(convert_start);
     out.sensorLabel = obs.sensorLabel;
     out.timestamp = obs.timestamp;
+    segment(out);
+    return true;
+}
 
+void TravelFilter::filter(const travel::PointCloud& cloud, const mrpt::poses::CPose3D& sensorPose,
+                          mrpt::Clock::time_point timestamp, const std::string& sensorLabel,
+                          TravelFrame& out) {
+    out.aligned = nullptr;
+    out.cloud = cloud;
+    out.sensorPose = sensorPose;
+    out.convert_ms = 0;
+    out.sensorLabel = sensorLabel;
+    out.timestamp = timestamp;
+    segment(out);
+}
+
+void TravelFilter::segment(TravelFrame& out) {
     const Clock::time_point process_start = Clock::now();
     mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
-    SensorPipeline& sensor = pipelineFor(obs.sensorLabel, out.sensorPose);
+    SensorPipeline& sensor = pipelineFor(out.sensorLabel, out.sensorPose);
     const travel::Params& params = sensor.pipeline->params();
 
     // Motion at the frame's time zero (see the header): robot frame -> sensor frame.
@@ -151,9 +167,9 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
     out.levelled = out.deskewed = false;
     out.sensorLinearVelocity.setZero();
     out.sensorAngularVelocity.setZero();
-    const bool timed = obs.timestamp != INVALID_TIMESTAMP;
+    const bool timed = out.timestamp != INVALID_TIMESTAMP;
     const MotionEstimate motion =
-        timed ? motion_.estimateAt(seconds(obs.timestamp)) : MotionEstimate{};
+        timed ? motion_.estimateAt(seconds(out.timestamp)) : MotionEstimate{};
     if (options_.use_robot_attitude && params.align_attitude) {
         if (motion.attitude) {
             setVehicleAttitude(
@@ -173,7 +189,7 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
         if (!out.cloud.hasTime()) {
             if (!sensor.noted_no_times)
                 noteOnce(sensor.noted_no_times,
-                         "'" + obs.sensorLabel + "' has no per-point times: no deskew",
+                         "'" + out.sensorLabel + "' has no per-point times: no deskew",
                          mrpt::system::LVL_INFO);
         } else if (motion.linear_velocity && motion.angular_velocity) {
             // v_s = R^T (v + w x t), w_s = R^T w for the sensor at (R, t) on the robot.
@@ -199,7 +215,6 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
     out.alignedRotation = sensor.pipeline->aligned().rotation;
     out.aligned = &sensor.pipeline->aligned();
     out.process_ms = msSince(process_start);
-    return true;
 }
 
 const travel::AlignedCloud& TravelFilter::aligned(const std::string& sensor_label) const {

@@ -31,7 +31,7 @@
 #include <memory>
 #include <string>
 
-#include "travel_mrpt/TraversabilityGrid.hpp"
+#include "travel/traversability/TraversabilityGrid.hpp"
 #include "travel_mrpt/TraversabilityMapOptions.hpp"
 
 namespace octomap {

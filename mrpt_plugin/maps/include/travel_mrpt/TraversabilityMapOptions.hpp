@@ -38,10 +38,16 @@
 #include <string>
 #include <vector>
 
+#include "travel/traversability/TraversabilityGrid.hpp"
 #include "travel_mrpt/TravelFilterOptions.hpp"
-#include "travel_mrpt/TraversabilityGrid.hpp"
 
 namespace travel_mrpt {
+
+// The grid is libtravel's (travel::traversability); MRPT code keeps naming it from here.
+using travel::CellState;
+using travel::GridFusionParams;
+using travel::GridGeometry;
+using travel::TraversabilityGrid;
 
 struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions {
     GridGeometry geometry;

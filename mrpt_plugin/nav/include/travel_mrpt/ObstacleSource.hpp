@@ -27,7 +27,9 @@
 #include <vector>
 
 #include "travel/PointCloud.hpp"
+#include "travel/Preprocessing.hpp"
 #include "travel/Result.hpp"
+#include "travel/traversability/TravelObstacles.hpp"
 
 namespace mrpt::maps {
 class CSimplePointsMap;
@@ -38,12 +40,11 @@ namespace travel_mrpt {
 /// What a source needs from one LiDAR frame (pointers stay owned by the caller).
 struct ObstacleFrame {
     const travel::PointCloud* cloud = nullptr;  ///< sensor frame
-    /// TRAVEL's result for `cloud` (labels + terrain in the aligned frame); null for sources
-    /// that do not use it.
+    /// TRAVEL's result for `cloud` (labels + terrain in the aligned frame) and the aligned
+    /// cloud it labels (TravelFrame::result, TravelFrame::aligned: levelled and deskewed as
+    /// TRAVEL saw the points); null for sources that do not use them.
     const travel::Result* result = nullptr;
-    /// Rotation sensor -> aligned (levelled, heading-aligned, sensor-centred) frame, as used by
-    /// TRAVEL (TravelFrame::alignedRotation, AlignedCloud::rotation).
-    Eigen::Matrix3f alignedRotation = Eigen::Matrix3f::Identity();
+    const travel::AlignedCloud* aligned = nullptr;
     /// Sensor pose on the robot (robot frame: origin on the ground under the robot, x forward).
     Eigen::Isometry3f sensorOnRobot = Eigen::Isometry3f::Identity();
     /// Robot pose in the odometry frame (x, y [m], yaw [rad]): moves the memory between frames.
@@ -51,15 +52,9 @@ struct ObstacleFrame {
     mrpt::Clock::time_point timestamp{};
 };
 
-/// Robot-centric obstacle points (structure of arrays).
-struct ObstaclePoints {
-    std::vector<float> x, y, z;
+/// Robot-centric obstacle points (structure of arrays) and the time of their frame.
+struct ObstaclePoints : travel::ObstaclePointCloud {
     mrpt::Clock::time_point timestamp{};
-    std::size_t size() const { return x.size(); }
-    void clear() { x.clear(), y.clear(), z.clear(); }
-    void push_back(float px, float py, float pz) {
-        x.push_back(px), y.push_back(py), z.push_back(pz);
-    }
 };
 
 struct ObstacleMemoryOptions {
@@ -77,8 +72,9 @@ class ObstacleSource {
     const ObstacleMemoryOptions& memory() const { return memory_; }
 
     /// Sensor side: computes the obstacles of `frame` and publishes them. Throws
-    /// std::invalid_argument when the frame lacks what the source needs (no cloud, no result
-    /// for the TRAVEL source, sizes that do not match).
+    /// std::invalid_argument when the frame lacks what the source needs (no cloud for the
+    /// robot-frame sources, no result or aligned cloud for the TRAVEL source, sizes that do not
+    /// match).
     void update(const ObstacleFrame& frame);
 
     /// Navigator side: copies the latest published obstacles. False before the first update().

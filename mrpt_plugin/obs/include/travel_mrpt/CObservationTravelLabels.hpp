@@ -54,16 +54,13 @@ struct TerrainNodeRecord {
     Eigen::Vector3f mean{0.f, 0.f, 0.f};
 };
 
-/// The terrain model without its empty nodes and per-point bookkeeping.
-struct TerrainSummary {
-    float resolution = 0.f;  ///< cell side [m]
-    int32_t cells_per_side = 0;
-    float origin_xy = 0.f;  ///< x and y of the grid's lower-left corner (aligned frame)
+/// The terrain model without its empty nodes and per-point bookkeeping. Its tri-grid geometry
+/// (resolution, cells_per_side, origin_xy in the aligned frame; nodeAt, triangleCorners) is
+/// libtravel's.
+struct TerrainSummary : travel::TriGridGeometry {
     std::vector<TerrainNodeRecord> nodes;  ///< non-empty nodes, increasing index
 
     std::size_t numTraversable() const;
-    /// Corners of node `index`'s triangle in the xy plane: centre, then the two cell corners.
-    void triangleXY(uint32_t index, Eigen::Vector2f corners[3]) const;
 };
 
 class CObservationTravelLabels : public mrpt::obs::CObservation, public mrpt::opengl::Visualizable {

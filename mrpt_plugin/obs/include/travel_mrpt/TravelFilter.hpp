@@ -83,6 +83,12 @@ class TravelFilter : public mrpt::system::COutputLogger {
     /// observations, labels not matching options().sensor_label, observations without points.
     bool filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
                 std::string* why_not = nullptr);
+    /// Segments a cloud already in travel's form (simulators, own drivers) exactly as
+    /// filter(obs) segments a converted observation: same pipelines, levelling and deskew.
+    /// No label filter (the caller chose the cloud).
+    void filter(const travel::PointCloud& cloud, const mrpt::poses::CPose3D& sensorPose,
+                mrpt::Clock::time_point timestamp, const std::string& sensorLabel,
+                TravelFrame& out);
     /// Aligned cloud of the last frame of `sensor_label`; throws std::out_of_range if none.
     const travel::AlignedCloud& aligned(const std::string& sensor_label) const;
 
@@ -112,6 +118,8 @@ class TravelFilter : public mrpt::system::COutputLogger {
         bool noted_no_times = false;
     };
     SensorPipeline& pipelineFor(const std::string& label, const mrpt::poses::CPose3D& pose);
+    /// Levels, deskews and segments out.cloud (sensorPose, sensorLabel, timestamp set).
+    void segment(TravelFrame& out);
     /// Logs `message` the first time `flag` is false, then sets it (no per-frame strings).
     void noteOnce(bool& flag, const std::string& message, mrpt::system::VerbosityLevel level);
 

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace travel_mrpt {
+namespace travel {
 
 /// Extent and cell size of the grid, world frame [m]. Cell (ix, iy) covers
 /// [min_x + ix * resolution, min_x + (ix + 1) * resolution) and likewise in y.
@@ -171,4 +171,4 @@ class TraversabilityGrid {
     bool stepReference(long cell, const GridFusionParams& fusion) const;
 };
 
-}  // namespace travel_mrpt
+}  // namespace travel

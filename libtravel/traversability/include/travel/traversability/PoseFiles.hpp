@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace travel_mrpt {
+namespace travel {
 
 struct PoseTrajectory {
     std::vector<double> times;  ///< [s] TUM only (empty for KITTI: poses are per frame)
@@ -42,4 +42,4 @@ void kittiCameraToLidar(PoseTrajectory& trajectory, const Eigen::Isometry3d& tr)
 std::optional<Eigen::Isometry3d> poseAt(const PoseTrajectory& trajectory, double t,
                                         double tolerance = 0.05, double max_gap = 1.0);
 
-}  // namespace travel_mrpt
+}  // namespace travel

@@ -1,5 +1,5 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel_mrpt/PoseFiles.hpp"
+#include "travel/traversability/PoseFiles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace travel_mrpt {
+namespace travel {
 namespace {
 
 struct Line {
@@ -162,4 +162,4 @@ std::optional<Eigen::Isometry3d> poseAt(const PoseTrajectory& trajectory, double
     return T;
 }
 
-}  // namespace travel_mrpt
+}  // namespace travel

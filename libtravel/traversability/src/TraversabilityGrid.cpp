@@ -1,5 +1,5 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel_mrpt/TraversabilityGrid.hpp"
+#include "travel/traversability/TraversabilityGrid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "travel/Errors.hpp"
 
-namespace travel_mrpt {
+namespace travel {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -387,4 +387,4 @@ void TraversabilityGrid::arraysLoaded() {
     frame_cells_.clear();
 }
 
-}  // namespace travel_mrpt
+}  // namespace travel

@@ -1,0 +1,88 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Obstacles from TRAVEL's ground model (for a 3-D reactive navigator such as MRPT's
+// CReactiveNavigationSystem3D, through travel_mrpt::TravelObstacleSource): every point TRAVEL
+// did not call ground, at xy in the levelled robot frame and z = its height above the LOCAL
+// ground model (the plane of the terrain node under it), so that the navigator's height slices
+// (which start at z = 0) follow slopes instead of cutting into them. Reported:
+//   - non-ground points higher than max_step_height above the local ground (a lower bump, or a
+//     step the robot can climb, is not an obstacle);
+//   - points of too-steep terrain nodes (TRAVEL's NodeClass::Obstacle: kerb faces, steep ramps)
+//     higher than report_floor above the local ground;
+//   - ground of a traversable node whose plane is more than max_step_height above a
+//     neighbouring traversable node's plane at their shared edge (a step or kerb whose top
+//     TRAVEL accepted as terrain), at z = that step height. The step must also show in the
+//     seen ground (each node's mean point against the other node's plane), and both nodes'
+//     points must spread at least step_min_spread across: a plane fitted to one ring's arc or
+//     to a small patch (at the edge of the blind zone around the robot) has an unknown tilt,
+//     and extrapolated half a cell it made 0.15 m "steps" on a 15-degree slope.
+// Points higher than max_height above the local ground (overhangs, trees above the robot) are
+// dropped.
+//
+// Height above the local ground of a non-ground point: travel::TerrainModel::heightAboveGround
+// (the lowest of its heights over the ground planes of its cell and the 4 neighbouring cells, so
+// that the foot of a ramp is not lifted by a flat node's plane); when there is none, over the
+// nearest node with ground (TerrainModel::groundPlane) within ground_search_radius; otherwise
+// over the robot's own base plane. Steps: travel::TerrainModel::stepBetween.
+// Input: TRAVEL's result and the aligned cloud it labelled (Pipeline::aligned(),
+// TravelFrame::aligned): the points are used as TRAVEL saw them (levelled and, with deskew,
+// deskewed), so obstacle xy are exactly those of the labelled points. No MRPT.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <vector>
+
+#include "travel/Preprocessing.hpp"
+#include "travel/Result.hpp"
+#include "travel/TerrainModel.hpp"
+
+namespace travel {
+
+struct TravelObstacleOptions {
+    double max_step_height = 0.15;  ///< [m] the robot climbs steps and bumps up to this height
+    double max_height = 2.0;        ///< [m] ignore points higher above the ground than this
+    /// [m] points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)
+    double report_floor = 0.15;
+    double ground_search_radius = 3.0;  ///< [m] nearest traversable node for other nodes' points
+    /// [m] the step rule only compares nodes whose ground points spread at least this much
+    /// (standard deviation) in their second direction: the plane of one ring's arc or of a
+    /// small patch is not known away from its points
+    double step_min_spread = 0.05;
+};
+
+/// Robot-centric obstacle points (x forward, y left, z up; metres), structure of arrays.
+struct ObstaclePointCloud {
+    std::vector<float> x, y, z;
+    std::size_t size() const { return x.size(); }
+    void clear() { x.clear(), y.clear(), z.clear(); }
+    void push_back(float px, float py, float pz) {
+        x.push_back(px), y.push_back(py), z.push_back(pz);
+    }
+};
+
+class TravelObstacles {
+  public:
+    explicit TravelObstacles(const TravelObstacleOptions& options = {});
+    const TravelObstacleOptions& options() const { return options_; }
+    /// Throws std::invalid_argument on negative heights or radius.
+    void setOptions(const TravelObstacleOptions& options);
+
+    /// Appends the obstacles of one frame to `out`, in the levelled robot frame (xy from the
+    /// robot origin, z above the local ground). `aligned` is the cloud `result` labels (same
+    /// size); sensor_on_robot places the sensor on the robot (origin on the ground under the
+    /// robot). Throws std::invalid_argument when the sizes differ. Buffers are reused.
+    void compute(const Result& result, const AlignedCloud& aligned,
+                 const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out);
+
+  private:
+    void findGroundNodes(const TerrainModel& terrain);
+    void findSteps(const TerrainModel& terrain);
+
+    TravelObstacleOptions options_;
+    std::vector<int> ground_node_;    // per node: node whose ground is its reference (-1 none)
+    std::vector<float> step_height_;  // per node: step above a neighbour (0 = none)
+};
+
+}  // namespace travel
