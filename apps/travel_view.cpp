@@ -18,10 +18,10 @@
 
 #include "CommandLine.hpp"
 #include "travel/Errors.hpp"
-#include "travel/eval/KittiIO.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Segmenter.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 
@@ -165,7 +165,7 @@ int run(int argc, char** argv) {
     if (fs::is_directory(o.scan, ec)) throw AppError(o.scan + ": is a directory, not a scan");
     travel::PointCloud cloud;
     try {
-        travel::readKittiBin(o.scan, cloud);
+        travel::readScan(o.scan, cloud);
     } catch (const std::exception& e) {
         const std::string what = e.what();
         // Name the file even if the reader's message does not.

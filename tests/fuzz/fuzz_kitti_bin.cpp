@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     travel_fuzz::writeFile(path, data, size);
     static travel::PointCloud cloud;
     try {
-        travel::readKittiBin(path, cloud);
+        travel::readScan(path, cloud, travel::ScanFormat::KittiBin);
         FUZZ_CHECK(cloud.size() * 16 == size);
         FUZZ_CHECK(cloud.y.size() == cloud.size() && cloud.intensity.size() == cloud.size());
         runPipeline(cloud);
@@ -32,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         FUZZ_CHECK(size % 16 != 0);
     }
     try {
-        travel::readBinXYZIR(path, cloud);
+        travel::readScan(path, cloud, travel::ScanFormat::NuScenesBin);
         FUZZ_CHECK(cloud.size() * 20 == size);
         FUZZ_CHECK(cloud.ring.size() == cloud.size());
         runPipeline(cloud);
