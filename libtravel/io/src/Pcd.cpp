@@ -168,12 +168,14 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
         return;
     }
     if (data == "binary") {
-        if (points > left / row || points * row != left) {
+        // Bytes after the last point are ignored, as PCL does: its writer pads binary files
+        // (kitti_raw_pcd/*.pcd end with 3906 zero bytes).
+        if (points > left / row) {
             fail(path, "DATA binary needs " + std::to_string(points) + " points of " +
                            std::to_string(row) + " bytes but " + std::to_string(left) +
                            " bytes follow the header");
         }
-        ValueSource src(path, false, begin, end, 0);
+        ValueSource src(path, false, begin, begin + points * row, 0);
         decodeRecords(path, fields, points, src, cloud, "point");
         return;
     }

@@ -95,6 +95,9 @@ std::vector<unsigned char> lzfCompress(const unsigned char* in, std::size_t size
 /// "path:line: message" as an InputError.
 [[noreturn]] void failAt(const std::string& path, std::size_t line, const std::string& message);
 
+/// "points", "vertices", "faces": `what` in the plural, for messages.
+std::string plural(const std::string& what);
+
 /// At most 24 printable characters of `text`, for quoting file contents in a message.
 std::string excerpt(const std::string& text);
 

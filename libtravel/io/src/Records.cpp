@@ -63,6 +63,10 @@ Target targetOf(const std::string& name, ValueType type, double& scale) {
     return Target::Skip;
 }
 
+std::string plural(const std::string& what) {
+    return what == "vertex" ? "vertices" : what + "s";
+}
+
 void ValueSource::fail(const std::string& message) const {
     if (ascii_) failAt(path_, line_, message);
     io_detail::fail(path_, message);
@@ -86,7 +90,7 @@ void ValueSource::beginRecord(std::size_t index, std::size_t total, const char* 
     }
     if (p_ == end_) {
         io_detail::fail(path_, "data ends after " + std::to_string(index) + " of " +
-                                   std::to_string(total) + " " + what + "s");
+                                   std::to_string(total) + " " + plural(what));
     }
 }
 
@@ -154,10 +158,10 @@ void ValueSource::expectEnd(std::size_t total, const char* what) {
             ++p_;
         }
         if (p_ != end_)
-            fail("more data after the last of " + std::to_string(total) + " " + what + "s");
+            fail("more data after the last of " + std::to_string(total) + " " + plural(what));
     } else if (p_ != end_) {
         io_detail::fail(path_, std::to_string(bytesLeft()) + " bytes after the last of " +
-                                   std::to_string(total) + " " + what + "s");
+                                   std::to_string(total) + " " + plural(what));
     }
 }
 
@@ -192,7 +196,7 @@ void checkRecordsFit(const std::string& path, const std::vector<Field>& fields, 
     if (ascii && least > 0) --least;
     if (least == 0) least = 1;
     if (n > bytes_left / least) {
-        fail(path, "the header announces " + std::to_string(n) + " " + what + "s but only " +
+        fail(path, "the header announces " + std::to_string(n) + " " + plural(what) + " but only " +
                        std::to_string(bytes_left) + " bytes of data follow");
     }
 }
