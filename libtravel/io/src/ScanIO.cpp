@@ -88,7 +88,6 @@ bool plausibleAs(ScanFormat format, const std::vector<unsigned char>& bytes) {
 
 ScanFormat binFormatFromContents(const std::string& path, const std::vector<unsigned char>& bytes) {
     const std::size_t size = bytes.size();
-    if (size == 0) fail(path, "0 bytes, not a scan");
     const bool kitti_size = size % 16 == 0, nuscenes_size = size % 20 == 0;
     if (!kitti_size && !nuscenes_size) {
         fail(path, "size " + std::to_string(size) +
@@ -112,8 +111,9 @@ ScanFormat binFormatFromContents(const std::string& path, const std::vector<unsi
                    kFormatHint);
 }
 
-// The format of a file whose bytes are in `bytes` (Auto only when the file has no bytes read).
+// The format of the file `path`, whose contents are `bytes`.
 ScanFormat detectFormat(const std::string& path, const std::vector<unsigned char>& bytes) {
+    if (bytes.empty()) fail(path, "0 bytes, not a scan");
     const fs::path p(path);
     const std::string ext = p.extension().string();
     if (ext == ".pcd") return ScanFormat::Pcd;
@@ -121,7 +121,6 @@ ScanFormat detectFormat(const std::string& path, const std::vector<unsigned char
     const ScanFormat by_contents = formatFromContents(bytes);
     if (by_contents != ScanFormat::Auto) return by_contents;
     if (ext != ".bin") {
-        if (bytes.empty()) fail(path, "0 bytes, not a scan");
         fail(path,
              "cannot tell the scan format from the name or the first bytes; give it with "
              "--format (" +
