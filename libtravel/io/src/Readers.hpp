@@ -52,6 +52,9 @@ class ValueSource {
     /// Throws unless only whitespace (ASCII) or nothing (binary) is left.
     void expectEnd(std::size_t total, const char* what);
     std::size_t bytesLeft() const { return static_cast<std::size_t>(end_ - p_); }
+    bool ascii() const { return ascii_; }
+    /// Binary only: the next `size` bytes (throws when fewer are left), for bulk decoding.
+    const unsigned char* take(std::size_t size, std::size_t total, const char* what);
     /// Throws InputError: "path:line: message" (ASCII) or "path: message" (binary).
     [[noreturn]] void fail(const std::string& message) const;
 
