@@ -143,7 +143,7 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
                 continue;
             }
         }
-        travel::readKittiBin(files[k], cloud);  // errors name the file
+        travel::readScan(files[k], cloud);  // errors name the file
         points->clear();
         points->reserve(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -158,7 +158,7 @@ int run(int argc, char** argv) {
     if (fs::is_directory(o.scan, ec)) throw AppError(o.scan + ": is a directory, not a scan");
     travel::PointCloud cloud;
     try {
-        travel::readKittiBin(o.scan, cloud);
+        travel::readScan(o.scan, cloud);
     } catch (const std::exception& e) {
         const std::string what = e.what();
         // Name the file even if the reader's message does not.

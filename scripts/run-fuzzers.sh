@@ -37,7 +37,7 @@ else
     cmake --build "${BUILD}" -j "$(nproc)"
 fi
 
-targets=(fuzz_kitti_bin fuzz_label_file fuzz_params fuzz_segmentation)
+targets=(fuzz_kitti_bin fuzz_scan_reader fuzz_label_file fuzz_params fuzz_segmentation)
 # fuzz_rawlog: MRPT 2.5's deserializers allocate whatever size a corrupt stream announces
 # (CPointsMapXYZI::resize via aligned_alloc, CSensoryFrame's deque). travel-rawlog caps its
 # address space (--max-memory) and replaces mrpt::aligned_malloc so that failure throws; the

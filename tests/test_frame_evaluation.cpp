@@ -62,7 +62,7 @@ TEST(EvaluateFrame, ScoresAreTheMetricsOfTheSegmentation) {
 
     // The same scan segmented independently, scored with the metric functions directly.
     PointCloud cloud;
-    readKittiBin(f.scan, cloud);
+    readScan(f.scan, cloud);
     Segmentation expected;
     makeSegmenter("travel", params)->segment(cloud, expected);
     const std::vector<uint32_t> gt = readLabelFile(f.label, cloud.size());

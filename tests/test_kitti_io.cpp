@@ -78,7 +78,7 @@ TEST(KittiIO, BinRoundTrip) {
     PointCloud read;
     read.ring = {1, 2, 3};  // stale optional fields are cleared
     read.time = {0.f, 0.f, 0.f};
-    travel::readKittiBin(dir.file("a.bin"), read);
+    travel::readScan(dir.file("a.bin"), read, travel::ScanFormat::KittiBin);
     EXPECT_EQ(read.x, written.x);
     EXPECT_EQ(read.y, written.y);
     EXPECT_EQ(read.z, written.z);
@@ -91,7 +91,7 @@ TEST(KittiIO, LittleEndianLayout) {
     TempDir dir;
     const std::string path = dir.writeFloats("b.bin", {1.f, 2.f, 3.f, 4.f, 5.f, 6.f, 7.f, 8.f});
     PointCloud c;
-    travel::readKittiBin(path, c);
+    travel::readScan(path, c, travel::ScanFormat::KittiBin);
     ASSERT_EQ(c.size(), 2u);
     EXPECT_EQ(c.x[1], 5.f);
     EXPECT_EQ(c.y[1], 6.f);
@@ -106,8 +106,8 @@ TEST(KittiIO, ReusesCloudForSmallerFrames) {
     small.push_back(0.f, 0.f, 0.f);
     travel::writeKittiBin(dir.file("small.bin"), small);
     PointCloud c;
-    travel::readKittiBin(dir.file("big.bin"), c);
-    travel::readKittiBin(dir.file("small.bin"), c);
+    travel::readScan(dir.file("big.bin"), c, travel::ScanFormat::KittiBin);
+    travel::readScan(dir.file("small.bin"), c, travel::ScanFormat::KittiBin);
     EXPECT_EQ(c.size(), 1u);
     EXPECT_EQ(c.intensity.size(), 1u);
 }
@@ -116,28 +116,31 @@ TEST(KittiIO, SizeNotMultipleOf16) {
     TempDir dir;
     const std::string path = dir.writeBytes("bad.bin", std::vector<unsigned char>(33, 0));
     PointCloud c;
-    const std::string msg = inputErrorOf([&] { travel::readKittiBin(path, c); });
+    const std::string msg =
+        inputErrorOf([&] { travel::readScan(path, c, travel::ScanFormat::KittiBin); });
     EXPECT_CONTAINS(msg, path);
     EXPECT_CONTAINS(msg, "33");
     EXPECT_CONTAINS(msg, "16");
     EXPECT_CONTAINS(msg, "1 bytes left over");
 }
 
-TEST(KittiIO, EmptyFileIsEmptyCloud) {
+TEST(KittiIO, EmptyFileIsAnError) {
     TempDir dir;
     const std::string path = dir.writeBytes("empty.bin", {});
     PointCloud c = sampleCloud();
-    travel::readKittiBin(path, c);
-    EXPECT_TRUE(c.empty());
-    EXPECT_TRUE(c.intensity.empty());
+    EXPECT_EQ(inputErrorOf([&] { travel::readScan(path, c, travel::ScanFormat::KittiBin); }),
+              path + ": 0 bytes, not a scan");
 }
 
 TEST(KittiIO, MissingFileOrDirectory) {
     TempDir dir;
     PointCloud c;
     const std::string missing = dir.file("missing.bin");
-    EXPECT_CONTAINS(inputErrorOf([&] { travel::readKittiBin(missing, c); }), missing);
-    EXPECT_CONTAINS(inputErrorOf([&] { travel::readKittiBin(dir.path.string(), c); }), "directory");
+    EXPECT_CONTAINS(
+        inputErrorOf([&] { travel::readScan(missing, c, travel::ScanFormat::KittiBin); }), missing);
+    EXPECT_CONTAINS(
+        inputErrorOf([&] { travel::readScan(dir.path.string(), c, travel::ScanFormat::KittiBin); }),
+        "directory");
     EXPECT_CONTAINS(inputErrorOf([&] { travel::readLabelFile(missing, 0); }), missing);
 }
 
@@ -147,7 +150,7 @@ TEST(KittiIO, XYZIRReadsRing) {
         dir.writeFloats("n.bin", {1.f, 2.f, 3.f, 4.f, 0.f, 5.f, 6.f, 7.f, 8.f, 31.f});
     PointCloud c;
     c.time = {1.f};
-    travel::readBinXYZIR(path, c);
+    travel::readScan(path, c, travel::ScanFormat::NuScenesBin);
     ASSERT_EQ(c.size(), 2u);
     EXPECT_TRUE(c.hasRing());
     EXPECT_TRUE(c.time.empty());
@@ -157,9 +160,12 @@ TEST(KittiIO, XYZIRReadsRing) {
 
     // KITTI files (16-byte records) are rejected unless the size happens to fit.
     const std::string kitti = dir.writeFloats("k.bin", {1.f, 2.f, 3.f, 4.f});
-    EXPECT_CONTAINS(inputErrorOf([&] { travel::readBinXYZIR(kitti, c); }), "20");
+    EXPECT_CONTAINS(
+        inputErrorOf([&] { travel::readScan(kitti, c, travel::ScanFormat::NuScenesBin); }), "20");
     const std::string bad_ring = dir.writeFloats("r.bin", {1.f, 2.f, 3.f, 4.f, 0.25f});
-    EXPECT_CONTAINS(inputErrorOf([&] { travel::readBinXYZIR(bad_ring, c); }), "ring");
+    EXPECT_CONTAINS(
+        inputErrorOf([&] { travel::readScan(bad_ring, c, travel::ScanFormat::NuScenesBin); }),
+        "ring");
 }
 
 TEST(KittiIO, LabelsRoundTripAndCount) {

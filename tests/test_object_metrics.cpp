@@ -400,7 +400,8 @@ TEST(ObjectMetrics, RealKittiGroundTruthAsPrediction) {
     for (int frame = 0; frame < 3; ++frame) {
         char name[16];
         std::snprintf(name, sizeof name, "%06d", frame);
-        readKittiBin((kSequence / "velodyne" / (std::string(name) + ".bin")).string(), cloud);
+        readScan((kSequence / "velodyne" / (std::string(name) + ".bin")).string(), cloud,
+                 ScanFormat::KittiBin);
         const std::vector<uint32_t> gt = readLabelFile(
             (kSequence / "labels" / (std::string(name) + ".label")).string(), cloud.size());
         std::vector<PointClass> pred(cloud.size(), G);

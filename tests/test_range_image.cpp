@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "travel/Errors.hpp"
-#include "travel/eval/KittiIO.hpp"
 #include "travel/Params.hpp"
 #include "travel/RangeImage.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 
@@ -572,7 +572,7 @@ TEST(RangeImageReal, KittiScanOrder) {
     PointCloud cloud;
     RangeImage image, table_image;
     for (int f = 0; f < 6; ++f) {
-        readKittiBin((kKittiScans / (frameName(f) + ".bin")).string(), cloud);
+        readScan((kKittiScans / (frameName(f) + ".bin")).string(), cloud, ScanFormat::KittiBin);
         const std::vector<uint8_t> valid = validByRange(cloud, 2.7, 80.0);
         image.build(cloud, valid, Params());
         EXPECT_EQ(image.source(), RingSource::ScanOrder) << frameName(f);
@@ -597,7 +597,7 @@ TEST(RangeImageReal, NuScenesRingField) {
     const fs::path path = kDataDir / "nuscenes/hdl32_000000.bin";
     if (!fs::exists(path)) GTEST_SKIP() << path << " not found";
     PointCloud cloud;
-    readBinXYZIR(path.string(), cloud);
+    readScan(path.string(), cloud, ScanFormat::NuScenesBin);
     const std::vector<uint8_t> valid = validByRange(cloud, 1.0, 70.0);
     const std::vector<int> field = asInts(cloud.ring);
     const Params params = paramsFor(32, "hdl32");
@@ -636,7 +636,7 @@ TEST(RangeImageReal, Ouster128) {
     const fs::path path = kDataDir / "ouster128/000000.bin";
     if (!fs::exists(path)) GTEST_SKIP() << path << " not found";
     PointCloud cloud;
-    readKittiBin(path.string(), cloud);
+    readScan(path.string(), cloud, ScanFormat::KittiBin);
     const std::vector<uint8_t> valid = validByRange(cloud, 0.5, 60.0);
     RangeImage image;
     image.build(cloud, valid, paramsFor(128, "os128", "table"));

@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <string>
 
+#include "travel/ParamsIO.hpp"
+#include "travel/Pipeline.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Metrics.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
-#include "travel/ParamsIO.hpp"
-#include "travel/Pipeline.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,7 +37,8 @@ TEST(RealKitti, GroundProtocolBMeetsTheTargets) {
     Result result;
     std::vector<double> f1[2], precision[2];
     for (int i = 0; i < 3; ++i) {
-        readKittiBin((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud);
+        readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
+                 ScanFormat::KittiBin);
         const std::vector<uint32_t> gt = readLabelFile(
             (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
         pipeline.process(cloud, {}, result);
@@ -65,7 +66,8 @@ TEST(RealKitti, EveryFrameLabelsEveryPoint) {
     PointCloud cloud;
     Result result;
     for (int i = 0; i < 6; ++i) {
-        readKittiBin((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud);
+        readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
+                 ScanFormat::KittiBin);
         pipeline.process(cloud, {}, result);
         ASSERT_EQ(result.labels.size(), cloud.size());
         std::size_t total = 0;
@@ -87,7 +89,8 @@ TEST(RealKitti, ObjectsCoverageAndPurityMeetTheTargets) {
     Result result;
     ObjectScoreAccumulator scores;
     for (int i = 0; i < 3; ++i) {
-        readKittiBin((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud);
+        readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
+                 ScanFormat::KittiBin);
         const std::vector<uint32_t> gt = readLabelFile(
             (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
         pipeline.process(cloud, {}, result);
@@ -115,7 +118,7 @@ TEST(RealKitti, OtherSensorsRunWithPlausibleOutput) {
     PointCloud cloud;
     Result result;
     {
-        readBinXYZIR(hdl32.string(), cloud);
+        readScan(hdl32.string(), cloud, ScanFormat::NuScenesBin);
         Pipeline pipeline(loadPreset("hdl32"));
         pipeline.process(cloud, {}, result);
         EXPECT_EQ(pipeline.rangeImage().source(), RingSource::Field);
@@ -127,7 +130,7 @@ TEST(RealKitti, OtherSensorsRunWithPlausibleOutput) {
         EXPECT_GT(result.clusters.size(), 10u);
     }
     {
-        readKittiBin(os128.string(), cloud);
+        readScan(os128.string(), cloud, ScanFormat::KittiBin);
         Pipeline pipeline(loadPreset("os128"));
         pipeline.process(cloud, {}, result);
         const double ground = double(result.count(PointClass::Ground)) / double(cloud.size());

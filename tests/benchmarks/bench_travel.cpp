@@ -17,13 +17,13 @@
 #include <string>
 
 #include "travel/GroundLabelling.hpp"
-#include "travel/eval/KittiIO.hpp"
 #include "travel/NodeFitting.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/RunClustering.hpp"
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
+#include "travel/eval/KittiIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 
@@ -37,7 +37,7 @@ bool loadKittiFrame(int index, PointCloud& cloud) {
     std::snprintf(name, sizeof name, "%06d.bin", index);
     const fs::path path = fs::path(TRAVEL_DATA_DIR) / "semantickitti/sequences/00/velodyne" / name;
     if (!fs::exists(path)) return false;
-    readKittiBin(path.string(), cloud);
+    readScan(path.string(), cloud, ScanFormat::KittiBin);
     return true;
 }
 

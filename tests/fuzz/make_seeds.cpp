@@ -4,13 +4,16 @@
 //   cmake --build build-fuzz --target make_seeds && build-fuzz/make_seeds tests/fuzz/corpus
 // Every file is a few KB: small synthetic scans (travel::sim), never a real dataset file.
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "travel/eval/KittiIO.hpp"
+#include "travel/io/ScanIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 
@@ -52,6 +55,14 @@ void put(std::string& s, T v) {
 void writeBytes(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
     std::cout << path << " " << bytes.size() << " bytes\n";
+}
+
+/// fuzz_scan_reader input: a selector byte (file suffix | format << 2, see fuzz_scan_reader.cpp)
+/// and the bytes a library writer produced in `scratch`.
+void writeScanSeed(const std::string& path, unsigned selector, const std::string& scratch) {
+    std::ifstream in(scratch, std::ios::binary);
+    writeBytes(path, std::string(1, char(selector)) +
+                         std::string((std::istreambuf_iterator<char>(in)), {}));
 }
 
 /// fuzz_segmentation record layout (see fuzz_segmentation.cpp).
@@ -99,6 +110,43 @@ int main(int argc, char** argv) {
                 put(s, float(c50.ring[i]));
         writeBytes(dir + "/fuzz_kitti_bin/xyzir_50.bin", s);
         writeBytes(dir + "/fuzz_kitti_bin/empty.bin", "");
+    }
+    // fuzz_scan_reader: every format and encoding, auto-detected or explicit.
+    {
+        const std::string d = dir + "/fuzz_scan_reader/", tmp = d + "scratch.tmp";
+        PointCloud plain = c50;
+        plain.ring.clear(), plain.time.clear();
+        PointCloud timed = c50;
+        timed.time.assign(c50.size(), 0.f);
+        for (std::size_t i = 0; i < c50.size(); ++i) timed.time[i] = 0.002f * float(i);
+        travel::writeKittiBin(tmp, plain);
+        writeScanSeed(d + "kitti_auto.bin", 0, tmp);
+        writeScanSeed(d + "kitti_explicit.bin", 1 << 2, tmp);
+        travel::writePcd(tmp, plain, travel::PcdEncoding::Ascii);
+        writeScanSeed(d + "ascii.pcd", 1, tmp);
+        travel::writePcd(tmp, timed, travel::PcdEncoding::Binary);
+        writeScanSeed(d + "binary_ring_time.pcd", 1, tmp);
+        travel::writePcd(tmp, timed, travel::PcdEncoding::BinaryCompressed);
+        writeScanSeed(d + "compressed_ring_time.pcd", 1, tmp);
+        travel::writePcd(tmp, plain, travel::PcdEncoding::BinaryCompressed);
+        writeScanSeed(d + "compressed.pcd", 1 | 3 << 2, tmp);
+        travel::writePly(tmp, timed, travel::PlyEncoding::Ascii);
+        writeScanSeed(d + "ascii_ring_time.ply", 2, tmp);
+        travel::writePly(tmp, plain, travel::PlyEncoding::BinaryLittleEndian);
+        writeScanSeed(d + "binary.ply", 2 | 4 << 2, tmp);
+        std::remove(tmp.c_str());
+        std::string s;  // nuScenes records: by name (.pcd.bin) and by values (.bin)
+        for (std::size_t i = 0; i < 12; ++i)
+            put(s, c50.x[i]), put(s, c50.y[i]), put(s, c50.z[i]), put(s, c50.intensity[i]),
+                put(s, float(c50.ring[i]));
+        writeBytes(d + "nuscenes_name.bin", std::string(1, char(3)) + s);
+        writeBytes(d + "nuscenes_values.bin", std::string(1, char(0)) + s.substr(0, 7 * 20));
+        writeBytes(d + "faces.ply",
+                   std::string(1, char(2)) +
+                       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int "
+                       "vertex_indices\nelement vertex 2\nproperty double x\nproperty float y\n"
+                       "property short z\nproperty uchar intensity\nend_header\n3 0 1 1\n1 2 3 "
+                       "4\n-1 0.5 2 255\n");
     }
     // fuzz_label_file: travel-kitti style labels of 50 points (first byte picks the mode).
     {

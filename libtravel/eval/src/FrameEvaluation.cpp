@@ -14,7 +14,7 @@ void evaluateFrame(const std::string& scan_path, const std::string& label_path,
     const PointCloud& cloud = frame.cloud;
     const Segmentation& out = frame.segmentation;
     try {
-        readKittiBin(scan_path, frame.cloud);
+        readScan(scan_path, frame.cloud);
         segmenter.segment(cloud, frame.segmentation);
         frame.class_counts = {};
         for (const PointClass c : out.labels) ++frame.class_counts[static_cast<int>(c) & 3];

@@ -1,8 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// KITTI / SemanticKITTI / nuScenes binary files. All formats are little-endian; on a big-endian
-// host the values are byte-swapped. Read errors throw InputError naming the file; write errors
-// throw std::runtime_error naming the file.
+// SemanticKITTI .label files and KITTI sequence folders. Scans (KITTI / nuScenes .bin, PCD, PLY)
+// are read by travel_io's readScan() and written by writeKittiBin(): travel/io/ScanIO.hpp,
+// included here for the evaluation code that reads scans next to their labels. Labels are
+// little-endian uint32. Read errors throw InputError naming the file; write errors throw
+// std::runtime_error naming the file.
 #pragma once
 
 #include <cstddef>
@@ -12,22 +14,9 @@
 #include <vector>
 
 #include "travel/PointCloud.hpp"
+#include "travel/io/ScanIO.hpp"
 
 namespace travel {
-
-/// Reads a KITTI .bin: float32 records (x, y, z, intensity). Reuses the capacity of `cloud`'s
-/// vectors; ring and time are cleared. An empty file is a valid empty cloud. Throws InputError
-/// when the file cannot be read or its size is not a multiple of 16 bytes.
-void readKittiBin(const std::string& path, PointCloud& cloud);
-
-/// Reads nuScenes-style float32 records (x, y, z, intensity, ring) and fills cloud.ring; time is
-/// cleared. Throws InputError when the size is not a multiple of 20 bytes or a ring value is not
-/// an integer in [0, 65535].
-void readBinXYZIR(const std::string& path, PointCloud& cloud);
-
-/// Writes `cloud` as a KITTI .bin. A missing intensity field is written as 0. Throws
-/// std::invalid_argument if x, y, z (or a non-empty intensity) differ in size.
-void writeKittiBin(const std::string& path, const PointCloud& cloud);
 
 /// Pass as expected_count to readLabelFile() to accept any number of labels.
 constexpr std::size_t kAnyLabelCount = std::numeric_limits<std::size_t>::max();

@@ -1,0 +1,57 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Whole-file byte I/O and little-endian loads/stores, shared by every reader and writer of
+// binary files (scans here, SemanticKITTI labels in travel_eval). All the formats are
+// little-endian; on a big-endian host the values are byte-swapped.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace travel {
+
+/// Reads the whole file into `bytes` (whose capacity is reused) with one fread. Throws
+/// InputError naming the file when it is missing, a directory or unreadable.
+void readFileBytes(const std::string& path, std::vector<unsigned char>& bytes);
+
+/// Writes `size` bytes to `path` (created or truncated). Throws std::runtime_error naming the
+/// file when it cannot be written (a full disk included: the close is checked).
+void writeFileBytes(const std::string& path, const unsigned char* data, std::size_t size);
+
+namespace le {
+
+#if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && \
+    __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+constexpr bool kHostIsBigEndian = true;
+#else
+constexpr bool kHostIsBigEndian = false;
+#endif
+
+/// Little-endian bytes (any alignment) -> host value of type T (an arithmetic type).
+template <class T>
+inline T load(const unsigned char* bytes) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, bytes, sizeof(T));
+    if constexpr (kHostIsBigEndian) {
+        for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+    }
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    return v;
+}
+
+/// Host value -> little-endian bytes (any alignment).
+template <class T>
+inline void store(T v, unsigned char* bytes) {
+    std::memcpy(bytes, &v, sizeof(T));
+    if constexpr (kHostIsBigEndian) {
+        for (std::size_t i = 0; i < sizeof(T) / 2; ++i)
+            std::swap(bytes[i], bytes[sizeof(T) - 1 - i]);
+    }
+}
+
+}  // namespace le
+}  // namespace travel

@@ -1,0 +1,47 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/io/BinaryFile.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+#include "travel/Errors.hpp"
+
+namespace travel {
+
+namespace {
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+}  // namespace
+
+void readFileBytes(const std::string& path, std::vector<unsigned char>& bytes) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
+    FilePtr file(std::fopen(path.c_str(), "rb"));
+    if (!file) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw InputError(path + ": cannot get the size: " + ec.message());
+    bytes.resize(static_cast<std::size_t>(size));
+    if (size > 0 && std::fread(bytes.data(), 1, bytes.size(), file.get()) != bytes.size()) {
+        throw InputError(path + ": cannot read: " +
+                         (std::ferror(file.get()) ? std::strerror(errno) : "file shrank"));
+    }
+}
+
+void writeFileBytes(const std::string& path, const unsigned char* data, std::size_t size) {
+    FilePtr file(std::fopen(path.c_str(), "wb"));
+    if (!file) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    const bool written = size == 0 || std::fwrite(data, 1, size, file.get()) == size;
+    // fclose flushes: a full disk may only show up here.
+    const bool closed = std::fclose(file.release()) == 0;
+    if (!written || !closed) {
+        throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    }
+}
+
+}  // namespace travel
