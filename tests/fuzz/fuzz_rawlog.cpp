@@ -1,5 +1,6 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-// bytes -> file -> travel-rawlog's read loop (CFileGZInputStream: plain or gzip) -> for every
+// bytes -> file -> travel_mrpt::RawlogReader (travel-rawlog's and travel-map's reader: plain or
+// gzip; its errors must name the file) -> for every
 // LiDAR observation (also inside CSensoryFrames) toTravelCloud + Pipeline; our own
 // CObservationTravelLabels (registered here) is deserialized, checked, described and drawn.
 // Exceptions from MRPT's deserialization are expected; crashes and sanitizer reports are findings.
@@ -27,8 +28,10 @@
 #include <sstream>
 
 #include "FuzzCommon.hpp"
+#include "travel/Errors.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
+#include "travel_mrpt/RawlogReader.hpp"
 
 // MRPT's deserializers allocate whatever size the stream announces (a corrupt length of 3.5 GB
 // is one mutation away). Without ASan that throws std::bad_alloc, which travel-rawlog reports as
@@ -167,23 +170,21 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::string& path = travel_fuzz::tempPath(".rawlog");
     travel_fuzz::writeFile(path, data, size);
-    mrpt::io::CFileGZInputStream file;
-    if (!file.open(path)) return 0;
-    auto archive = mrpt::serialization::archiveFrom(file);
-    for (int record = 0; record < kMaxRecords; ++record) {
-        mrpt::serialization::CSerializable::Ptr obj;
-        try {
-            obj = archive.ReadObject();
-        } catch (const std::exception&) {
-            break;  // not a rawlog, truncated, unknown class ...: expected
+    try {
+        travel_mrpt::RawlogReader reader(path);
+        while (reader.index() < kMaxRecords) {
+            const auto obj = reader.next();
+            if (!obj) break;
+            if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj)) {
+                for (const auto& obs : *sf)
+                    if (obs) processObservation(*obs);
+            } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) {
+                processObservation(*obs);
+            }
         }
-        if (!obj) break;
-        if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj)) {
-            for (const auto& obs : *sf)
-                if (obs) processObservation(*obs);
-        } else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) {
-            processObservation(*obs);
-        }
+    } catch (const travel::InputError& e) {
+        // Not a rawlog, truncated, unknown class ...: expected; the message names the record.
+        FUZZ_CHECK(std::string(e.what()).rfind(path, 0) == 0);
     }
     return 0;
 }

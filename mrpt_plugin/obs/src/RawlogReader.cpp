@@ -2,10 +2,6 @@
 #include "travel_mrpt/RawlogReader.hpp"
 
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
-#include <mrpt/obs/CObservationIMU.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
@@ -13,7 +9,6 @@
 #include <sstream>
 
 #include "travel/Errors.hpp"
-#include "travel_mrpt/TravelFilter.hpp"
 
 namespace fs = std::filesystem;
 
@@ -87,31 +82,6 @@ std::shared_ptr<mrpt::serialization::CSerializable> RawlogReader::next() {
                                                 "or a corrupt gzip stream)"));
     }
     return nullptr;
-}
-
-bool RawlogMotion::process(const mrpt::serialization::CSerializable& record) {
-    if (auto* imu = dynamic_cast<const mrpt::obs::CObservationIMU*>(&record)) {
-        filter_.processImu(*imu);
-    } else if (auto* odometry = dynamic_cast<const mrpt::obs::CObservationOdometry*>(&record)) {
-        odometry_pose_ = mrpt::poses::CPose3D(odometry->odometry);
-        has_odometry_ = true;
-        filter_.processOdometry(*odometry);
-    } else if (auto* actions = dynamic_cast<const mrpt::obs::CActionCollection*>(&record)) {
-        if (auto move = actions->getBestMovementEstimation()) {
-            action_pose_ = action_pose_ + mrpt::poses::CPose3D(move->poseChange->getMeanVal());
-            ++actions_;
-            filter_.processAction(*move);
-        }
-    } else {
-        return false;
-    }
-    return true;
-}
-
-std::optional<mrpt::poses::CPose3D> RawlogMotion::robotPose() const {
-    if (actions_) return action_pose_;
-    if (has_odometry_) return odometry_pose_;
-    return std::nullopt;
 }
 
 }  // namespace travel_mrpt
