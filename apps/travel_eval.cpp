@@ -270,13 +270,6 @@ Summary summarize(const MethodRun& run) {
     return s;
 }
 
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
-}
-
 void createDir(const std::string& dir) {
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -640,7 +633,11 @@ int run(int argc, char** argv) {
         "", "set", "Override one parameter, e.g. --set tgf_resolution=4", false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Use at most the first N labelled frames",
                                     false, -1, "N", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
+    const travel::Config configuration =
+        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
+    if (print_config.print(configuration)) return 0;
 
     const bool is_sweep = command.getValue() == "sweep";
     // Configuration errors first, before any file is read.
@@ -654,7 +651,7 @@ int run(int argc, char** argv) {
                                            sweep.isSet() ? "--sweep" : "--method");
     if (is_sweep && !sweep.isSet())
         throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    const travel::Params& params = configuration.travel;
     std::string setup = "preset " + preset.getValue();
     if (config.isSet()) setup += ", config " + config.getValue();
     for (const std::string& kv : set.getValue()) setup += ", " + kv;

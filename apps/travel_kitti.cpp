@@ -35,13 +35,6 @@ struct StageSeries {
     std::vector<double> ms;
 };
 
-travel::Params loadParams(const std::string& preset, const std::string& config,
-                          const std::vector<std::string>& overrides) {
-    travel::Params params = travel::loadPreset(preset);
-    travel::apps::applyParamSources(config, overrides, params);
-    return params;
-}
-
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "Traversable ground segmentation of KITTI-format scans (TRAVEL, Oh et al. RA-L 2022).\n"
@@ -81,9 +74,13 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
     TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
                           cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
-    const travel::Params params = loadParams(preset.getValue(), config.getValue(), set.getValue());
+    const travel::Config configuration =
+        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
+    if (print_config.print(configuration)) return 0;
+    const travel::Params& params = configuration.travel;
     if (dump.getValue()) {
         std::cout << travel::paramsToYaml(params);
         return 0;

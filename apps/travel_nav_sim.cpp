@@ -69,7 +69,10 @@ int run(int argc, char** argv) {
         false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
     TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
+    const travel::Config configuration = travel::apps::loadAppConfig("", "", set_arg.getValue());
+    if (print_config.print(configuration)) return 0;
 
     const World world = shiftedObstacles(loadWorld(findShared(world_arg.getValue(), "worlds")),
                                          seed_arg.getValue());
@@ -87,8 +90,7 @@ int run(int argc, char** argv) {
     options.timeout = timeout_arg.getValue();
     options.threshold_min_z = threshold_arg.getValue();
     options.verbose = verbose_arg.getValue();
-    for (const auto& kv : set_arg.getValue()) travel::applyOverride(kv, options.travel);
-    options.travel.validate();
+    options.travel = configuration.travel;
     const auto footprint = footprintFromConfig(config);
 
     std::cout << "travel-nav-sim: world " << world.name << " (" << world.source << "), navigator "

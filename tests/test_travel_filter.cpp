@@ -135,9 +135,9 @@ mrpt::obs::CObservationRotatingScan::Ptr smallRotatingScan(const mrpt::poses::CP
 
 TEST(TravelFilterOptions, LoadsYamlText) {
     const TravelFilterOptions o = fromYaml(
-        "preset: vlp16\nsensor_height: 2.24\nground_dist: 0.2\nsensor_label: VELO.*\n"
-        "use_sensor_pose: false\nuse_robot_attitude: no\nvelocity_source: imu\n"
-        "max_motion_age: 0.25\n");
+        "preset: vlp16\nsensor_height: 2.24\nground_dist: 0.2\nfilter:\n  sensor_label: VELO.*\n"
+        "  use_sensor_pose: false\n  use_robot_attitude: no\n  velocity_source: imu\n"
+        "  max_motion_age: 0.25\n");
     EXPECT_EQ(o.params.num_rings, 16);  // from the preset
     EXPECT_DOUBLE_EQ(o.params.sensor_height, 2.24);
     EXPECT_DOUBLE_EQ(o.params.ground_dist, 0.2);
@@ -169,8 +169,11 @@ TEST(TravelFilterOptions, PresetComesFirstWhereverWritten) {
     EXPECT_DOUBLE_EQ(o.params.tgf_resolution, 3.0);
     EXPECT_DOUBLE_EQ(o.params.max_range, vlp16.max_range);  // untouched preset value
     EXPECT_EQ(o.params.elevation_table, "vlp16");
-    const TravelFilterOptions y = fromYaml("tgf_resolution: 3.0\npreset: vlp16\n");
-    EXPECT_EQ(travel::paramsToYaml(y.params), travel::paramsToYaml(o.params));
+    // In a file the preset must be the first key (the file reads top to bottom).
+    EXPECT_NE(errorOf([] {
+                  fromYaml("tgf_resolution: 3.0\npreset: vlp16\n");
+              }).find("'preset' must come before"),
+              std::string::npos);
     EXPECT_NE(errorOf([] { fromYaml("preset: no_such_sensor\n"); }).find("no_such_sensor"),
               std::string::npos);
 }
@@ -187,6 +190,9 @@ TEST(TravelFilterOptions, RejectsUnknownKeysNamingKeyAndSection) {
     EXPECT_NE(ini_error.find("sensor_hieght"), std::string::npos) << ini_error;
     EXPECT_NE(ini_error.find("[lidar_front]"), std::string::npos) << ini_error;
     EXPECT_THROW(fromYaml("sensor_hieght: 2.0\n"), travel::ConfigError);
+    // A filter key at the root (travel's keys) is named with its section.
+    const std::string misplaced = errorOf([] { fromYaml("velocity_source: imu\n"); });
+    EXPECT_NE(misplaced.find("is a key of section 'filter'"), std::string::npos) << misplaced;
 }
 
 TEST(TravelFilterOptions, RejectsBadValues) {
@@ -194,9 +200,9 @@ TEST(TravelFilterOptions, RejectsBadValues) {
     EXPECT_NE(range.find("sensor_height"), std::string::npos) << range;
     const std::string cross = errorOf([] { fromYaml("min_range: 50\nmax_range: 10\n"); });
     EXPECT_NE(cross.find("min_range"), std::string::npos) << cross;
-    const std::string choice = errorOf([] { fromYaml("velocity_source: fast\n"); });
+    const std::string choice = errorOf([] { fromYaml("filter:\n  velocity_source: fast\n"); });
     EXPECT_NE(choice.find("auto|imu|poses|none"), std::string::npos) << choice;
-    const std::string regex = errorOf([] { fromYaml("sensor_label: \"(\"\n"); });
+    const std::string regex = errorOf([] { fromYaml("filter:\n  sensor_label: \"(\"\n"); });
     EXPECT_NE(regex.find("sensor_label"), std::string::npos) << regex;
     EXPECT_NE(errorOf([] { fromIni("[travel]\nuse_sensor_pose = maybe\n"); }).find("maybe"),
               std::string::npos);
