@@ -3,6 +3,7 @@
 // The map's .ini keys (TraversabilityMapOptions), in-process CMultiMetricMap creation, the grid
 // on its own, and the pose files (TUM, KITTI, calib.txt) with their error messages.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/system/filesystem.h>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "map/MapTestScene.hpp"
+#include "travel/ConfigIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/PoseFiles.hpp"
 
@@ -73,6 +75,37 @@ TEST(MapOptions, BadKeysAreRejectedWithTheirName) {
     EXPECT_NE(errorOf("[m]\nsensor_height=-1\n", "m").find("sensor_height"), std::string::npos);
     EXPECT_NE(errorOf("[m]\nresolution=0.0001\nmin_x=-100\nmax_x=100\n", "m").find("16384"),
               std::string::npos);
+}
+
+TEST(MapOptions, IniFileErrorsNameFileLineAndSection) {
+    const std::string path = mrpt::system::getTempFileName() + "_map_options.ini";
+    std::ofstream(path) << "[other]\nresolution=1\n[m]\nresolution=0.5\n  ray_strid=3\n";
+    std::string message;
+    try {
+        mrpt::config::CConfigFile ini(path);
+        TraversabilityMapOptions o;
+        o.loadFromConfigFile(ini, "m");
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    std::remove(path.c_str());
+    EXPECT_NE(message.find(path + ":5:3: section [m]: unknown key 'ray_strid'"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("did you mean 'ray_stride'"), std::string::npos) << message;
+}
+
+TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {
+    // A [map] section of the one configuration file gives the same options as the flat section.
+    travel::Config config;
+    travel::applyConfigText("[map]\nresolution = 0.5\nmax_traversable_slope_deg = 12\n", "c.ini",
+                            config);
+    mrpt::config::CConfigFileMemory ini("[m]\nresolution=0.5\nmax_traversable_slope_deg=12\n");
+    TraversabilityMapOptions o;
+    o.loadFromConfigFile(ini, "m");
+    EXPECT_EQ(o.resolution, config.map.resolution);
+    EXPECT_EQ(o.fusion().max_slope_deg, config.map.max_traversable_slope_deg);
+    EXPECT_EQ(o.travel.params.max_slope_deg, travel::Params().max_slope_deg)
+        << "travel's untouched";
 }
 
 TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
