@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <locale>
 #include <sstream>
@@ -521,19 +522,29 @@ TEST(ConfigSections, PrintedConfigLoadsBackIdentically) {
     EXPECT_CONTAINS(printed, "# [deg] A cell whose terrain model is steeper");
 }
 
+namespace {
+struct CommaDecimal : std::numpunct<char> {
+    char do_decimal_point() const override { return ','; }
+    char do_thousands_sep() const override { return '.'; }
+    std::string do_grouping() const override { return "\3"; }
+};
+}  // namespace
+
 TEST(ConfigSections, NumbersIgnoreTheGlobalLocale) {
-    // A locale whose decimal separator is ',' must not change what "0.5" means.
-    std::locale previous;
-    try {
-        previous = std::locale::global(std::locale("de_DE.UTF-8"));
-    } catch (const std::runtime_error&) {
-        GTEST_SKIP() << "de_DE.UTF-8 locale not installed";
-    }
-    std::setlocale(LC_ALL, "de_DE.UTF-8");
-    const travel::Config c = configFrom("map:\n  resolution: 0.5\n");
+    // A global locale whose decimal separator is ',' (C++ streams; and C's strtod/printf when a
+    // German locale is installed) must not change what "0.5" means or how it is written.
+    const std::locale previous =
+        std::locale::global(std::locale(std::locale::classic(), new CommaDecimal));
+    const bool c_locale_changed = std::setlocale(LC_NUMERIC, "de_DE.UTF-8") != nullptr;
+    const travel::Config c = configFrom("map:\n  resolution: 0.5\nnav:\n  max_height: 1e3\n");
     const std::string printed = travel::configToYaml(c);
+    const std::string error = configErrorOf([] { configFrom("map:\n  resolution: 0,5\n"); });
     std::locale::global(previous);
-    std::setlocale(LC_ALL, "C");
+    std::setlocale(LC_NUMERIC, "C");
     EXPECT_EQ(c.map.resolution, 0.5);
+    EXPECT_EQ(c.nav.max_height, 1000.0);
     EXPECT_CONTAINS(printed, "resolution: 0.5\n");
+    EXPECT_CONTAINS(printed, "(range [1e-06, 10000])");
+    EXPECT_CONTAINS(error, "'0,5' is not a finite number");
+    if (!c_locale_changed) std::cout << "(de_DE.UTF-8 not installed: C locale part not run)\n";
 }

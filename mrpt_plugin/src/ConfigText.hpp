@@ -72,13 +72,20 @@ void applySection(const std::vector<SectionKey>& keys, travel::Params& params,
     }
 }
 
-/// Every key of `sections...` as `key = value` (shortest exact text).
+/// Every key of `sections...` as `key = value` (shortest exact text; strings as they are, since
+/// MRPT's ini reader keeps quotes).
 template <class... Sections>
 void writeSection(mrpt::config::CConfigFileBase& target, const std::string& section,
                   const Sections&... sections) {
     (travel::visitFields(sections,
                          [&](const char* name, const auto& value, const char* unit, auto&&...) {
-                             target.write(section, name, travel::fields::formatAny(value, unit));
+                             using T = travel::fields::Bare<decltype(value)>;
+                             if constexpr (std::is_same_v<T, std::string>) {
+                                 target.write(section, name, value);
+                             } else {
+                                 target.write(section, name,
+                                              travel::fields::formatAny(value, unit));
+                             }
                          }),
      ...);
 }

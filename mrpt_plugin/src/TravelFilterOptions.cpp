@@ -24,18 +24,52 @@ travel::Config toConfig(const TravelFilterOptions& options) {
     return config;
 }
 
-// mrpt::containers::yaml keeps a map's keys sorted, not in file order: a `preset:` line (root or
-// under `travel:`) is moved to the top, where the loader wants it.
-std::string presetFirst(const std::string& text) {
-    std::istringstream lines(text);
+/// A scalar as text, whatever type it holds (parsed files hold strings; maps built in code may
+/// hold numbers or booleans), single-quoted for YAML so that it reads back as the same text.
+std::string quotedScalar(const mrpt::containers::yaml::node_t& node, const std::string& key) {
+    if (!node.isScalar())
+        throw travel::ConfigError("YAML: '" + key + "': expected a single value, got a " +
+                                  node.typeName());
+    const std::any& any = node.asScalar();
+    std::string text;
+    if (const auto* s = std::any_cast<std::string>(&any))
+        text = *s;
+    else if (const auto* b = std::any_cast<bool>(&any))
+        text = *b ? "true" : "false";
+    else if (const auto* d = std::any_cast<double>(&any))
+        text = travel::fields::format(*d);
+    else if (const auto* f = std::any_cast<float>(&any))
+        text = travel::fields::format(*f);
+    else
+        text = node.as<std::string>();
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+    return quoted + "'";
+}
+
+/// The map as YAML text for travel::applyConfigText: one level of sections, every value
+/// quoted. mrpt::containers::yaml keeps a map's keys sorted, not in file order, so `preset`
+/// (root or under `travel:`) is written first, where the loader wants it.
+std::string yamlText(const mrpt::containers::yaml& cfg) {
+    if (!cfg.isMap()) throw travel::ConfigError("YAML: expected a map of key: value");
     std::string preset, rest;
-    for (std::string line; std::getline(lines, line);) {
-        const std::size_t start = line.find_first_not_of(' ');
-        if (preset.empty() && start != std::string::npos && start <= 2 &&
-            line.compare(start, 7, "preset:") == 0) {
-            preset = "preset:" + line.substr(start + 7) + "\n";
+    for (const auto& [key_node, value] : cfg.asMap()) {
+        const std::string key = key_node.as<std::string>();
+        if (value.isMap()) {
+            rest += key + ":\n";
+            for (const auto& [sub_key_node, sub_value] : value.asMap()) {
+                const std::string sub_key = sub_key_node.as<std::string>();
+                const std::string line = sub_key + ": " + quotedScalar(sub_value, sub_key) + "\n";
+                if (key == "travel" && sub_key == "preset")
+                    preset = line;
+                else
+                    rest += "  " + line;
+            }
+        } else if (value.isNullNode()) {
+            rest += key + ":\n";
         } else {
-            rest += line + "\n";
+            const std::string line = key + ": " + quotedScalar(value, key) + "\n";
+            (key == "preset" ? preset : rest) += line;
         }
     }
     return preset + rest;
@@ -66,9 +100,7 @@ void TravelFilterOptions::saveToConfigFile(mrpt::config::CConfigFileBase& target
 void TravelFilterOptions::loadFromYaml(const mrpt::containers::yaml& cfg) {
     travel::Config config = toConfig(*this);
     if (!cfg.isNullNode() && !(cfg.isMap() && cfg.asMap().empty())) {
-        std::ostringstream printed;
-        cfg.printAsYAML(printed);
-        travel::applyConfigText(presetFirst(printed.str()), "YAML", config);
+        travel::applyConfigText(yamlText(cfg), "YAML", config);
     }
     try {
         config.validate();

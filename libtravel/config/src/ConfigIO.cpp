@@ -131,7 +131,7 @@ class Applier {
         try {
             root = YAML::Load(text);
         } catch (const YAML::Exception& e) {
-            fail(locationOf(e.mark), "YAML syntax: " + e.msg);
+            failSyntax(text, locationOf(e.mark), e.msg);
         }
         if (root.IsNull()) return;
         if (!root.IsMap()) {
@@ -172,6 +172,34 @@ class Applier {
     }
 
   private:
+    // yaml-cpp notices a broken line where the next token makes it impossible ("tgf_resolution;
+    // 4.0" is only rejected on the line after it): name the line that is no `key: value`.
+    [[noreturn]] void failSyntax(const std::string& text, const Location& at,
+                                 const std::string& why) const {
+        std::istringstream lines(text);
+        int number = 0, suspect = 0;
+        std::string suspect_text;
+        for (std::string line; std::getline(lines, line) && (at.line == 0 || number < at.line);) {
+            ++number;
+            const std::size_t start = line.find_first_not_of(" \t\r");
+            if (start == std::string::npos || line[start] == '#' || line[start] == '-') continue;
+            const std::string content = line.substr(start);
+            const std::size_t colon = content.find(':');
+            const bool assignment = colon != std::string::npos &&
+                                    (colon + 1 == content.size() || content[colon + 1] == ' ' ||
+                                     content[colon + 1] == '\t' || content[colon + 1] == '\r');
+            if (!assignment) suspect = number, suspect_text = content;
+        }
+        const std::string where =
+            at.line > 0 ? " at " + std::to_string(at.line) + ":" + std::to_string(at.column) : "";
+        if (suspect > 0) {
+            while (!suspect_text.empty() && suspect_text.back() == '\r') suspect_text.pop_back();
+            fail({suspect, 0}, "expected 'key: value', got '" + suspect_text +
+                                   "' (YAML syntax: " + why + where + ")");
+        }
+        fail(at, "YAML syntax: " + why);
+    }
+
     std::string scalarKey(const YAML::Node& node) const {
         if (!node.IsScalar()) fail(locationOf(node.Mark()), "expected a key, got a map or list");
         return node.Scalar();

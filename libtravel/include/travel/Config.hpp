@@ -46,7 +46,7 @@ VelocitySource velocitySourceFromString(const std::string& text);
     X(double, max_x, 20.0, "m", -1e6, 1e6, "Grid extent: largest x")                             \
     X(double, min_y, -20.0, "m", -1e6, 1e6, "Grid extent: smallest y")                           \
     X(double, max_y, 20.0, "m", -1e6, 1e6, "Grid extent: largest y")                             \
-    X(double, resolution, 0.2, "m", 1e-3, 1e4, "Side of a grid cell")                            \
+    X(double, resolution, 0.2, "m", 1e-6, 1e4, "Side of a grid cell")                            \
     X(double, octomap_resolution, 0.2, "m", 0.01, 1e4, "Side of an OctoMap voxel")               \
     X(double, octomap_prob_hit, 0.7, "", 0.5, 1.0,                                               \
       "OctoMap sensor model: occupancy probability of a hit (in (0.5, 1))")                      \
