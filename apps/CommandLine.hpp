@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "travel/Config.hpp"
+#include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
@@ -51,14 +53,49 @@ inline std::string oneLine(const std::string& text) {
     return best.empty() ? text : best;
 }
 
-/// --preset (already applied to `params` by the caller), then --config, then each --set, then
-/// the cross-parameter checks: the order every app documents.
-inline void applyParamSources(const std::string& config, const std::vector<std::string>& overrides,
-                              Params& params) {
-    if (!config.empty()) applyParamsFile(config, params);
-    for (const std::string& kv : overrides) applyOverride(kv, params);  // errors quote kv
-    params.validate();
+/// --preset (already applied to `config` by the caller), then --config (every section), then
+/// each --set (KEY=VALUE or SECTION.KEY=VALUE), then the cross-key checks: the order every app
+/// documents.
+inline void applyConfigSources(const std::string& config_file,
+                               const std::vector<std::string>& overrides, Config& config) {
+    if (!config_file.empty()) applyConfigFile(config_file, config);
+    for (const std::string& kv : overrides) applyConfigOverride(kv, config);  // errors quote kv
+    config.validate();
 }
+
+/// The whole configuration of an app: --preset (none: defaults), --config, each --set.
+inline Config loadAppConfig(const std::string& preset, const std::string& config_file,
+                            const std::vector<std::string>& overrides) {
+    Config config = preset.empty() ? Config() : loadPresetConfig(preset);
+    applyConfigSources(config_file, overrides, config);
+    return config;
+}
+
+/// The same for the apps that run the ground segmentation only: the other sections of the file
+/// are checked and ignored.
+inline void applyParamSources(const std::string& config_file,
+                              const std::vector<std::string>& overrides, Params& params) {
+    Config config;
+    config.travel = params;
+    applyConfigSources(config_file, overrides, config);
+    params = config.travel;
+}
+
+/// Every app's --print-config switch: every section with its documentation, as YAML that
+/// --config reads back identically.
+struct PrintConfigFlag {
+    mutable TCLAP::SwitchArg arg;  // TCLAP's getValue() is not const
+    explicit PrintConfigFlag(TCLAP::CmdLine& cmd)
+        : arg("", "print-config",
+              "Print the effective configuration (every section, documented) as YAML and exit", cmd,
+              false) {}
+    /// Prints and returns true when the flag was given.
+    bool print(const Config& config) const {
+        if (!arg.getValue()) return false;
+        std::cout << configToYaml(config);
+        return true;
+    }
+};
 
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash

@@ -306,7 +306,11 @@ int run(int argc, char** argv) {
         "", "set", "Override one parameter, e.g. --set tgf_resolution=4", false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Use at most the first N labelled frames",
                                     false, -1, "N", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
+    const travel::Config configuration =
+        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
+    if (print_config.print(configuration)) return 0;
 
     const bool is_sweep = command.getValue() == "sweep";
     // Configuration errors first, before any file is read.
@@ -320,8 +324,7 @@ int run(int argc, char** argv) {
                                            sweep.isSet() ? "--sweep" : "--method");
     if (is_sweep && !sweep.isSet())
         throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
-    travel::Params params = travel::loadPreset(preset.getValue());
-    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
+    const travel::Params& params = configuration.travel;
     std::string setup = "preset " + preset.getValue();
     if (config.isSet()) setup += ", config " + config.getValue();
     for (const std::string& kv : set.getValue()) setup += ", " + kv;

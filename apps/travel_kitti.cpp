@@ -73,10 +73,13 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
     TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
                           cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
-    travel::Params params = travel::loadPreset(preset.getValue());
-    travel::apps::applyParamSources(config.getValue(), set.getValue(), params);
+    const travel::Config configuration =
+        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
+    if (print_config.print(configuration)) return 0;
+    const travel::Params& params = configuration.travel;
     if (dump.getValue()) {
         std::cout << travel::paramsToYaml(params);
         return 0;

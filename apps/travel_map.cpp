@@ -48,11 +48,12 @@ using travel::apps::Stats;
 /// and TRAVEL keys; YAML: TRAVEL keys), --extent / --resolution, then each --set.
 travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
     travel_mrpt::TraversabilityMapOptions options;
-    options.geometry = {-40, 40, -40, 40, 0.2};
+    options.min_x = options.min_y = -40;
+    options.max_x = options.max_y = 40;
     if (!o.config.empty()) {
         const std::string ext = fs::path(o.config).extension().string();
         if (ext == ".yaml" || ext == ".yml") {
-            options.travel.loadFromFile(o.config);
+            options.loadFromFile(o.config);  // sections travel, filter, map
         } else {
             if (!fs::exists(o.config)) throw std::runtime_error(o.config + ": no such file");
             mrpt::config::CConfigFileMemory ini;
@@ -82,9 +83,9 @@ travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
             4)
             throw std::runtime_error("--extent: expected MIN_X,MAX_X,MIN_Y,MAX_Y in metres, got '" +
                                      o.extent + "'");
-        options.geometry = {v[0], v[1], v[2], v[3], options.geometry.resolution};
+        options.min_x = v[0], options.max_x = v[1], options.min_y = v[2], options.max_y = v[3];
     }
-    if (o.resolution > 0) options.geometry.resolution = o.resolution;
+    if (o.resolution > 0) options.resolution = o.resolution;
     for (const std::string& kv : o.sets) {
         if (kv.find('=') == std::string::npos)
             throw std::runtime_error("--set: expected KEY=VALUE, got '" + kv + "'");
@@ -247,7 +248,7 @@ int run(int argc, char** argv) {
         std::printf("  poses: %s\n", stats.pose_source.c_str());
         std::printf(
             "  grid: %d x %d cells of %.3g m, observed %zu: traversable %zu, obstacle %zu\n",
-            map.grid().sizeX(), map.grid().sizeY(), map.options().geometry.resolution,
+            map.grid().sizeX(), map.grid().sizeY(), map.options().resolution,
             map.grid().observedCells(), traversable, obstacle);
         std::printf("  OctoMap: %zu leaves of %.3g m, %zu occupied voxels\n",
                     map.octree().getNumLeafNodes(), map.options().octomap_resolution,

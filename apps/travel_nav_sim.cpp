@@ -21,6 +21,7 @@
 #include "nav/World.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
+#include "travel/traversability/SectionConversions.hpp"
 
 namespace fs = std::filesystem;
 using namespace travel::navsim;
@@ -60,8 +61,10 @@ int run(int argc, char** argv) {
                                         60.0, "S", cmd);
     TCLAP::ValueArg<double> threshold_arg(
         "", "threshold", "Height-threshold source: min height [m]", false, 0.25, "M", cmd);
-    TCLAP::MultiArg<std::string> set_arg("", "set", "TRAVEL parameter override key=value", false,
-                                         "KEY=VALUE", cmd);
+    TCLAP::MultiArg<std::string> set_arg("", "set",
+                                         "Override KEY=VALUE or SECTION.KEY=VALUE (sections "
+                                         "travel and nav; see --print-config)",
+                                         false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<unsigned> seed_arg(
         "", "seed",
         "Move the world's kerbs and boxes by a seeded random shift (up to +/-0.3 m; 0: as in "
@@ -69,7 +72,16 @@ int run(int argc, char** argv) {
         false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
     TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
+    // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then each --set.
+    const SimOptions defaults;
+    travel::Config configuration;
+    configuration.travel = defaults.travel;
+    configuration.nav.memory_seconds = defaults.memory.memory_seconds;
+    configuration.nav.memory_radius = defaults.memory.memory_radius;
+    travel::apps::applyConfigSources("", set_arg.getValue(), configuration);
+    if (print_config.print(configuration)) return 0;
 
     const World world = shiftedObstacles(loadWorld(findShared(world_arg.getValue(), "worlds")),
                                          seed_arg.getValue());
@@ -87,8 +99,9 @@ int run(int argc, char** argv) {
     options.timeout = timeout_arg.getValue();
     options.threshold_min_z = threshold_arg.getValue();
     options.verbose = verbose_arg.getValue();
-    for (const auto& kv : set_arg.getValue()) travel::applyOverride(kv, options.travel);
-    options.travel.validate();
+    options.travel = configuration.travel;
+    options.travel_obstacles = travel::travelObstacleOptions(configuration.nav);
+    options.memory = travel_mrpt::obstacleMemoryOptions(configuration.nav);
     const auto footprint = footprintFromConfig(config);
 
     std::cout << "travel-nav-sim: world " << world.name << " (" << world.source << "), navigator "

@@ -38,6 +38,7 @@
 #include "CommandLine.hpp"
 #include "MemoryLimit.hpp"
 #include "RawlogJob.hpp"
+#include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
@@ -172,9 +173,11 @@ Options parseCommandLine(int argc, char** argv) {
             std::to_string(travel::apps::kDefaultMemoryLimitMiB),
         false, static_cast<long>(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary (errors only)", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     Options o;
     o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
     if (o.exit_code) return o;
+    o.print_config = print_config.arg.getValue();
 
     o.input = input.getValue();
     o.output = output.getValue();
@@ -199,33 +202,18 @@ Options parseCommandLine(int argc, char** argv) {
     return o;
 }
 
-bool isFilterKey(const std::string& key) {
-    std::size_t n = 0;
-    const char* const* keys = travel_mrpt::TravelFilterOptions::filterKeys(n);
-    for (std::size_t i = 0; i < n; ++i)
-        if (key == keys[i]) return key != "preset";
-    return false;
+travel::Config loadConfiguration(const Options& o) {
+    travel::Config config = travel::apps::loadAppConfig(o.preset, o.config, o.overrides);
+    if (!o.sensor_label_regex.empty()) config.filter.sensor_label = o.sensor_label_regex;
+    if (o.ignore_sensor_pose) config.filter.use_sensor_pose = false;
+    config.validate();
+    return config;
 }
 
-travel_mrpt::TravelFilterOptions loadFilterOptions(const Options& o) {
-    travel_mrpt::TravelFilterOptions options;  // HDL-64E on KITTI
-    if (!o.preset.empty()) options.params = travel::loadPreset(o.preset);
-    if (!o.config.empty()) options.loadFromFile(o.config);
-    for (const auto& kv : o.overrides) {
-        const std::size_t eq = kv.find('=');
-        const std::string key = eq == std::string::npos ? kv : kv.substr(0, eq);
-        if (isFilterKey(key)) {
-            // Same rules as a config file: through a one-key ini section.
-            mrpt::config::CConfigFileMemory ini("[travel]\n" + kv + "\n");
-            options.loadFromConfigFile(ini, "travel");
-        } else {
-            travel::applyOverride(kv, options.params);  // errors quote kv
-        }
-    }
-    if (!o.sensor_label_regex.empty()) options.sensor_label = o.sensor_label_regex;
-    if (o.ignore_sensor_pose) options.use_sensor_pose = false;
-    options.params.validate();
-    options.validate();
+travel_mrpt::TravelFilterOptions loadFilterOptions(const travel::Config& config) {
+    travel_mrpt::TravelFilterOptions options;
+    options.params = config.travel;
+    static_cast<travel::FilterSection&>(options) = config.filter;
     return options;
 }
 
@@ -237,7 +225,12 @@ int run(int argc, char** argv) {
         std::cerr << "travel-rawlog: note: " << limit_note << "\n";
     // Our own classes (CObservationTravelLabels) must be readable: inputs may be earlier outputs.
     travel_mrpt::registerClasses();
-    const travel_mrpt::TravelFilterOptions filter_options = loadFilterOptions(options);
+    const travel::Config configuration = loadConfiguration(options);
+    if (options.print_config) {
+        std::cout << travel::configToYaml(configuration);
+        return 0;
+    }
+    const travel_mrpt::TravelFilterOptions filter_options = loadFilterOptions(configuration);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");

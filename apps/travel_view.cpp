@@ -70,9 +70,15 @@ Options parseCommandLine(int argc, char** argv) {
                                 false, 0.075, "M", cmd);
     TCLAP::ValueArg<int> size("", "size", "Side of each panel in pixels", false, 800, "PX", cmd);
     TCLAP::SwitchArg no_nodes("", "no-nodes", "Do not draw the terrain model's nodes", cmd);
+    const travel::apps::PrintConfigFlag print_config(cmd);
     Options o;
     o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
     if (o.exit_code) return o;
+    if (print_config.print(
+            travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue()))) {
+        o.exit_code = 0;
+        return o;
+    }
 
     o.scan = scan.getValue();
     o.out = out.getValue();
@@ -92,10 +98,7 @@ Options parseCommandLine(int argc, char** argv) {
 }
 
 travel::Params loadParams(const Options& o) {
-    travel::Params params;
-    if (!o.preset.empty()) params = travel::loadPreset(o.preset);
-    travel::apps::applyParamSources(o.config, o.overrides, params);
-    return params;
+    return travel::apps::loadAppConfig(o.preset, o.config, o.overrides).travel;
 }
 
 /// The methods whose ground stage is TRAVEL's tri-grid search: they have a terrain model.

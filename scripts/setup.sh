@@ -10,6 +10,7 @@ set -euo pipefail
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="$ROOT_DIR/build"
 PACKAGES=(
+  libyaml-cpp-dev
   cmake ninja-build g++ pkg-config
   libeigen3-dev libmrpt-maps-dev libmrpt-nav-dev libmrpt-gui-dev libmrpt-tclap-dev
   liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev

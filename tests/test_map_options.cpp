@@ -3,12 +3,18 @@
 // The map's .ini keys (TraversabilityMapOptions) and in-process CMultiMetricMap creation (the
 // grid on its own and the pose files: test_traversability.cpp).
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cstdio>
+#include <fstream>
 
 #include <string>
 
 #include "map/MapTestScene.hpp"
+#include "travel/ConfigIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
 namespace {
@@ -32,10 +38,10 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
         "sensor_height=1.1\nsensor_label=VLP.*\n");
     TraversabilityMapOptions o;
     o.loadFromConfigFile(ini, "m");
-    EXPECT_EQ(o.geometry.resolution, 0.5);
-    EXPECT_EQ(o.geometry.min_x, -5.0);
+    EXPECT_EQ(o.geometry().resolution, 0.5);
+    EXPECT_EQ(o.geometry().min_x, -5.0);
     EXPECT_EQ(o.ray_stride, 3);
-    EXPECT_FLOAT_EQ(o.fusion.max_step_height, 0.2f);
+    EXPECT_FLOAT_EQ(o.fusion().max_step_height, 0.2f);
     EXPECT_EQ(o.travel.params.sensor_height, 1.1);
     EXPECT_EQ(o.travel.params.num_rings, 16) << "from the vlp16 preset";
     EXPECT_EQ(o.travel.sensor_label, "VLP.*");
@@ -46,7 +52,7 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
     mrpt::config::CConfigFileMemory reread(saved.getContent());
     TraversabilityMapOptions back;
     back.loadFromConfigFile(reread, "s");
-    EXPECT_EQ(back.geometry.min_x, -5.0);
+    EXPECT_EQ(back.geometry().min_x, -5.0);
     EXPECT_EQ(back.ray_stride, 3);
     EXPECT_EQ(back.travel.params.sensor_height, 1.1);
 }
@@ -55,14 +61,51 @@ TEST(MapOptions, BadKeysAreRejectedWithTheirName) {
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("unknown key 'resolutoin'"),
               std::string::npos);
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("[m]"), std::string::npos);
-    EXPECT_NE(errorOf("[m]\nresolution=abc\n", "m").find("resolution: expected a number"),
+    EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("did you mean 'resolution'"),
               std::string::npos);
-    EXPECT_NE(errorOf("[m]\nray_stride=1.5\n", "m").find("ray_stride: expected an integer"),
+    // The map's slope limit has its own name: the old one is libtravel's.
+    EXPECT_NE(errorOf("[m]\nmax_traversable_slope_dg=20\n", "m").find("max_traversable_slope_deg"),
+              std::string::npos);
+    EXPECT_NE(errorOf("[m]\nresolution=abc\n", "m")
+                  .find("invalid value for 'resolution': 'abc' is not a finite number"),
+              std::string::npos);
+    EXPECT_NE(errorOf("[m]\nray_stride=1.5\n", "m").find("'1.5' is not an integer"),
               std::string::npos);
     EXPECT_NE(errorOf("[m]\nmin_x=5\nmax_x=1\n", "m").find("min_x"), std::string::npos);
     EXPECT_NE(errorOf("[m]\nsensor_height=-1\n", "m").find("sensor_height"), std::string::npos);
     EXPECT_NE(errorOf("[m]\nresolution=0.0001\nmin_x=-100\nmax_x=100\n", "m").find("16384"),
               std::string::npos);
+}
+
+TEST(MapOptions, IniFileErrorsNameFileLineAndSection) {
+    const std::string path = mrpt::system::getTempFileName() + "_map_options.ini";
+    std::ofstream(path) << "[other]\nresolution=1\n[m]\nresolution=0.5\n  ray_strid=3\n";
+    std::string message;
+    try {
+        mrpt::config::CConfigFile ini(path);
+        TraversabilityMapOptions o;
+        o.loadFromConfigFile(ini, "m");
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    std::remove(path.c_str());
+    EXPECT_NE(message.find(path + ":5:3: section [m]: unknown key 'ray_strid'"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("did you mean 'ray_stride'"), std::string::npos) << message;
+}
+
+TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {
+    // A [map] section of the one configuration file gives the same options as the flat section.
+    travel::Config config;
+    travel::applyConfigText("[map]\nresolution = 0.5\nmax_traversable_slope_deg = 12\n", "c.ini",
+                            config);
+    mrpt::config::CConfigFileMemory ini("[m]\nresolution=0.5\nmax_traversable_slope_deg=12\n");
+    TraversabilityMapOptions o;
+    o.loadFromConfigFile(ini, "m");
+    EXPECT_EQ(o.resolution, config.map.resolution);
+    EXPECT_EQ(o.fusion().max_slope_deg, config.map.max_traversable_slope_deg);
+    EXPECT_EQ(o.travel.params.max_slope_deg, travel::Params().max_slope_deg)
+        << "travel's untouched";
 }
 
 TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
@@ -75,14 +118,14 @@ TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
     EXPECT_EQ(map->grid().sizeX(), 112);  // 28 m / 0.25 m
     EXPECT_EQ(map->grid().sizeY(), 88);   // 22 m / 0.25 m
     EXPECT_EQ(map->options().travel.params.sensor_height, 1.8);
-    // max_slope_deg is a map key and a libtravel parameter name: saved and read back, the map's
+    // max_traversable_slope_deg (the map's) and max_slope_deg (libtravel's) are distinct keys:
     // value (20 in the .ini, libtravel's default 25) survives.
     mrpt::config::CConfigFileMemory saved;
     map->options().saveToConfigFile(saved, "m");
     travel_mrpt::TraversabilityMapOptions reread;
     reread.loadFromConfigFile(saved, "m");
-    EXPECT_FLOAT_EQ(reread.fusion.max_slope_deg, 20.f);
-    EXPECT_FLOAT_EQ(reread.fusion.max_neighbour_step, 0.1f);
+    EXPECT_FLOAT_EQ(reread.fusion().max_slope_deg, 20.f);
+    EXPECT_FLOAT_EQ(reread.fusion().max_neighbour_step, 0.1f);
 
     // An unknown key in the .ini fails the creation with the key and section named.
     mrpt::config::CConfigFileMemory bad(travel_map_test::mapIni("MAP") + "colour=red\n");

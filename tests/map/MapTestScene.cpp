@@ -148,7 +148,7 @@ std::string mapIni(const std::string& section) {
            section +
            "_traversabilityMap_00_insertOpts]\n"
            "preset=vlp16\nsensor_height=1.8\nmax_step_height=0.1\nmax_neighbour_step=0.1\n"
-           "max_slope_deg=20\n";
+           "max_traversable_slope_deg=20\n";
 }
 
 }  // namespace travel_map_test

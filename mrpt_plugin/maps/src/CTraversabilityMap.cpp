@@ -105,6 +105,7 @@ CTraversabilityMap::~CTraversabilityMap() = default;
 void CTraversabilityMap::setOptions(const TraversabilityMapOptions& options) {
     options.validate();
     options_ = options;
+    fusion_ = options_.fusion();
     filter_->setOptions(options_.travel);
     internal_clear();
 }
@@ -116,7 +117,7 @@ void CTraversabilityMap::resetOctree() {
 }
 
 void CTraversabilityMap::internal_clear() {
-    grid_.reset(options_.geometry);
+    grid_.reset(options_.geometry());
     resetOctree();
     filter_->reset();
     frames_inserted_ = 0;
@@ -124,7 +125,7 @@ void CTraversabilityMap::internal_clear() {
 }
 
 CellState CTraversabilityMap::stateAt(double x, double y) const {
-    return grid_.state(grid_.cellIndex(x, y), options_.fusion);
+    return grid_.state(grid_.cellIndex(x, y), fusion_);
 }
 
 bool CTraversabilityMap::internal_insertObservation(
@@ -205,7 +206,7 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         if (height <= max_h) grid_.addObstacle(pw.x(), pw.y());
         endKey(pw, s.obstacle_ends);
     }
-    grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), options_.fusion);
+    grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), fusion_);
 
     // OctoMap: one ray per distinct end voxel (not per point), free voxels deduplicated, then
     // each voxel updated once: hits occupied, traversed voxels free unless hit in this frame.
@@ -264,7 +265,7 @@ const mrpt::maps::CSimplePointsMap* CTraversabilityMap::getAsSimplePointsMap() c
 }
 
 void CTraversabilityMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
-    const GridGeometry& g = options_.geometry;
+    const GridGeometry g = options_.geometry();
     // The plane at the mean ground height of the observed cells, so that voxels sit on it.
     double z_sum = 0;
     std::size_t z_count = 0;
@@ -294,10 +295,9 @@ std::string CTraversabilityMap::asString() const {
     }
     std::ostringstream out;
     out << "CTraversabilityMap: " << grid_.sizeX() << " x " << grid_.sizeY() << " cells of "
-        << options_.geometry.resolution << " m, " << grid_.observedCells() << " observed ("
-        << traversable << " traversable, " << obstacle << " obstacle), OctoMap "
-        << octree_->getNumLeafNodes() << " leaves of " << options_.octomap_resolution << " m, "
-        << frames_inserted_ << " frames";
+        << options_.resolution << " m, " << grid_.observedCells() << " observed (" << traversable
+        << " traversable, " << obstacle << " obstacle), OctoMap " << octree_->getNumLeafNodes()
+        << " leaves of " << options_.octomap_resolution << " m, " << frames_inserted_ << " frames";
     return out.str();
 }
 

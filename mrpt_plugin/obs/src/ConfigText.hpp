@@ -1,49 +1,93 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Text <-> value helpers shared by the option loaders of the filter and the map layer (private
-// to mrpt_plugin). Errors are travel::ConfigError prefixed with `where` ("section [x]: key").
+// The keys of one section of an MRPT CConfigFileBase (as in CMultiMetricMap .ini files), each
+// with where it was written: "<file>:<line>:<col>: section [<name>]: " when the source is a
+// CConfigFile, "section [<name>]: " otherwise. Values are applied by travel::assignFlatKey
+// (travel/ConfigFields.hpp): the same parsing and messages as every other loader.
 #pragma once
 
-#include <cctype>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileBase.h>
 
+#include <string>
+#include <vector>
+
+#include "travel/ConfigFields.hpp"
+#include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
+#include "travel/ParamsIO.hpp"
 
 namespace travel_mrpt::config_text {
 
-inline std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
+struct SectionKey {
+    std::string key, value, where;
+};
 
-/// true/false, yes/no, on/off, 1/0 (any case).
-inline bool parseBool(const std::string& text, const std::string& where) {
-    const std::string v = lower(text);
-    if (v == "true" || v == "yes" || v == "on" || v == "1") return true;
-    if (v == "false" || v == "no" || v == "off" || v == "0") return false;
-    throw travel::ConfigError(where + ": expected true/false, got '" + text + "'");
-}
-
-/// A finite number that is the whole text (no units, no trailing characters).
-inline double parseNumber(const std::string& text, const std::string& where) {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-        throw travel::ConfigError(where + ": expected a number, got '" + text + "'");
-    return v;
-}
-
-/// Shortest decimal text that reads back to exactly `v` (saved configs reload bit-identical).
-inline std::string exactText(double v) {
-    char buf[40];
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v) break;
+inline std::vector<SectionKey> readSection(const mrpt::config::CConfigFileBase& source,
+                                           const std::string& section) {
+    std::vector<travel::IniEntry> lines;
+    std::string file;
+    if (const auto* on_disk = dynamic_cast<const mrpt::config::CConfigFile*>(&source)) {
+        file = on_disk->getAssociatedFile();
+        try {
+            lines = travel::readIni(travel::readConfigFile(file), file);
+        } catch (const travel::ConfigError&) {
+            lines.clear();  // MRPT read it; positions are only a courtesy
+        }
     }
-    return buf;
+    std::vector<std::string> keys;
+    source.getAllKeys(section, keys);
+    std::vector<SectionKey> out;
+    for (const std::string& key : keys) {
+        std::string where = "section [" + section + "]: ";
+        for (const auto& e : lines)
+            if (e.section == section && e.key == key)
+                where = file + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) +
+                        ": " + where;
+        out.push_back({key, source.read_string(section, key, "", true), where});
+    }
+    return out;
+}
+
+/// `preset` first (replacing `params`), then every other key through travel::assignFlatKey on
+/// `sections...`; errors name where the key was written.
+template <class... Sections>
+void applySection(const std::vector<SectionKey>& keys, travel::Params& params,
+                  Sections&... sections) {
+    for (const auto& k : keys) {
+        if (k.key != "preset") continue;
+        try {
+            params = travel::loadPreset(k.value);
+        } catch (const std::exception& e) {
+            throw travel::ConfigError(k.where + "preset: " + e.what());
+        }
+    }
+    for (const auto& k : keys) {
+        if (k.key == "preset") continue;
+        try {
+            travel::assignFlatKey(k.key, k.value, sections..., params);
+        } catch (const std::exception& e) {
+            throw travel::ConfigError(k.where + e.what());
+        }
+    }
+}
+
+/// Every key of `sections...` as `key = value` (shortest exact text; strings as they are, since
+/// MRPT's ini reader keeps quotes).
+template <class... Sections>
+void writeSection(mrpt::config::CConfigFileBase& target, const std::string& section,
+                  const Sections&... sections) {
+    (travel::visitFields(sections,
+                         [&](const char* name, const auto& value, const char* unit, auto&&...) {
+                             using T = travel::fields::Bare<decltype(value)>;
+                             if constexpr (std::is_same_v<T, std::string>) {
+                                 target.write(section, name, value);
+                             } else {
+                                 target.write(section, name,
+                                              travel::fields::formatAny(value, unit));
+                             }
+                         }),
+     ...);
 }
 
 }  // namespace travel_mrpt::config_text

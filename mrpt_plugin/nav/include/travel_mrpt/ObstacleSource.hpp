@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "travel/Config.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/Preprocessing.hpp"
 #include "travel/Result.hpp"
@@ -61,6 +62,11 @@ struct ObstacleMemoryOptions {
     double memory_seconds = 0.0;  ///< [s] how long earlier obstacles are kept (0: no memory)
     double memory_radius = 1.0;   ///< [m] ... while within this xy distance of the robot
 };
+
+/// The nav section's memory keys (travel/Config.hpp declares them once).
+inline ObstacleMemoryOptions obstacleMemoryOptions(const travel::NavSection& nav) {
+    return {nav.memory_seconds, nav.memory_radius};
+}
 
 class ObstacleSource {
   public:

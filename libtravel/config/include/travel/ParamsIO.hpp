@@ -1,17 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Loading Params from text: a small YAML subset and ini, no third-party parser.
-//
-// Accepted syntax (one assignment per line):
-//   # comment          ; comment (ini, at line start)      --- (one YAML document marker)
-//   key: value         key = value                         value may be "quoted" or 'quoted'
-//   [travel]           optional single ini section; any other section is an error
-//   travel:            optional YAML wrapper; the keys are then indented beneath it
-//   preset: vlp16      only as the first key: start from loadPreset("vlp16"), then apply the rest
-// Values: booleans true/false/yes/no/on/off/1/0 (any case); numbers must be the whole string
-// (no units, no NaN/inf); integers must be integral and fit an int. Strings are a bare word or
-// a quoted string and must be one of the parameter's allowed values (any case; stored as listed).
-// Every error is a ConfigError whose message starts with "<source>:<line>: ".
+// Params only (the `travel` section): for callers that run the ground segmentation and nothing
+// else. Every function goes through the one configuration loader (travel/ConfigIO.hpp): same
+// syntax (YAML sections or ini, keys at the root = travel), same per-key rules and messages
+// ("<source>:<line>:<column>: section 'travel': ..."); other sections of a file are checked
+// and ignored. Also where shared data (presets) is found.
 #pragma once
 
 #include <string>

@@ -1,0 +1,169 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Every option of TRAVEL, in four named sections of one configuration (YAML `travel:`,
+// `filter:`, `map:`, `nav:`; ini [travel], [filter], [map], [nav]). Each section is declared
+// once, like Params: X(type, name, default, unit, min, max, description). For std::string and
+// enum options the unit slot lists the allowed values ("a|b|c"; "" = any text) and min/max are
+// unused; an enum's values are listed in declaration order. Each stage receives its own
+// section: the ground segmentation Params, the MRPT filter FilterSection, the map MapSection,
+// the obstacle sources NavSection. Reading files is travel::config's job (ConfigIO.hpp).
+#pragma once
+
+#include <string>
+
+#include "travel/Params.hpp"
+
+namespace travel {
+
+/// Where the sensor velocity used for deskew comes from.
+enum class VelocitySource {
+    Auto,   ///< IMU gyro, else odometry/pose differences; odometry velocity, else pose differences
+    Imu,    ///< measured rates only: IMU gyro + odometry (wheel) velocities, no pose differences
+    Poses,  ///< differences of consecutive robot poses (setRobotPose, odometry poses)
+    None,   ///< no velocity: no deskew
+};
+const char* toString(VelocitySource source);
+/// "auto|imu|poses|none" (exact); throws ConfigError naming the allowed values.
+VelocitySource velocitySourceFromString(const std::string& text);
+
+// The MRPT observation filter (travel_mrpt::TravelFilter), besides the Params it runs with.
+#define TRAVEL_FILTER_LIST(X)                                                                     \
+    X(std::string, sensor_label, ".*", "", 0, 0,                                                  \
+      "ECMAScript regex; only observations whose sensorLabel matches it entirely are processed")  \
+    X(bool, use_sensor_pose, true, "", 0, 1,                                                      \
+      "Take the mount angles (travel.mount_*_deg) from each observation's sensorPose")            \
+    X(bool, use_robot_attitude, true, "", 0, 1,                                                   \
+      "Level each frame with the robot's roll/pitch (IMU or robot pose) when known")              \
+    X(VelocitySource, velocity_source, VelocitySource::Auto, "auto|imu|poses|none", 0, 0,         \
+      "Where the deskew velocity comes from: auto = IMU gyro, else odometry / pose differences; " \
+      "imu = measured rates only; poses = pose differences; none = no deskew")                    \
+    X(double, max_motion_age, 0.5, "s", 0.0, 1e6,                                                 \
+      "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")
+
+// The traversability map (travel_mrpt::CTraversabilityMap): grid, OctoMap, fusion rules.
+#define TRAVEL_MAP_LIST(X)                                                                       \
+    X(double, min_x, -20.0, "m", -1e6, 1e6, "Grid extent, world frame: smallest x")              \
+    X(double, max_x, 20.0, "m", -1e6, 1e6, "Grid extent: largest x")                             \
+    X(double, min_y, -20.0, "m", -1e6, 1e6, "Grid extent: smallest y")                           \
+    X(double, max_y, 20.0, "m", -1e6, 1e6, "Grid extent: largest y")                             \
+    X(double, resolution, 0.2, "m", 1e-6, 1e4, "Side of a grid cell")                            \
+    X(double, octomap_resolution, 0.2, "m", 0.01, 1e4, "Side of an OctoMap voxel")               \
+    X(double, octomap_prob_hit, 0.7, "", 0.5, 1.0,                                               \
+      "OctoMap sensor model: occupancy probability of a hit (in (0.5, 1))")                      \
+    X(double, octomap_prob_miss, 0.4, "", 0.0, 0.5,                                              \
+      "OctoMap sensor model: occupancy probability of a traversed voxel (in (0, 0.5))")          \
+    X(double, max_ray_length, 30.0, "m", 0.0, 1e5,                                               \
+      "Longer rays carve free space up to this length only and mark nothing occupied (> 0)")     \
+    X(int, ray_stride, 2, "", 1, 1000000,                                                        \
+      "Carve free space along every n-th ground ray (obstacle rays are always cast)")            \
+    X(double, obstacle_min_height, 0.25, "m", 0.0, 1e3,                                          \
+      "Non-ground points at least this high above the local ground are obstacles")               \
+    X(double, obstacle_max_height, 2.0, "m", 0.0, 1e3,                                           \
+      "... and, for the 2-D grid, at most this high (the OctoMap keeps higher ones: overhangs)") \
+    X(float, logodds_obstacle, 0.85f, "", 0.0, 100.0,                                            \
+      "Log-odds added to a cell with obstacle points in a frame (> 0)")                          \
+    X(float, logodds_ground, -0.4f, "", -100.0, 0.0,                                             \
+      "Log-odds added to a cell with only ground points in a frame (< 0)")                       \
+    X(float, logodds_min, -2.0f, "", -100.0, 0.0, "Lower clamp of a cell's log-odds (< 0)")      \
+    X(float, logodds_max, 3.5f, "", 0.0, 100.0, "Upper clamp of a cell's log-odds (> 0)")        \
+    X(float, obstacle_threshold, 0.5f, "", 0.0, 100.0,                                           \
+      "Log-odds above this: obstacle (below logodds_max)")                                       \
+    X(float, free_threshold, -0.3f, "", -100.0, 0.0,                                             \
+      "Log-odds below this: ground, traversable if flat (above logodds_min)")                    \
+    X(int, min_obstacle_points, 2, "", 1, 1000000000,                                            \
+      "Obstacle points a cell needs in one frame to count")                                      \
+    X(int, min_step_points, 4, "", 2, 1000000000,                                                \
+      "Ground points a cell needs in one frame to measure a step")                               \
+    X(float, max_step_height, 0.1f, "m", 0.0, 100.0,                                             \
+      "A larger step inside a cell: not traversable (> 0; 0.1 m: what outdoor wheelchairs and "  \
+      "small wheeled robots climb)")                                                             \
+    X(float, max_neighbour_step, 0.0f, "m", 0.0, 100.0,                                          \
+      "A larger step between neighbouring cells' fused ground heights: not traversable (0 = "    \
+      "off; when on, each frame's ground is levelled against the map first)")                    \
+    X(float, max_traversable_slope_deg, 20.0f, "deg", 0.0, 90.0,                                 \
+      "A cell whose terrain model is steeper than this is not traversable (in (0, 90); not "     \
+      "travel.max_slope_deg, which decides what TRAVEL calls terrain)")
+
+// The obstacle sources of the reactive navigator (travel_mrpt::TravelObstacleSource, memory).
+#define TRAVEL_NAV_LIST(X)                                                                   \
+    X(double, max_step_height, 0.15, "m", 0.0, 100.0,                                        \
+      "The robot climbs steps and bumps up to this height: lower ones are not obstacles")    \
+    X(double, max_height, 2.0, "m", 0.0, 1e3,                                                \
+      "Points higher above the local ground than this are ignored (> 0)")                    \
+    X(double, report_floor, 0.15, "m", 0.01, 100.0,                                          \
+      "Points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)") \
+    X(double, ground_search_radius, 3.0, "m", 0.0, 1e4,                                      \
+      "Nearest traversable node searched for the local ground of other nodes' points")       \
+    X(double, step_min_spread, 0.05, "m", 0.0, 100.0,                                        \
+      "The step rule only compares nodes whose ground points spread at least this much in "  \
+      "their second direction")                                                              \
+    X(double, memory_seconds, 0.0, "s", 0.0, 1e6,                                            \
+      "How long earlier obstacles are kept (0: no memory)")                                  \
+    X(double, memory_radius, 1.0, "m", 0.0, 1e6, "... while within this xy distance of the robot")
+
+#define TRAVEL_SECTION_MEMBER(type, name, def, unit, lo, hi, doc) type name = def;
+
+struct FilterSection {
+    TRAVEL_FILTER_LIST(TRAVEL_SECTION_MEMBER)
+    /// Ranges, then the regex and max_motion_age > 0. Throws ConfigError naming the key.
+    void validate() const;
+};
+
+struct MapSection {
+    TRAVEL_MAP_LIST(TRAVEL_SECTION_MEMBER)
+    /// Ranges, then the strict and cross-key rules (min_x < max_x, thresholds inside the
+    /// clamps, at most 16384 cells per side...). Throws ConfigError naming the key.
+    void validate() const;
+};
+
+struct NavSection {
+    TRAVEL_NAV_LIST(TRAVEL_SECTION_MEMBER)
+    void validate() const;
+};
+
+#undef TRAVEL_SECTION_MEMBER
+
+/// The whole configuration: one struct per section.
+struct Config {
+    Params travel;
+    FilterSection filter;
+    MapSection map;
+    NavSection nav;
+    /// Every section's validate(); the message names the section ("map.max_x: ...").
+    void validate() const;
+};
+
+// ---- One visitor for every section: v(name, value_ref, unit, min, max, description) --------
+
+#define TRAVEL_SECTION_VISIT(type, name, def, unit, lo, hi, doc) \
+    v(#name, s.name, unit, static_cast<double>(lo), static_cast<double>(hi), doc);
+#define TRAVEL_DEFINE_VISITOR(Section, LIST, NAME)    \
+    template <class Visitor>                          \
+    void visitFields(Section& s, Visitor&& v) {       \
+        LIST(TRAVEL_SECTION_VISIT)                    \
+    }                                                 \
+    template <class Visitor>                          \
+    void visitFields(const Section& s, Visitor&& v) { \
+        LIST(TRAVEL_SECTION_VISIT)                    \
+    }                                                 \
+    inline const char* sectionName(const Section&) {  \
+        return NAME;                                  \
+    }
+
+TRAVEL_DEFINE_VISITOR(Params, TRAVEL_PARAM_LIST, "travel")
+TRAVEL_DEFINE_VISITOR(FilterSection, TRAVEL_FILTER_LIST, "filter")
+TRAVEL_DEFINE_VISITOR(MapSection, TRAVEL_MAP_LIST, "map")
+TRAVEL_DEFINE_VISITOR(NavSection, TRAVEL_NAV_LIST, "nav")
+#undef TRAVEL_DEFINE_VISITOR
+#undef TRAVEL_SECTION_VISIT
+
+/// f(section) for each section of `config`, in file order (travel, filter, map, nav).
+template <class C, class F>
+void visitSections(C& config, F&& f) {
+    f(config.travel);
+    f(config.filter);
+    f(config.map);
+    f(config.nav);
+}
+
+}  // namespace travel

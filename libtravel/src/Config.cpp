@@ -1,0 +1,94 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/Config.hpp"
+
+#include <cmath>
+#include <regex>
+
+#include "travel/ConfigFields.hpp"
+#include "travel/Errors.hpp"
+
+namespace travel {
+namespace {
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw ConfigError(what);
+}
+
+}  // namespace
+
+const char* toString(VelocitySource source) {
+    switch (source) {
+        case VelocitySource::Auto:
+            return "auto";
+        case VelocitySource::Imu:
+            return "imu";
+        case VelocitySource::Poses:
+            return "poses";
+        case VelocitySource::None:
+            return "none";
+    }
+    return "?";
+}
+
+VelocitySource velocitySourceFromString(const std::string& text) {
+    for (VelocitySource s :
+         {VelocitySource::Auto, VelocitySource::Imu, VelocitySource::Poses, VelocitySource::None})
+        if (text == toString(s)) return s;
+    throw ConfigError("velocity_source must be one of auto|imu|poses|none, got '" + text + "'");
+}
+
+void FilterSection::validate() const {
+    checkRanges(*this);
+    try {
+        std::regex probe(sensor_label, std::regex::ECMAScript);
+    } catch (const std::regex_error& e) {
+        throw ConfigError("sensor_label: invalid regular expression '" + sensor_label +
+                          "': " + e.what());
+    }
+    require(max_motion_age > 0, "max_motion_age must be a finite number > 0 (seconds)");
+}
+
+void MapSection::validate() const {
+    checkRanges(*this);
+    require(min_x < max_x, "min_x/max_x: need min_x < max_x [m]");
+    require(min_y < max_y, "min_y/max_y: need min_y < max_y [m]");
+    require((max_x - min_x) / resolution <= 16384 && (max_y - min_y) / resolution <= 16384,
+            "resolution: the grid would exceed 16384 x 16384 cells (enlarge the resolution or "
+            "shrink the extent)");
+    require(octomap_prob_hit > 0.5 && octomap_prob_hit < 1,
+            "octomap_prob_hit: must be in (0.5, 1)");
+    require(octomap_prob_miss > 0 && octomap_prob_miss < 0.5,
+            "octomap_prob_miss: must be in (0, 0.5)");
+    require(max_ray_length > 0, "max_ray_length: must be > 0 [m]");
+    // OctoMap keys are 16-bit: a ray longer than 32768 voxels would wrap.
+    require(max_ray_length / octomap_resolution < 30000,
+            "max_ray_length: longer than 30000 voxels of octomap_resolution");
+    require(obstacle_max_height > obstacle_min_height,
+            "obstacle_max_height: must be > obstacle_min_height [m]");
+    require(logodds_obstacle > 0, "logodds_obstacle: must be > 0");
+    require(logodds_ground < 0, "logodds_ground: must be < 0");
+    require(logodds_min < 0, "logodds_min: must be < 0");
+    require(logodds_max > 0, "logodds_max: must be > 0");
+    require(obstacle_threshold < logodds_max, "obstacle_threshold: must be in [0, logodds_max)");
+    require(free_threshold > logodds_min, "free_threshold: must be in (logodds_min, 0]");
+    require(max_step_height > 0, "max_step_height: must be > 0 [m]");
+    require(max_traversable_slope_deg > 0 && max_traversable_slope_deg < 90,
+            "max_traversable_slope_deg: must be in (0, 90) [deg]");
+}
+
+void NavSection::validate() const {
+    checkRanges(*this);
+    require(max_height > 0, "max_height: must be > 0 [m]");
+}
+
+void Config::validate() const {
+    visitSections(*this, [](const auto& section) {
+        try {
+            section.validate();
+        } catch (const ConfigError& e) {
+            throw ConfigError("section '" + std::string(sectionName(section)) + "': " + e.what());
+        }
+    });
+}
+
+}  // namespace travel
