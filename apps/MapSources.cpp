@@ -117,8 +117,7 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
     if (pose_file && !pose_file->trajectory.timed()) {
         if (!calib.empty())
-            travel::kittiCameraToLidar(pose_file->trajectory,
-                                            travel::readKittiCalibTr(calib));
+            travel::kittiCameraToLidar(pose_file->trajectory, travel::readKittiCalibTr(calib));
         else
             std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
         if (pose_file->trajectory.size() < files.size())

@@ -20,8 +20,8 @@
 #include "nav/TopView.hpp"
 #include "nav/World.hpp"
 #include "travel/ParamsIO.hpp"
-#include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel/traversability/SectionConversions.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
 
 namespace fs = std::filesystem;
 using namespace travel::navsim;
