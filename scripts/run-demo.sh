@@ -13,7 +13,9 @@ cd "$ROOT_DIR"
 OUT_DIR="$ROOT_DIR/travel-out"
 NAME=test_velodyne_VLP16
 
-"$ROOT_DIR/scripts/setup.sh"
+# Only what the demo runs: the app and the plugin module for RawLogViewer (the test command
+# builds the rest).
+"$ROOT_DIR/scripts/setup.sh" --target travel-rawlog --target travel_mrpt_plugin
 
 dataset=""
 for dir in /usr/share/mrpt/datasets /usr/local/share/mrpt/datasets; do

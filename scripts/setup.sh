@@ -3,8 +3,9 @@
 # targets), then builds the project into ./build (Release, Ninja). Safe to run again: it installs
 # nothing when everything is present and the build is incremental.
 #
-#   scripts/setup.sh             install missing packages, then build
-#   scripts/setup.sh --no-build  install missing packages only
+#   scripts/setup.sh                 install missing packages, then build everything
+#   scripts/setup.sh --target T ...  install missing packages, then build only target(s) T
+#   scripts/setup.sh --no-build      install missing packages only
 set -euo pipefail
 
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -21,12 +22,17 @@ log() { printf '[setup] %s\n' "$*"; }
 die() { printf '[setup] error: %s\n' "$*" >&2; exit 1; }
 
 build=1
-for arg in "$@"; do
-  case "$arg" in
+targets=()
+while (($# > 0)); do
+  case "$1" in
     --no-build) build=0 ;;
-    -h|--help) sed -n '2,7p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) die "unknown option '$arg' (options: --no-build)" ;;
+    --target)
+      (($# > 1)) || die "--target needs a target name (e.g. travel-rawlog)"
+      targets+=(--target "$2"); shift ;;
+    -h|--help) sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option '$1' (options: --no-build, --target NAME)" ;;
   esac
+  shift
 done
 
 # ---- Packages ------------------------------------------------------------------------------
@@ -67,6 +73,6 @@ configure=(cmake -S "$ROOT_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release)
 [[ -f "$BUILD_DIR/CMakeCache.txt" ]] || configure+=(-G Ninja)
 log "configuring: ${configure[*]}"
 "${configure[@]}"
-log "building: cmake --build $BUILD_DIR -j2"
-cmake --build "$BUILD_DIR" -j2
-log "done: tools in $BUILD_DIR/apps (travel-rawlog, travel-kitti)"
+log "building: cmake --build $BUILD_DIR -j2 ${targets[*]}"
+cmake --build "$BUILD_DIR" -j2 "${targets[@]}"
+log "done: built in $BUILD_DIR (tools in $BUILD_DIR/apps)"
