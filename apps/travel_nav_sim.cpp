@@ -20,7 +20,6 @@
 #include "nav/TopView.hpp"
 #include "nav/World.hpp"
 #include "travel/ParamsIO.hpp"
-#include "travel/traversability/SectionConversions.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 
 namespace fs = std::filesystem;
@@ -78,8 +77,7 @@ int run(int argc, char** argv) {
     const SimOptions defaults;
     travel::Config configuration;
     configuration.travel = defaults.travel;
-    configuration.nav.memory_seconds = defaults.memory.memory_seconds;
-    configuration.nav.memory_radius = defaults.memory.memory_radius;
+    configuration.nav = defaults.nav;
     travel::apps::applyConfigSources("", set_arg.getValue(), configuration);
     if (print_config.print(configuration)) return 0;
 
@@ -100,8 +98,7 @@ int run(int argc, char** argv) {
     options.threshold_min_z = threshold_arg.getValue();
     options.verbose = verbose_arg.getValue();
     options.travel = configuration.travel;
-    options.travel_obstacles = travel::travelObstacleOptions(configuration.nav);
-    options.memory = travel_mrpt::obstacleMemoryOptions(configuration.nav);
+    options.nav = configuration.nav;
     const auto footprint = footprintFromConfig(config);
 
     std::cout << "travel-nav-sim: world " << world.name << " (" << world.source << "), navigator "

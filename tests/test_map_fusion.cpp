@@ -55,8 +55,8 @@ class MapFusion : public ::testing::Test {
         const auto& g = map_->grid();
         truth_ = travel_map_test::cellTruth(*scene_, g.geometry().min_x, g.geometry().min_y,
                                             g.sizeX(), g.sizeY(), g.geometry().resolution,
-                                            map_->options().fusion().max_step_height,
-                                            map_->options().fusion().max_slope_deg);
+                                            map_->options().max_step_height,
+                                            map_->options().max_traversable_slope_deg);
     }
     static void TearDownTestSuite() {
         delete map_;

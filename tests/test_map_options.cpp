@@ -38,10 +38,10 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
         "sensor_height=1.1\nsensor_label=VLP.*\n");
     TraversabilityMapOptions o;
     o.loadFromConfigFile(ini, "m");
-    EXPECT_EQ(o.geometry().resolution, 0.5);
-    EXPECT_EQ(o.geometry().min_x, -5.0);
+    EXPECT_EQ(o.resolution, 0.5);
+    EXPECT_EQ(o.min_x, -5.0);
     EXPECT_EQ(o.ray_stride, 3);
-    EXPECT_FLOAT_EQ(o.fusion().max_step_height, 0.2f);
+    EXPECT_FLOAT_EQ(o.max_step_height, 0.2f);
     EXPECT_EQ(o.travel.params.sensor_height, 1.1);
     EXPECT_EQ(o.travel.params.num_rings, 16) << "from the vlp16 preset";
     EXPECT_EQ(o.travel.sensor_label, "VLP.*");
@@ -52,7 +52,7 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
     mrpt::config::CConfigFileMemory reread(saved.getContent());
     TraversabilityMapOptions back;
     back.loadFromConfigFile(reread, "s");
-    EXPECT_EQ(back.geometry().min_x, -5.0);
+    EXPECT_EQ(back.min_x, -5.0);
     EXPECT_EQ(back.ray_stride, 3);
     EXPECT_EQ(back.travel.params.sensor_height, 1.1);
 }
@@ -103,7 +103,7 @@ TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {
     TraversabilityMapOptions o;
     o.loadFromConfigFile(ini, "m");
     EXPECT_EQ(o.resolution, config.map.resolution);
-    EXPECT_EQ(o.fusion().max_slope_deg, config.map.max_traversable_slope_deg);
+    EXPECT_EQ(o.max_traversable_slope_deg, config.map.max_traversable_slope_deg);
     EXPECT_EQ(o.travel.params.max_slope_deg, travel::Params().max_slope_deg)
         << "travel's untouched";
 }
@@ -124,8 +124,8 @@ TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
     map->options().saveToConfigFile(saved, "m");
     travel_mrpt::TraversabilityMapOptions reread;
     reread.loadFromConfigFile(saved, "m");
-    EXPECT_FLOAT_EQ(reread.fusion().max_slope_deg, 20.f);
-    EXPECT_FLOAT_EQ(reread.fusion().max_neighbour_step, 0.1f);
+    EXPECT_FLOAT_EQ(reread.max_traversable_slope_deg, 20.f);
+    EXPECT_FLOAT_EQ(reread.max_neighbour_step, 0.1f);
 
     // An unknown key in the .ini fails the creation with the key and section named.
     mrpt::config::CConfigFileMemory bad(travel_map_test::mapIni("MAP") + "colour=red\n");

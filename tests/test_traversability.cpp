@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "travel/Errors.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel/traversability/TravelObstacles.hpp"
 #include "travel/traversability/TraversabilityGrid.hpp"
@@ -206,9 +207,9 @@ TEST(TravelObstacles, HeightsAreAboveTheLocalGroundInTheLevelledRobotFrame) {
 
     result.labels.pop_back();
     EXPECT_THROW(obstacles.compute(result, aligned, mount, out), std::invalid_argument);
-    travel::TravelObstacleOptions bad;
+    travel::NavSection bad;
     bad.max_height = -1;
-    EXPECT_THROW(obstacles.setOptions(bad), std::invalid_argument);
+    EXPECT_THROW(obstacles.setOptions(bad), travel::ConfigError);
 }
 
 }  // namespace

@@ -185,7 +185,7 @@ std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
     std::unique_ptr<travel_mrpt::ObstacleSource> s;
     switch (o.source) {
         case SourceKind::Travel:
-            s = std::make_unique<travel_mrpt::TravelObstacleSource>(o.travel_obstacles);
+            s = std::make_unique<travel_mrpt::TravelObstacleSource>(o.nav);
             break;
         case SourceKind::Raw:
             s = travel_mrpt::RobotFrameBandSource::raw(o.raw_min_z);
@@ -194,7 +194,7 @@ std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
             s = travel_mrpt::RobotFrameBandSource::heightThreshold(o.threshold_min_z);
             break;
     }
-    s->setMemory(o.memory);
+    s->setMemory(o.nav);
     return s;
 }
 

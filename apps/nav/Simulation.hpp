@@ -19,6 +19,7 @@
 #include <memory>
 #include "nav/World.hpp"
 
+#include "travel/Config.hpp"
 #include "travel/Params.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel_mrpt/ObstacleSource.hpp"
@@ -50,14 +51,19 @@ struct SimOptions {
     /// ground from 0.8 m around the robot.
     sim::LidarModel lidar = defaultLidar();
     travel::Params travel;  ///< set by defaultTravelParams() unless overridden
-    travel_mrpt::TravelObstacleOptions travel_obstacles;
-    travel_mrpt::ObstacleMemoryOptions memory{1.0, 1.0};
+    /// The obstacle source's keys; here with 1 s of memory within 1 m (defaultNav()).
+    travel::NavSection nav = defaultNav();
     double raw_min_z = 0.03;        ///< [m] raw source: noise margin above the robot's base
     double threshold_min_z = 0.25;  ///< [m] height-threshold source
     std::string navlog_file;        ///< write the navigator's .reactivenavlog here (empty: no)
     bool verbose = false;           ///< navigator console output
 
     static sim::LidarModel defaultLidar();
+    static travel::NavSection defaultNav() {
+        travel::NavSection nav;
+        nav.memory_seconds = 1.0, nav.memory_radius = 1.0;
+        return nav;
+    }
     /// TRAVEL for this robot and LiDAR: sensor_height, ranges, 1 m cells, rings from the
     /// elevation table, no object clustering (the navigator needs points, not clusters).
     static travel::Params defaultTravelParams(const sim::LidarModel& lidar, double sensor_height);

@@ -40,49 +40,66 @@ VelocitySource velocitySourceFromString(const std::string& text);
     X(double, max_motion_age, 0.5, "s", 0.0, 1e6,                                                 \
       "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")
 
-// The traversability map (travel_mrpt::CTraversabilityMap): grid, OctoMap, fusion rules.
-#define TRAVEL_MAP_LIST(X)                                                                       \
-    X(double, min_x, -20.0, "m", -1e6, 1e6, "Grid extent, world frame: smallest x")              \
-    X(double, max_x, 20.0, "m", -1e6, 1e6, "Grid extent: largest x")                             \
-    X(double, min_y, -20.0, "m", -1e6, 1e6, "Grid extent: smallest y")                           \
-    X(double, max_y, 20.0, "m", -1e6, 1e6, "Grid extent: largest y")                             \
-    X(double, resolution, 0.2, "m", 1e-6, 1e4, "Side of a grid cell")                            \
-    X(double, octomap_resolution, 0.2, "m", 0.01, 1e4, "Side of an OctoMap voxel")               \
-    X(double, octomap_prob_hit, 0.7, "", 0.5, 1.0,                                               \
-      "OctoMap sensor model: occupancy probability of a hit (in (0.5, 1))")                      \
-    X(double, octomap_prob_miss, 0.4, "", 0.0, 0.5,                                              \
-      "OctoMap sensor model: occupancy probability of a traversed voxel (in (0, 0.5))")          \
-    X(double, max_ray_length, 30.0, "m", 0.0, 1e5,                                               \
-      "Longer rays carve free space up to this length only and mark nothing occupied (> 0)")     \
-    X(int, ray_stride, 2, "", 1, 1000000,                                                        \
-      "Carve free space along every n-th ground ray (obstacle rays are always cast)")            \
-    X(double, obstacle_min_height, 0.25, "m", 0.0, 1e3,                                          \
-      "Non-ground points at least this high above the local ground are obstacles")               \
-    X(double, obstacle_max_height, 2.0, "m", 0.0, 1e3,                                           \
-      "... and, for the 2-D grid, at most this high (the OctoMap keeps higher ones: overhangs)") \
-    X(float, logodds_obstacle, 0.85f, "", 0.0, 100.0,                                            \
-      "Log-odds added to a cell with obstacle points in a frame (> 0)")                          \
-    X(float, logodds_ground, -0.4f, "", -100.0, 0.0,                                             \
-      "Log-odds added to a cell with only ground points in a frame (< 0)")                       \
-    X(float, logodds_min, -2.0f, "", -100.0, 0.0, "Lower clamp of a cell's log-odds (< 0)")      \
-    X(float, logodds_max, 3.5f, "", 0.0, 100.0, "Upper clamp of a cell's log-odds (> 0)")        \
-    X(float, obstacle_threshold, 0.5f, "", 0.0, 100.0,                                           \
-      "Log-odds above this: obstacle (below logodds_max)")                                       \
-    X(float, free_threshold, -0.3f, "", -100.0, 0.0,                                             \
-      "Log-odds below this: ground, traversable if flat (above logodds_min)")                    \
-    X(int, min_obstacle_points, 2, "", 1, 1000000000,                                            \
-      "Obstacle points a cell needs in one frame to count")                                      \
-    X(int, min_step_points, 4, "", 2, 1000000000,                                                \
-      "Ground points a cell needs in one frame to measure a step")                               \
-    X(float, max_step_height, 0.1f, "m", 0.0, 100.0,                                             \
-      "A larger step inside a cell: not traversable (> 0; 0.1 m: what outdoor wheelchairs and "  \
-      "small wheeled robots climb)")                                                             \
-    X(float, max_neighbour_step, 0.0f, "m", 0.0, 100.0,                                          \
-      "A larger step between neighbouring cells' fused ground heights: not traversable (0 = "    \
-      "off; when on, each frame's ground is levelled against the map first)")                    \
-    X(float, max_traversable_slope_deg, 20.0f, "deg", 0.0, 90.0,                                 \
-      "A cell whose terrain model is steeper than this is not traversable (in (0, 90); not "     \
+// The traversability map (travel_mrpt::CTraversabilityMap), in three parts so that each stage
+// takes its own: the grid extent (GridGeometry), the OctoMap and obstacle heights (the map
+// itself), the fusion rules (GridFusionParams, for travel::TraversabilityGrid).
+#define TRAVEL_MAP_GRID_LIST(X)                                                     \
+    X(double, min_x, -20.0, "m", -1e6, 1e6, "Grid extent, world frame: smallest x") \
+    X(double, max_x, 20.0, "m", -1e6, 1e6, "Grid extent: largest x")                \
+    X(double, min_y, -20.0, "m", -1e6, 1e6, "Grid extent: smallest y")              \
+    X(double, max_y, 20.0, "m", -1e6, 1e6, "Grid extent: largest y")                \
+    X(double, resolution, 0.2, "m", 1e-6, 1e4, "Side of a grid cell")
+
+#define TRAVEL_MAP_OCTOMAP_LIST(X)                                                           \
+    X(double, octomap_resolution, 0.2, "m", 0.01, 1e4, "Side of an OctoMap voxel")           \
+    X(double, octomap_prob_hit, 0.7, "", 0.5, 1.0,                                           \
+      "OctoMap sensor model: occupancy probability of a hit (in (0.5, 1))")                  \
+    X(double, octomap_prob_miss, 0.4, "", 0.0, 0.5,                                          \
+      "OctoMap sensor model: occupancy probability of a traversed voxel (in (0, 0.5))")      \
+    X(double, max_ray_length, 30.0, "m", 0.0, 1e5,                                           \
+      "Longer rays carve free space up to this length only and mark nothing occupied (> 0)") \
+    X(int, ray_stride, 2, "", 1, 1000000,                                                    \
+      "Carve free space along every n-th ground ray (obstacle rays are always cast)")        \
+    X(double, obstacle_min_height, 0.25, "m", 0.0, 1e3,                                      \
+      "Non-ground points at least this high above the local ground are obstacles")           \
+    X(double, obstacle_max_height, 2.0, "m", 0.0, 1e3,                                       \
+      "... and, for the 2-D grid, at most this high (the OctoMap keeps higher ones: overhangs)")
+
+// Why these defaults: max_step_height 0.1 m is what outdoor (class C, EN 12184) powered
+// wheelchairs and typical small wheeled robots are built to climb (a 0.15 m kerb is not).
+// max_neighbour_step is off by default: on a moving, pitching robot the frames' residual attitude
+// errors within a sweep (not removed by the per-frame levelling) still make cross-frame height
+// differences exceed 0.1 m over large areas; set it (e.g. to max_step_height) for
+// well-registered maps (see TraversabilityGrid::neighbourStep).
+#define TRAVEL_MAP_FUSION_LIST(X)                                                               \
+    X(float, logodds_obstacle, 0.85f, "", 0.0, 100.0,                                           \
+      "Log-odds added to a cell with obstacle points in a frame (> 0)")                         \
+    X(float, logodds_ground, -0.4f, "", -100.0, 0.0,                                            \
+      "Log-odds added to a cell with only ground points in a frame (< 0)")                      \
+    X(float, logodds_min, -2.0f, "", -100.0, 0.0, "Lower clamp of a cell's log-odds (< 0)")     \
+    X(float, logodds_max, 3.5f, "", 0.0, 100.0, "Upper clamp of a cell's log-odds (> 0)")       \
+    X(float, obstacle_threshold, 0.5f, "", 0.0, 100.0,                                          \
+      "Log-odds above this: obstacle (below logodds_max)")                                      \
+    X(float, free_threshold, -0.3f, "", -100.0, 0.0,                                            \
+      "Log-odds below this: ground, traversable if flat (above logodds_min)")                   \
+    X(int, min_obstacle_points, 2, "", 1, 1000000000,                                           \
+      "Obstacle points a cell needs in one frame to count")                                     \
+    X(int, min_step_points, 4, "", 2, 1000000000,                                               \
+      "Ground points a cell needs in one frame to measure a step")                              \
+    X(float, max_step_height, 0.1f, "m", 0.0, 100.0,                                            \
+      "A larger step inside a cell: not traversable (> 0; 0.1 m: what outdoor wheelchairs and " \
+      "small wheeled robots climb)")                                                            \
+    X(float, max_neighbour_step, 0.0f, "m", 0.0, 100.0,                                         \
+      "A larger step between neighbouring cells' fused ground heights: not traversable (0 = "   \
+      "off; when on, each frame's ground is levelled against the map first)")                   \
+    X(float, max_traversable_slope_deg, 20.0f, "deg", 0.0, 90.0,                                \
+      "A cell whose terrain model is steeper than this is not traversable (in (0, 90); not "    \
       "travel.max_slope_deg, which decides what TRAVEL calls terrain)")
+
+#define TRAVEL_MAP_LIST(X)     \
+    TRAVEL_MAP_GRID_LIST(X)    \
+    TRAVEL_MAP_OCTOMAP_LIST(X) \
+    TRAVEL_MAP_FUSION_LIST(X)
 
 // The obstacle sources of the reactive navigator (travel_mrpt::TravelObstacleSource, memory).
 #define TRAVEL_NAV_LIST(X)                                                                   \
@@ -109,10 +126,28 @@ struct FilterSection {
     void validate() const;
 };
 
-struct MapSection {
-    TRAVEL_MAP_LIST(TRAVEL_SECTION_MEMBER)
-    /// Ranges, then the strict and cross-key rules (min_x < max_x, thresholds inside the
-    /// clamps, at most 16384 cells per side...). Throws ConfigError naming the key.
+/// The map's grid extent and cell size, world frame. Cell (ix, iy) covers
+/// [min_x + ix * resolution, min_x + (ix + 1) * resolution) and likewise in y.
+struct GridGeometry {
+    TRAVEL_MAP_GRID_LIST(TRAVEL_SECTION_MEMBER)
+    int sizeX() const;
+    int sizeY() const;
+    /// Ranges, min < max and at most 16384 x 16384 cells. Throws ConfigError naming the key.
+    void validate() const;
+};
+
+/// How the map fuses frames into cells (travel::TraversabilityGrid).
+struct GridFusionParams {
+    TRAVEL_MAP_FUSION_LIST(TRAVEL_SECTION_MEMBER)
+    /// Ranges, then strict signs and thresholds inside the clamps. Throws ConfigError.
+    void validate() const;
+};
+
+/// The whole map section: the grid's two parts and the OctoMap / obstacle-height keys.
+struct MapSection : GridGeometry, GridFusionParams {
+    TRAVEL_MAP_OCTOMAP_LIST(TRAVEL_SECTION_MEMBER)
+    /// The parts' rules, then the OctoMap ranges and the cross-key rules (obstacle heights,
+    /// ray length in voxels). Throws ConfigError naming the key.
     void validate() const;
 };
 
@@ -152,6 +187,8 @@ struct Config {
 
 TRAVEL_DEFINE_VISITOR(Params, TRAVEL_PARAM_LIST, "travel")
 TRAVEL_DEFINE_VISITOR(FilterSection, TRAVEL_FILTER_LIST, "filter")
+TRAVEL_DEFINE_VISITOR(GridGeometry, TRAVEL_MAP_GRID_LIST, "map")
+TRAVEL_DEFINE_VISITOR(GridFusionParams, TRAVEL_MAP_FUSION_LIST, "map")
 TRAVEL_DEFINE_VISITOR(MapSection, TRAVEL_MAP_LIST, "map")
 TRAVEL_DEFINE_VISITOR(NavSection, TRAVEL_NAV_LIST, "nav")
 #undef TRAVEL_DEFINE_VISITOR

@@ -8,18 +8,13 @@
 
 namespace travel {
 
-TravelObstacles::TravelObstacles(const TravelObstacleOptions& options) {
+TravelObstacles::TravelObstacles(const NavSection& options) {
     setOptions(options);
 }
 
-void TravelObstacles::setOptions(const TravelObstacleOptions& o) {
-    if (!(o.max_step_height >= 0) || !(o.max_height > 0) || !(o.report_floor >= 0.01) ||
-        !(o.ground_search_radius >= 0) || !(o.step_min_spread >= 0))
-        throw std::invalid_argument(
-            "travel obstacles: need max_step_height >= 0, max_height > 0, report_floor >= "
-            "0.01 m (the navigator drops lower points), ground_search_radius >= 0, step_min_spread "
-            ">= 0");
-    options_ = o;
+void TravelObstacles::setOptions(const NavSection& options) {
+    options.validate();
+    options_ = options;
 }
 
 void TravelObstacles::findGroundNodes(const TerrainModel& t) {

@@ -5,11 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <string>
 
 #include <Eigen/Dense>
-
-#include "travel/Errors.hpp"
 
 namespace travel {
 namespace {
@@ -25,48 +22,7 @@ constexpr double kCorrectionGates[] = {kCorrectionGate0, 0.3, 0.1, 0.05};
 constexpr int kStepRadius = 2;           ///< [cells] neighbourhood of the step rule
 constexpr float kMaxPairDistance = 4.f;  ///< [cells] farthest pair of the step rule
 
-void require(bool ok, const std::string& what) {
-    if (!ok) throw travel::ConfigError(what);
-}
-
 }  // namespace
-
-int GridGeometry::sizeX() const {
-    return static_cast<int>(std::ceil((max_x - min_x) / resolution - 1e-9));
-}
-int GridGeometry::sizeY() const {
-    return static_cast<int>(std::ceil((max_y - min_y) / resolution - 1e-9));
-}
-
-void GridGeometry::validate() const {
-    require(std::isfinite(min_x) && std::isfinite(max_x) && min_x < max_x,
-            "min_x/max_x: need finite min_x < max_x [m]");
-    require(std::isfinite(min_y) && std::isfinite(max_y) && min_y < max_y,
-            "min_y/max_y: need finite min_y < max_y [m]");
-    require(std::isfinite(resolution) && resolution > 0, "resolution: must be > 0 [m]");
-    require((max_x - min_x) / resolution <= 16384 && (max_y - min_y) / resolution <= 16384,
-            "resolution: the grid would exceed 16384 x 16384 cells (enlarge the resolution or "
-            "shrink the extent)");
-}
-
-void GridFusionParams::validate() const {
-    require(std::isfinite(logodds_obstacle) && logodds_obstacle > 0,
-            "logodds_obstacle: must be > 0");
-    require(std::isfinite(logodds_ground) && logodds_ground < 0, "logodds_ground: must be < 0");
-    require(std::isfinite(logodds_min) && logodds_min < 0, "logodds_min: must be < 0");
-    require(std::isfinite(logodds_max) && logodds_max > 0, "logodds_max: must be > 0");
-    require(obstacle_threshold >= 0 && obstacle_threshold < logodds_max,
-            "obstacle_threshold: must be in [0, logodds_max)");
-    require(free_threshold <= 0 && free_threshold > logodds_min,
-            "free_threshold: must be in (logodds_min, 0]");
-    require(min_obstacle_points >= 1, "min_obstacle_points: must be >= 1");
-    require(min_step_points >= 2, "min_step_points: must be >= 2");
-    require(std::isfinite(max_step_height) && max_step_height > 0,
-            "max_step_height: must be > 0 [m]");
-    require(std::isfinite(max_neighbour_step) && max_neighbour_step >= 0,
-            "max_neighbour_step: must be >= 0 [m] (0 = off)");
-    require(max_slope_deg > 0 && max_slope_deg < 90, "max_slope_deg: must be in (0, 90) [deg]");
-}
 
 const char* toString(CellState state) {
     switch (state) {
@@ -255,13 +211,13 @@ float TraversabilityGrid::neighbourStep(long cell, const GridFusionParams& fusio
     if (cell < 0 || std::size_t(cell) >= logodds_.size()) return 0.f;
     const int ix = int(cell % size_x_), iy = int(cell / size_x_);
     const float r = float(geometry_.resolution);
-    const float max_slope = std::min(fusion.max_slope_deg, 80.f);
+    const float max_slope = std::min(fusion.max_traversable_slope_deg, 80.f);
     const float max_grade = std::tan(max_slope * kDegToRad);
     // The rise a slope explains between cells a and b (offsets (dxa, dya), (dxb, dyb) from this
     // cell): the steeper of the height gradients just OUTSIDE the pair (a against the reference
-    // one step further from b, and likewise for b), capped at max_slope_deg, times their
-    // distance. On a ramp, its foot or its top the outer cells continue the gradient; beside a
-    // kerb they are flat. Without an outer reference, the pair's mean terrain-model slope (that
+    // one step further from b, and likewise for b), capped at max_traversable_slope_deg, times
+    // their distance. On a ramp, its foot or its top the outer cells continue the gradient; beside
+    // a kerb they are flat. Without an outer reference, the pair's mean terrain-model slope (that
     // one is biased near a kerb: TRAVEL nodes straddling it fit planes tilted ~10 degrees).
     const auto rise = [&](long a, int dxa, int dya, long b, int dxb, int dyb) {
         const int ux = (dxb > dxa) - (dxb < dxa), uy = (dyb > dya) - (dyb < dya);  // a -> b
@@ -346,7 +302,8 @@ CellState TraversabilityGrid::state(long cell, const GridFusionParams& fusion) c
     if (l >= fusion.free_threshold) return CellState::Unknown;
     if (step_height_[cell] > fusion.max_step_height) return CellState::Obstacle;
     const float slope = slopeDeg(cell);
-    if (std::isfinite(slope) && slope > fusion.max_slope_deg) return CellState::Obstacle;
+    if (std::isfinite(slope) && slope > fusion.max_traversable_slope_deg)
+        return CellState::Obstacle;
     return CellState::Traversable;
 }
 

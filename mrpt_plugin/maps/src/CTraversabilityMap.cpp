@@ -105,7 +105,6 @@ CTraversabilityMap::~CTraversabilityMap() = default;
 void CTraversabilityMap::setOptions(const TraversabilityMapOptions& options) {
     options.validate();
     options_ = options;
-    fusion_ = options_.fusion();
     filter_->setOptions(options_.travel);
     internal_clear();
 }
@@ -117,7 +116,7 @@ void CTraversabilityMap::resetOctree() {
 }
 
 void CTraversabilityMap::internal_clear() {
-    grid_.reset(options_.geometry());
+    grid_.reset(options_);
     resetOctree();
     filter_->reset();
     frames_inserted_ = 0;
@@ -125,7 +124,7 @@ void CTraversabilityMap::internal_clear() {
 }
 
 CellState CTraversabilityMap::stateAt(double x, double y) const {
-    return grid_.state(grid_.cellIndex(x, y), fusion_);
+    return grid_.state(grid_.cellIndex(x, y), options_);
 }
 
 bool CTraversabilityMap::internal_insertObservation(
@@ -206,7 +205,7 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         if (height <= max_h) grid_.addObstacle(pw.x(), pw.y());
         endKey(pw, s.obstacle_ends);
     }
-    grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), fusion_);
+    grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), options_);
 
     // OctoMap: one ray per distinct end voxel (not per point), free voxels deduplicated, then
     // each voxel updated once: hits occupied, traversed voxels free unless hit in this frame.
@@ -265,7 +264,7 @@ const mrpt::maps::CSimplePointsMap* CTraversabilityMap::getAsSimplePointsMap() c
 }
 
 void CTraversabilityMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
-    const GridGeometry g = options_.geometry();
+    const GridGeometry& g = options_;
     // The plane at the mean ground height of the observed cells, so that voxels sit on it.
     double z_sum = 0;
     std::size_t z_count = 0;

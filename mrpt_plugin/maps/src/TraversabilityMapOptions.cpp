@@ -4,17 +4,8 @@
 #include "ConfigText.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
-#include "travel/traversability/SectionConversions.hpp"
 
 namespace travel_mrpt {
-
-GridGeometry TraversabilityMapOptions::geometry() const {
-    return travel::gridGeometry(*this);
-}
-
-GridFusionParams TraversabilityMapOptions::fusion() const {
-    return travel::gridFusionParams(*this);
-}
 
 void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                                   const std::string& section) {
@@ -49,8 +40,6 @@ void TraversabilityMapOptions::loadFromFile(const std::string& path) {
 
 void TraversabilityMapOptions::validate() const {
     map().validate();
-    geometry().validate();
-    fusion().validate();
     travel.params.validate();
     travel.validate();
 }

@@ -5,16 +5,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
 
 namespace travel_mrpt {
 
-void ObstacleSource::setMemory(const ObstacleMemoryOptions& memory) {
-    if (!(memory.memory_seconds >= 0.0) || !(memory.memory_radius >= 0.0))
-        throw std::invalid_argument(
-            "obstacle memory: memory_seconds and memory_radius must be >= 0");
+void ObstacleSource::setMemory(const travel::NavSection& nav) {
+    nav.validate();
     std::lock_guard<std::mutex> lock(update_mutex_);
-    memory_ = memory;
+    memory_ = nav;
     past_.clear();
 }
 

@@ -59,7 +59,7 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     const TraversabilityGrid& grid() const { return grid_; }
     /// State of the cell holding world (x, y); Unknown outside the grid.
     CellState stateAt(double x, double y) const;
-    CellState state(long cell) const { return grid_.state(cell, fusion_); }
+    CellState state(long cell) const { return grid_.state(cell, options_); }
     const octomap::OcTree& octree() const { return *octree_; }
 
     /// The filter that segments each observation: feed it IMU / odometry (processImu...) in
@@ -106,7 +106,6 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     void resetOctree();
 
     TraversabilityMapOptions options_;
-    GridFusionParams fusion_;  // options_.fusion(), converted once
     TraversabilityGrid grid_;
     std::unique_ptr<octomap::OcTree> octree_;
     std::unique_ptr<TravelFilter> filter_;

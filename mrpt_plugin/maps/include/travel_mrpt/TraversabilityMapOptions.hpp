@@ -1,7 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
 // Options of CTraversabilityMap: the map section (travel::MapSection: grid geometry, OctoMap,
-// fusion rules; keys, units and documentation in travel/Config.hpp) and the TRAVEL filter
+// fusion rules; keys, units and documentation in travel/Config.hpp; the grid takes its
+// GridGeometry and GridFusionParams parts directly) and the TRAVEL filter
 // (TravelFilterOptions: `preset`, every libtravel parameter, the filter keys).
 // Read from an ini section; in a CMultiMetricMap .ini both sections of the map,
 // [<prefix>_creationOpts] and [<prefix>_insertOpts], accept every key of the map, filter and
@@ -30,8 +31,6 @@ using travel::TraversabilityGrid;
 struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public travel::MapSection {
     TravelFilterOptions travel;
 
-    GridGeometry geometry() const;
-    GridFusionParams fusion() const;
     travel::MapSection& map() { return *this; }
     const travel::MapSection& map() const { return *this; }
 

@@ -58,24 +58,16 @@ struct ObstaclePoints : travel::ObstaclePointCloud {
     mrpt::Clock::time_point timestamp{};
 };
 
-struct ObstacleMemoryOptions {
-    double memory_seconds = 0.0;  ///< [s] how long earlier obstacles are kept (0: no memory)
-    double memory_radius = 1.0;   ///< [m] ... while within this xy distance of the robot
-};
-
-/// The nav section's memory keys (travel/Config.hpp declares them once).
-inline ObstacleMemoryOptions obstacleMemoryOptions(const travel::NavSection& nav) {
-    return {nav.memory_seconds, nav.memory_radius};
-}
-
 class ObstacleSource {
   public:
     virtual ~ObstacleSource() = default;
     /// Short name for logs and file names ("travel", "raw", "threshold").
     virtual std::string name() const = 0;
 
-    void setMemory(const ObstacleMemoryOptions& memory);
-    const ObstacleMemoryOptions& memory() const { return memory_; }
+    /// The nav section's memory keys (memory_seconds, memory_radius); forgets what was kept.
+    /// NavSection::validate() first: throws travel::ConfigError naming the key.
+    void setMemory(const travel::NavSection& nav);
+    const travel::NavSection& memory() const { return memory_; }
 
     /// Sensor side: computes the obstacles of `frame` and publishes them. Throws
     /// std::invalid_argument when the frame lacks what the source needs (no cloud for the
@@ -100,7 +92,7 @@ class ObstacleSource {
     };
     void addMemory(const ObstacleFrame& frame, ObstaclePoints& out);
 
-    ObstacleMemoryOptions memory_;
+    travel::NavSection memory_;
     std::mutex update_mutex_;            // one update() at a time
     ObstaclePoints work_;                // written by update() only
     std::deque<Remembered> past_;        // written by update() only

@@ -10,16 +10,14 @@
 
 namespace travel_mrpt {
 
-using travel::TravelObstacleOptions;
-
 class TravelObstacleSource : public ObstacleSource {
   public:
-    explicit TravelObstacleSource(const TravelObstacleOptions& options = {})
-        : obstacles_(options) {}
+    /// The nav section's obstacle keys (travel::TravelObstacles); the memory: setMemory().
+    explicit TravelObstacleSource(const travel::NavSection& options = {}) : obstacles_(options) {}
     std::string name() const override { return "travel"; }
-    const TravelObstacleOptions& options() const { return obstacles_.options(); }
-    /// Throws std::invalid_argument on negative heights or radius.
-    void setOptions(const TravelObstacleOptions& options) { obstacles_.setOptions(options); }
+    const travel::NavSection& options() const { return obstacles_.options(); }
+    /// Throws travel::ConfigError naming the key (NavSection::validate).
+    void setOptions(const travel::NavSection& options) { obstacles_.setOptions(options); }
 
   protected:
     void compute(const ObstacleFrame& frame, ObstaclePoints& out) override;

@@ -34,23 +34,12 @@
 #include <cstddef>
 #include <vector>
 
+#include "travel/Config.hpp"
 #include "travel/Preprocessing.hpp"
 #include "travel/Result.hpp"
 #include "travel/TerrainModel.hpp"
 
 namespace travel {
-
-struct TravelObstacleOptions {
-    double max_step_height = 0.15;  ///< [m] the robot climbs steps and bumps up to this height
-    double max_height = 2.0;        ///< [m] ignore points higher above the ground than this
-    /// [m] points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)
-    double report_floor = 0.15;
-    double ground_search_radius = 3.0;  ///< [m] nearest traversable node for other nodes' points
-    /// [m] the step rule only compares nodes whose ground points spread at least this much
-    /// (standard deviation) in their second direction: the plane of one ring's arc or of a
-    /// small patch is not known away from its points
-    double step_min_spread = 0.05;
-};
 
 /// Robot-centric obstacle points (x forward, y left, z up; metres), structure of arrays.
 struct ObstaclePointCloud {
@@ -64,10 +53,12 @@ struct ObstaclePointCloud {
 
 class TravelObstacles {
   public:
-    explicit TravelObstacles(const TravelObstacleOptions& options = {});
-    const TravelObstacleOptions& options() const { return options_; }
-    /// Throws std::invalid_argument on negative heights or radius.
-    void setOptions(const TravelObstacleOptions& options);
+    /// The nav section's obstacle keys (max_step_height ... step_min_spread; the memory keys are
+    /// the obstacle source's).
+    explicit TravelObstacles(const NavSection& options = {});
+    const NavSection& options() const { return options_; }
+    /// NavSection::validate(), then keeps `options`. Throws ConfigError naming the key.
+    void setOptions(const NavSection& options);
 
     /// Appends the obstacles of one frame to `out`, in the levelled robot frame (xy from the
     /// robot origin, z above the local ground). `aligned` is the cloud `result` labels (same
@@ -80,7 +71,7 @@ class TravelObstacles {
     void findGroundNodes(const TerrainModel& terrain);
     void findSteps(const TerrainModel& terrain);
 
-    TravelObstacleOptions options_;
+    NavSection options_;
     std::vector<int> ground_node_;    // per node: node whose ground is its reference (-1 none)
     std::vector<float> step_height_;  // per node: step above a neighbour (0 = none)
 };

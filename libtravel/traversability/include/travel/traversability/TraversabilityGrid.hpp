@@ -6,6 +6,10 @@
 // not outvote far ones), ground height statistics, slope from the TRAVEL terrain model and the
 // step height seen inside the cell.
 //
+// It takes the two parts of the map section that concern it (travel/Config.hpp declares every
+// key once): GridGeometry (extent, cell size) and GridFusionParams (fusion rules); a
+// travel::MapSection is both.
+//
 //   grid.reset(geometry);
 //   per frame: grid.beginFrame(); grid.addGround(x, y, z, slope_deg) ...;
 //              grid.addObstacle(x, y) ...; grid.endFrame(time_s, fusion);
@@ -16,47 +20,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "travel/Config.hpp"
+
 namespace travel {
-
-/// Extent and cell size of the grid, world frame [m]. Cell (ix, iy) covers
-/// [min_x + ix * resolution, min_x + (ix + 1) * resolution) and likewise in y.
-struct GridGeometry {
-    double min_x = -20.0, max_x = 20.0;  ///< [m]
-    double min_y = -20.0, max_y = 20.0;  ///< [m]
-    double resolution = 0.2;             ///< [m] cell side
-
-    int sizeX() const;
-    int sizeY() const;
-    /// Throws travel::ConfigError unless min < max, resolution > 0 and the grid has at most
-    /// 16384 x 16384 cells.
-    void validate() const;
-};
-
-/// How frames are fused into cells (all configurable from the map's .ini sections).
-struct GridFusionParams {
-    float logodds_obstacle = 0.85f;   ///< added to a cell with obstacle points in a frame
-    float logodds_ground = -0.4f;     ///< added to a cell with only ground points in a frame
-    float logodds_min = -2.0f;        ///< clamp (lower)
-    float logodds_max = 3.5f;         ///< clamp (upper)
-    float obstacle_threshold = 0.5f;  ///< log-odds above this: obstacle
-    float free_threshold = -0.3f;     ///< log-odds below this: ground (traversable if flat)
-    int min_obstacle_points = 2;      ///< obstacle points a cell needs in one frame to count
-    int min_step_points = 4;          ///< ground points a cell needs in one frame for a step
-    /// [m] a larger step inside a cell or between neighbouring cells' fused ground: not
-    /// traversable. 0.1 m: what outdoor (class C, EN 12184) powered wheelchairs and typical
-    /// small wheeled robots are built to climb; a 0.15 m kerb is not climbable.
-    float max_step_height = 0.1f;
-    float max_slope_deg = 20.0f;  ///< [deg] a steeper terrain model: not traversable
-    /// [m] a larger step between the fused ground heights of neighbouring cells (across frames,
-    /// see TraversabilityGrid::neighbourStep): not traversable. 0 = off, the default: on a
-    /// moving, pitching robot the frames' residual attitude errors within a sweep (not removed
-    /// by the per-frame levelling) still make cross-frame height differences exceed 0.1 m over
-    /// large areas; set it (e.g. to max_step_height) for well-registered maps.
-    float max_neighbour_step = 0.0f;
-
-    /// Throws travel::ConfigError on inconsistent values (naming the key).
-    void validate() const;
-};
 
 enum class CellState : uint8_t {
     Unknown = 0,      ///< never observed, or evidence below both thresholds
@@ -119,7 +85,8 @@ class TraversabilityGrid {
     /// an axis or a diagonal, at most 4 cells apart) when this cell has no ground or its height
     /// lies in the middle half between theirs (it holds both levels). Each minus the rise the
     /// terrain explains over the pair's distance: the steepest height gradient measured just
-    /// outside the pair (1 and 2 cells beyond each end, along the pair), capped at max_slope_deg,
+    /// outside the pair (1 and 2 cells beyond each end, along the pair), capped at
+    /// max_traversable_slope_deg,
     /// else the pair's mean terrain-model slope; so a ramp, its foot and its top are not steps,
     /// while beside a kerb the outer cells are flat (the terrain-model slope is not used there:
     /// TRAVEL nodes straddling a kerb fit planes tilted ~10 degrees). With max_neighbour_step > 0
