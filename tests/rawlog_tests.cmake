@@ -20,3 +20,9 @@ set_tests_properties(apps.travel_rawlog_cli PROPERTIES TIMEOUT 300)
 # The one rawlog reader of travel-rawlog and travel-map: records, exact error messages, motion.
 travel_mrpt_test(test_rawlog_reader test_rawlog_reader.cpp)
 target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::io mrpt::serialization)
+
+# Velodyne .pcap captures (MRPT's CVelodyneScanner) when mrpt-hwdrivers is installed.
+if(TARGET travel_mrpt_hwdrivers)
+  travel_mrpt_test(test_pcap_source test_pcap_source.cpp)
+  target_link_libraries(test_pcap_source PRIVATE travel::mrpt_hwdrivers)
+endif()
