@@ -153,6 +153,9 @@ PcapSource::PcapSource(const std::string& path, const PcapSourceOptions& options
     if (fs::is_directory(path, ec)) throw travel::InputError(path + ": is a directory, not a pcap");
 
     model_ = velodyneModelName(options.model);
+    if (options.model.empty())
+        throw travel::InputError(path + ": the Velodyne model of the capture is needed (" +
+                                 kVelodynePcapModels + ")");
     if (model_.empty())
         throw travel::InputError(path + ": unknown Velodyne model '" + options.model +
                                  "' (allowed: " + kVelodynePcapModels + ")");
