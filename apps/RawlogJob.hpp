@@ -89,6 +89,7 @@ struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
     bool print_config = false;
     std::string input, output, config, preset, sensor_label_regex, png_prefix, csv, label_reference;
+    std::string pcap_model, pcap_calibration;  // .pcap inputs
     bool plain_clouds = true;
     std::vector<std::string> overrides;
     bool quiet = false;

@@ -49,6 +49,9 @@
 #include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
+#ifdef TRAVEL_WITH_PCAP
+#include "travel_mrpt/RecordReader.hpp"
+#endif
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -117,8 +120,12 @@ Options parseCommandLine(int argc, char** argv) {
         "taken from each observation's sensorPose (unless --ignore-sensor-pose). Exit status: 0 "
         "on success, 1 on any error.",
         ' ', "0.1");
-    TCLAP::ValueArg<std::string> input("i", "input", "Input rawlog (.rawlog, gzip or plain)", true,
-                                       "", "IN.rawlog", cmd);
+    TCLAP::ValueArg<std::string> input(
+        "i", "input",
+        "Input rawlog (.rawlog, gzip or plain) or Velodyne capture (.pcap, or a file starting "
+        "with the libpcap magic number; read through MRPT's CVelodyneScanner, one "
+        "CObservationVelodyneScan labelled VELODYNE per full rotation)",
+        true, "", "IN.rawlog|IN.pcap", cmd);
     TCLAP::ValueArg<std::string> output("o", "output",
                                         "Output rawlog (gzip-compressed); written to OUT.part "
                                         "and renamed when complete",
@@ -143,6 +150,16 @@ Options parseCommandLine(int argc, char** argv) {
         "(<label>_travel, _ground, _nonground, _outlier) are never re-processed; when the "
         "input already has them (an earlier output) they are replaced.",
         false, "", "REGEX", cmd);
+    TCLAP::ValueArg<std::string> pcap_model(
+        "", "pcap-model",
+        "Velodyne model of a .pcap input: VLP16, HDL32 or HDL64 (default: from --preset "
+        "vlp16/hdl32/hdl64)",
+        false, "", "MODEL", cmd);
+    TCLAP::ValueArg<std::string> pcap_calibration(
+        "", "pcap-calibration",
+        "The sensor's own calibration XML (Velodyne db.xml) for a .pcap input (default: the "
+        "model's built-in table; MRPT 2.5.8 has none for HDL64, so HDL-64E captures need it)",
+        false, "", "FILE.xml", cmd);
     TCLAP::ValueArg<std::string> png("", "png",
                                      "Write PREFIX_<frame>.png and PREFIX_<frame>.ply per frame "
                                      "(directories are created)",
@@ -185,6 +202,8 @@ Options parseCommandLine(int argc, char** argv) {
     o.preset = preset.getValue();
     o.overrides = set.getValue();
     o.sensor_label_regex = label.getValue();
+    o.pcap_model = pcap_model.getValue().empty() ? o.preset : pcap_model.getValue();
+    o.pcap_calibration = pcap_calibration.getValue();
     o.png_prefix = png.getValue();
     o.png_metres_per_pixel = png_mpp.getValue();
     o.png_size = png_size.getValue();
@@ -201,6 +220,27 @@ Options parseCommandLine(int argc, char** argv) {
     if (o.png_size < 64 || o.png_size > 8192) throw AppError("--png-size must be in [64, 8192]");
     return o;
 }
+
+#ifdef TRAVEL_WITH_PCAP
+travel_mrpt::RecordReader openInput(const Options& o) {
+    travel_mrpt::PcapSourceOptions pcap;
+    pcap.model = o.pcap_model;
+    pcap.calibration_file = o.pcap_calibration;
+    if (travel_mrpt::isPcapFile(o.input) && travel_mrpt::velodyneModelName(pcap.model).empty())
+        throw AppError(o.input + ": a Velodyne capture needs its model: --pcap-model " +
+                       "VLP16|HDL32|HDL64 or --preset vlp16|hdl32|hdl64" +
+                       (pcap.model.empty() ? "" : " (not '" + pcap.model + "')"));
+    if (travel_mrpt::isPcapFile(o.input) && travel_mrpt::velodyneModelName(pcap.model) == "HDL64" &&
+        pcap.calibration_file.empty())
+        throw AppError(o.input + ": an HDL-64E capture needs the sensor's calibration: " +
+                       "--pcap-calibration db.xml (MRPT 2.5.8 has no usable HDL64 default)");
+    return travel_mrpt::RecordReader(o.input, pcap);
+}
+#else
+travel_mrpt::RawlogReader openInput(const Options& o) {
+    return travel_mrpt::RawlogReader(o.input);  // built without mrpt-hwdrivers: no .pcap
+}
+#endif
 
 travel::Config loadConfiguration(const Options& o) {
     travel::Config config = travel::apps::loadAppConfig(o.preset, o.config, o.overrides);
@@ -235,7 +275,7 @@ int run(int argc, char** argv) {
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");
 
-    travel_mrpt::RawlogReader reader(options.input);
+    auto reader = openInput(options);
     RawlogSegmenter segmenter(options, filter_options);
 
     createParentDirectory(options.output);

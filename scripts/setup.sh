@@ -14,6 +14,7 @@ PACKAGES=(
   libyaml-cpp-dev
   cmake ninja-build g++ pkg-config
   libeigen3-dev libmrpt-maps-dev libmrpt-nav-dev libmrpt-gui-dev libmrpt-tclap-dev
+  libmrpt-hwdrivers-dev
   liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev
   clang libclang-rt-14-dev
 )

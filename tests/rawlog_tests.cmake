@@ -20,3 +20,20 @@ set_tests_properties(apps.travel_rawlog_cli PROPERTIES TIMEOUT 300)
 # The one rawlog reader of travel-rawlog and travel-map: records, exact error messages, motion.
 travel_mrpt_test(test_rawlog_reader test_rawlog_reader.cpp)
 target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::io mrpt::serialization)
+
+# Velodyne .pcap captures (MRPT's CVelodyneScanner) when mrpt-hwdrivers is installed.
+if(TARGET travel_mrpt_hwdrivers)
+  travel_mrpt_test(test_pcap_source test_pcap_source.cpp)
+  target_link_libraries(test_pcap_source PRIVATE travel::mrpt_hwdrivers)
+endif()
+if(TARGET travel_mrpt_hwdrivers)
+  add_test(NAME apps.travel_rawlog_pcap_cli
+    COMMAND ${CMAKE_COMMAND}
+      -DTRAVEL_RAWLOG=$<TARGET_FILE:travel-rawlog>
+      -DREADER=$<TARGET_FILE:travel_plugin_roundtrip_reader>
+      -DPLUGIN=$<TARGET_FILE:travel_mrpt_plugin>
+      -DDATA_DIR=${TRAVEL_DATA_DIR}
+      -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_rawlog_pcap
+      -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog_pcap.cmake)
+  set_tests_properties(apps.travel_rawlog_pcap_cli PROPERTIES TIMEOUT 300)
+endif()
