@@ -97,6 +97,61 @@ struct PrintConfigFlag {
     }
 };
 
+/// The configuration flags of the apps, one dialect: -p/--preset NAME, -c/--config FILE,
+/// --set [SECTION.]KEY=VALUE (repeatable), --print-config. load() applies them in that order on
+/// top of `defaults` (preset, file, each --set, then the cross-key checks).
+struct ConfigFlags {
+    mutable TCLAP::ValueArg<std::string> preset;  // TCLAP's getValue() is not const
+    mutable TCLAP::ValueArg<std::string> config;
+    mutable TCLAP::MultiArg<std::string> set;
+    PrintConfigFlag print_config;
+
+    /// `default_preset`: "" starts from the built-in defaults (HDL-64E on KITTI).
+    ConfigFlags(TCLAP::CmdLine& cmd, const std::string& default_preset)
+        : preset("p", "preset",
+                 "Sensor preset from share/presets (" + presetNames() + "), applied first" +
+                     (default_preset.empty() ? "" : " (default " + default_preset + ")"),
+                 false, default_preset, "NAME", cmd),
+          config("c", "config",
+                 "Configuration file applied after the preset: YAML with the sections travel:, "
+                 "filter:, map:, nav: (keys at the root are travel's), or ini with [travel] ... "
+                 "[nav] (docs/parameters.md)",
+                 false, "", "FILE", cmd),
+          set("", "set",
+              "Set one key, applied last (repeatable): KEY=VALUE or SECTION.KEY=VALUE, e.g. "
+              "--set sensor_height=1.9 --set map.resolution=0.25",
+              false, "[SECTION.]KEY=VALUE", cmd),
+          print_config(cmd) {}
+
+    Config load(Config defaults = {}) const {
+        if (!preset.getValue().empty())
+            applyConfigFile(findPresetFile(preset.getValue()), defaults);
+        applyConfigSources(config.getValue(), set.getValue(), defaults);
+        return defaults;
+    }
+    /// Prints the configuration and returns true when --print-config was given.
+    bool print(const Config& configuration) const { return print_config.print(configuration); }
+    /// "preset P, config F, K=V, ..." for reports.
+    std::string describe() const {
+        std::string text = "preset " + (preset.getValue().empty() ? "none" : preset.getValue());
+        if (config.isSet()) text += ", config " + config.getValue();
+        for (const std::string& kv : set.getValue()) text += ", " + kv;
+        return text;
+    }
+
+  private:
+    static std::string presetNames() {
+        try {
+            std::string list;
+            for (const std::string& name : availablePresets())
+                list += (list.empty() ? "" : ", ") + name;
+            return list;
+        } catch (const std::exception&) {
+            return "none found";
+        }
+    }
+};
+
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
 /// or an uncaught exception).

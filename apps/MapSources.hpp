@@ -18,8 +18,7 @@
 namespace travel::apps {
 
 struct Options {
-    std::string input, output_dir, config, poses, calib;
-    std::vector<std::string> sets;
+    std::string input, output_dir, poses, calib;
     std::string extent;
     double resolution = 0;
     long max_frames = 0;

@@ -297,20 +297,12 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> sweep("", "sweep",
                                        "sweep: KEY=v1,v2,... e.g. tgf_resolution=2,4,6,8,10", false,
                                        "", "KEY=VALUES", cmd);
-    TCLAP::ValueArg<std::string> preset("", "preset", "Sensor preset from share/presets", false,
-                                        "hdl64", "NAME", cmd);
-    TCLAP::ValueArg<std::string> config("", "config",
-                                        "YAML or ini parameter file applied after the preset",
-                                        false, "", "FILE", cmd);
-    TCLAP::MultiArg<std::string> set(
-        "", "set", "Override one parameter, e.g. --set tgf_resolution=4", false, "KEY=VALUE", cmd);
+    const travel::apps::ConfigFlags flags(cmd, "hdl64");
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Use at most the first N labelled frames",
                                     false, -1, "N", cmd);
-    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
-    const travel::Config configuration =
-        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
-    if (print_config.print(configuration)) return 0;
+    const travel::Config configuration = flags.load();
+    if (flags.print(configuration)) return 0;
 
     const bool is_sweep = command.getValue() == "sweep";
     // Configuration errors first, before any file is read.
@@ -325,9 +317,7 @@ int run(int argc, char** argv) {
     if (is_sweep && !sweep.isSet())
         throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
     const travel::Params& params = configuration.travel;
-    std::string setup = "preset " + preset.getValue();
-    if (config.isSet()) setup += ", config " + config.getValue();
-    for (const std::string& kv : set.getValue()) setup += ", " + kv;
+    const std::string setup = flags.describe();
 
     std::vector<std::string> names = methods.isSet()
                                          ? travel::eval::splitList(methods.getValue(), ',')

@@ -51,15 +51,7 @@ int run(int argc, char** argv) {
         "", "out", "Output directory for .label files (created); required", false, "", "DIR", cmd);
     TCLAP::ValueArg<std::string> labels(
         "", "labels", "SemanticKITTI labels directory: enables the metrics", false, "", "DIR", cmd);
-    TCLAP::ValueArg<std::string> preset("", "preset",
-                                        "Sensor preset from share/presets (hdl64, hdl32, vlp16, "
-                                        "os128)",
-                                        false, "hdl64", "NAME", cmd);
-    TCLAP::ValueArg<std::string> config("", "config",
-                                        "YAML or ini parameter file applied after the preset",
-                                        false, "", "FILE", cmd);
-    TCLAP::MultiArg<std::string> set(
-        "", "set", "Override one parameter, e.g. --set tgf_resolution=4", false, "KEY=VALUE", cmd);
+    const travel::apps::ConfigFlags flags(cmd, "hdl64");
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame metrics and timings to this CSV",
                                      false, "", "FILE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Process at most this many scans", false, -1,
@@ -73,12 +65,10 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
     TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
                           cmd);
-    const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
 
-    const travel::Config configuration =
-        travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue());
-    if (print_config.print(configuration)) return 0;
+    const travel::Config configuration = flags.load();
+    if (flags.print(configuration)) return 0;
     const travel::Params& params = configuration.travel;
     if (dump.getValue()) {
         std::cout << travel::paramsToYaml(params);
@@ -214,7 +204,7 @@ int run(int argc, char** argv) {
     if (!verbose && tty) std::fprintf(stderr, "\n");
 
     std::printf("\n%zu scans processed (method %s, preset %s), labels written to %s\n",
-                files.size(), method.getValue().c_str(), preset.getValue().c_str(),
+                files.size(), method.getValue().c_str(), flags.preset.getValue().c_str(),
                 out.getValue().c_str());
     if (labels.isSet()) {
         if (unlabelled_frames)

@@ -3,7 +3,6 @@
 // travel-map: builds a travel_mrpt::CTraversabilityMap (2-D traversability grid + OctoMap)
 // from an MRPT rawlog or a KITTI sequence and writes every export (see --help).
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -16,10 +15,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,38 +41,8 @@ using travel::apps::Options;
 using travel::apps::PoseFileSource;
 using travel::apps::Stats;
 
-/// The map's options: defaults, --config (ini section [travel] or [traversabilityMap] of map
-/// and TRAVEL keys; YAML: TRAVEL keys), --extent / --resolution, then each --set.
-travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
-    travel_mrpt::TraversabilityMapOptions options;
-    options.min_x = options.min_y = -40;
-    options.max_x = options.max_y = 40;
-    if (!o.config.empty()) {
-        const std::string ext = fs::path(o.config).extension().string();
-        if (ext == ".yaml" || ext == ".yml") {
-            options.loadFromFile(o.config);  // sections travel, filter, map
-        } else {
-            if (!fs::exists(o.config)) throw std::runtime_error(o.config + ": no such file");
-            mrpt::config::CConfigFileMemory ini;
-            std::ifstream in(o.config);
-            std::stringstream text;
-            text << in.rdbuf();
-            ini.setContent(text.str());
-            bool any = false;
-            for (const char* section : {"travel", "traversabilityMap"})
-                if (ini.sectionExists(section)) {
-                    try {
-                        options.loadFromConfigFile(ini, section);
-                    } catch (const std::exception& e) {
-                        throw std::runtime_error(o.config + ": " + e.what());
-                    }
-                    any = true;
-                }
-            if (!any)
-                throw std::runtime_error(o.config + ": no [travel] or [traversabilityMap] section");
-        }
-    }
-    std::string overrides = "[cli]\n";
+/// --extent / --resolution, the map section's grid keys as flags.
+void applyGridFlags(const Options& o, travel::MapSection& map) {
     if (!o.extent.empty()) {
         double v[4];
         char tail = 0;
@@ -83,20 +50,18 @@ travel_mrpt::TraversabilityMapOptions mapOptions(const Options& o) {
             4)
             throw std::runtime_error("--extent: expected MIN_X,MAX_X,MIN_Y,MAX_Y in metres, got '" +
                                      o.extent + "'");
-        options.min_x = v[0], options.max_x = v[1], options.min_y = v[2], options.max_y = v[3];
+        map.min_x = v[0], map.max_x = v[1], map.min_y = v[2], map.max_y = v[3];
     }
-    if (o.resolution > 0) options.resolution = o.resolution;
-    for (const std::string& kv : o.sets) {
-        if (kv.find('=') == std::string::npos)
-            throw std::runtime_error("--set: expected KEY=VALUE, got '" + kv + "'");
-        overrides += kv + "\n";
-    }
-    mrpt::config::CConfigFileMemory ini(overrides);
-    try {
-        options.loadFromConfigFile(ini, "cli");  // also validates
-    } catch (const std::exception& e) {
-        throw std::runtime_error(std::string("--set/--extent/--resolution: ") + e.what());
-    }
+    if (o.resolution > 0) map.resolution = o.resolution;
+}
+
+/// The map's options from the sections travel, filter and map of the configuration.
+travel_mrpt::TraversabilityMapOptions mapOptions(const travel::Config& configuration) {
+    travel_mrpt::TraversabilityMapOptions options;
+    options.map() = configuration.map;
+    options.travel.params = configuration.travel;
+    static_cast<travel::FilterSection&>(options.travel) = configuration.filter;
+    options.validate();
     return options;
 }
 
@@ -126,15 +91,7 @@ int run(int argc, char** argv) {
                                        true, "", "IN", cmd);
     TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created)", true, "",
                                         "OUT_DIR", cmd);
-    TCLAP::ValueArg<std::string> config(
-        "c", "config",
-        "YAML file of TRAVEL keys (libtravel parameters, filter keys, preset), or ini file "
-        "with a [travel] and/or [traversabilityMap] section of TRAVEL and map keys (docs/map.md)",
-        false, "", "FILE", cmd);
-    TCLAP::MultiArg<std::string> set("", "set",
-                                     "Map or TRAVEL key (repeatable, applied last), e.g. --set "
-                                     "preset=vlp16 --set max_step_height=0.15",
-                                     false, "KEY=VALUE", cmd);
+    const travel::apps::ConfigFlags flags(cmd, "");
     TCLAP::ValueArg<std::string> extent(
         "", "extent", "Grid extent in metres, world frame (default -40,40,-40,40)", false, "",
         "MIN_X,MAX_X,MIN_Y,MAX_Y", cmd);
@@ -162,8 +119,6 @@ int run(int argc, char** argv) {
     Options o;
     o.input = input.getValue();
     o.output_dir = output.getValue();
-    o.config = config.getValue();
-    o.sets = set.getValue();
     o.extent = extent.getValue();
     o.resolution = resolution.getValue();
     o.poses = poses.getValue();
@@ -184,9 +139,22 @@ int run(int argc, char** argv) {
     const std::string note = travel::apps::applyMemoryLimit(std::size_t(max_memory.getValue()));
     if (!note.empty() && !o.quiet) std::cerr << "travel-map: " << note << "\n";
 
+    // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
+    travel::Config defaults;
+    defaults.map.min_x = defaults.map.min_y = -40;
+    defaults.map.max_x = defaults.map.max_y = 40;
+    travel::Config configuration = flags.load(defaults);
+    try {
+        applyGridFlags(o, configuration.map);
+        configuration.validate();
+    } catch (const travel::ConfigError& e) {
+        throw std::runtime_error(std::string("--extent/--resolution: ") + e.what());
+    }
+    if (flags.print(configuration)) return 0;
+
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
-    travel_mrpt::CTraversabilityMap map(mapOptions(o));
+    travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
     const bool kitti = fs::is_directory(o.input);
     std::string pose_path = o.poses;
     if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))

@@ -72,17 +72,6 @@ using travel::apps::RawlogSegmenter;
 // ------------------------------------------------------------------------------------------
 // Command line.
 
-std::string presetList() {
-    try {
-        std::string list;
-        for (const auto& name : travel::availablePresets())
-            list += (list.empty() ? "" : ", ") + name;
-        return list.empty() ? "none found" : list;
-    } catch (const std::exception&) {
-        return "none found";
-    }
-}
-
 Options parseCommandLine(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "TRAVEL traversable-ground segmentation and object clustering of the 3-D LiDAR "
@@ -130,19 +119,7 @@ Options parseCommandLine(int argc, char** argv) {
                                         "Output rawlog (gzip-compressed); written to OUT.part "
                                         "and renamed when complete",
                                         true, "", "OUT.rawlog", cmd);
-    TCLAP::ValueArg<std::string> config(
-        "", "config",
-        "YAML (.yaml/.yml) or ini (.ini/.cfg, section [travel]) file of libtravel parameters "
-        "and filter keys (see share/presets/*.yaml, share/configs/*), applied after --preset",
-        false, "", "FILE", cmd);
-    TCLAP::ValueArg<std::string> preset(
-        "", "preset",
-        "Start from this sensor preset instead of the HDL-64E defaults (" + presetList() + ")",
-        false, "", "NAME", cmd);
-    TCLAP::MultiArg<std::string> set("", "set",
-                                     "Override one parameter or filter key (repeatable), "
-                                     "applied last, e.g. --set sensor_height=2.24",
-                                     false, "KEY=VALUE", cmd);
+    const travel::apps::ConfigFlags flags(cmd, "");
     TCLAP::ValueArg<std::string> label(
         "", "sensor-label",
         "Only process LiDAR observations whose whole sensorLabel matches this ECMAScript regex "
@@ -190,17 +167,16 @@ Options parseCommandLine(int argc, char** argv) {
             std::to_string(travel::apps::kDefaultMemoryLimitMiB),
         false, static_cast<long>(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary (errors only)", cmd);
-    const travel::apps::PrintConfigFlag print_config(cmd);
     Options o;
     o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
     if (o.exit_code) return o;
-    o.print_config = print_config.arg.getValue();
+    o.print_config = flags.print_config.arg.getValue();
 
     o.input = input.getValue();
     o.output = output.getValue();
-    o.config = config.getValue();
-    o.preset = preset.getValue();
-    o.overrides = set.getValue();
+    o.config = flags.config.getValue();
+    o.preset = flags.preset.getValue();
+    o.overrides = flags.set.getValue();
     o.sensor_label_regex = label.getValue();
     o.pcap_model = pcap_model.getValue().empty() ? o.preset : pcap_model.getValue();
     o.pcap_calibration = pcap_calibration.getValue();

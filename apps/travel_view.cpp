@@ -37,8 +37,9 @@ struct AppError : std::runtime_error {
 
 struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
-    std::string scan, out, config, preset;
-    std::vector<std::string> methods, overrides;
+    std::string scan, out;
+    std::vector<std::string> methods;
+    travel::Params params;  // --preset, --config, --set
     double mpp = 0.075;
     int size = 800;
     bool nodes = true;
@@ -60,33 +61,25 @@ Options parseCommandLine(int argc, char** argv) {
     TCLAP::ValueArg<std::string> methods(
         "", "methods", "One or two methods, comma-separated (see travel-kitti --help for names)",
         false, "travel", "M1[,M2]", cmd);
-    TCLAP::ValueArg<std::string> preset("", "preset", "Start from this sensor preset", false, "",
-                                        "NAME", cmd);
-    TCLAP::ValueArg<std::string> config("", "config", "YAML or ini parameter file", false, "",
-                                        "FILE", cmd);
-    TCLAP::MultiArg<std::string> set("", "set", "Override one parameter (repeatable)", false,
-                                     "KEY=VALUE", cmd);
+    const travel::apps::ConfigFlags flags(cmd, "");
     TCLAP::ValueArg<double> mpp("", "mpp", "Metres per pixel (default 0.075: +/-30 m in 800 px)",
                                 false, 0.075, "M", cmd);
     TCLAP::ValueArg<int> size("", "size", "Side of each panel in pixels", false, 800, "PX", cmd);
     TCLAP::SwitchArg no_nodes("", "no-nodes", "Do not draw the terrain model's nodes", cmd);
-    const travel::apps::PrintConfigFlag print_config(cmd);
     Options o;
     o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
     if (o.exit_code) return o;
-    if (print_config.print(
-            travel::apps::loadAppConfig(preset.getValue(), config.getValue(), set.getValue()))) {
+    const travel::Config configuration = flags.load();
+    if (flags.print(configuration)) {
         o.exit_code = 0;
         return o;
     }
+    o.params = configuration.travel;
 
     o.scan = scan.getValue();
     o.out = out.getValue();
     for (const std::string& m : travel::eval::splitList(methods.getValue(), ','))
         if (!m.empty()) o.methods.push_back(m);
-    o.preset = preset.getValue();
-    o.config = config.getValue();
-    o.overrides = set.getValue();
     o.mpp = mpp.getValue();
     o.size = size.getValue();
     o.nodes = !no_nodes.getValue();
@@ -95,10 +88,6 @@ Options parseCommandLine(int argc, char** argv) {
     if (!(o.mpp > 0) || !std::isfinite(o.mpp)) throw AppError("--mpp must be > 0");
     if (o.size < 64 || o.size > 8192) throw AppError("--size must be in [64, 8192]");
     return o;
-}
-
-travel::Params loadParams(const Options& o) {
-    return travel::apps::loadAppConfig(o.preset, o.config, o.overrides).travel;
 }
 
 /// The methods whose ground stage is TRAVEL's tri-grid search: they have a terrain model.
@@ -152,7 +141,7 @@ void renderMethod(const std::string& method, const travel::Params& params,
 int run(int argc, char** argv) {
     const Options o = parseCommandLine(argc, argv);
     if (o.exit_code) return *o.exit_code;
-    const travel::Params params = loadParams(o);
+    const travel::Params& params = o.params;
     // Unknown method names fail before any file is read (the message lists the valid ones).
     for (const auto& method : o.methods) travel::eval::makeSegmenter(method, params);
 

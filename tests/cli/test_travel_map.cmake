@@ -27,7 +27,7 @@ endforeach()
 # odometry records.
 expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street.rawlog)
 expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street
-  --set preset=vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20")
+  -p vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20")
 expect_exports(${WORK_DIR}/street street)
 foreach(word "LiDAR frames mapped: 10" "poses: odometry in the rawlog" "occupied voxels")
   string(FIND "${last_output}" "${word}" pos)
@@ -41,7 +41,7 @@ endforeach()
 # south wall (y = -11) an obstacle where the scene has them.
 expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street_sf.rawlog --odometry-actions)
 expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street_sf.rawlog -o ${WORK_DIR}/street_sf
-  --set preset=vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20"
+  -p vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20"
   --probe " 2,0" --probe " -25,3" --probe " -20,-11")
 expect_exports(${WORK_DIR}/street_sf street_sf)
 foreach(word "LiDAR frames mapped: 10" "poses: odometry actions of the SensoryFrames (10 increments)"
@@ -56,7 +56,7 @@ endforeach()
 file(WRITE ${WORK_DIR}/tum.txt
   "# t x y z qx qy qz qw\n999999999.5 1 0 0 0 0 0 1\n1000000000.5 1 0 0 0 0 0 1\n1000000001.5 1 0 0 0 0 0 1\n")
 expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street_tum
-  --poses ${WORK_DIR}/tum.txt --set preset=vlp16 --set sensor_height=1.8 --max-frames 2)
+  --poses ${WORK_DIR}/tum.txt -p vlp16 --set sensor_height=1.8 --max-frames 2)
 string(FIND "${last_output}" "poses: pose file" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "pose file not used:\n${last_output}")
