@@ -168,8 +168,8 @@ void TravelFilter::segment(TravelFrame& out) {
     out.sensorLinearVelocity.setZero();
     out.sensorAngularVelocity.setZero();
     const bool timed = out.timestamp != INVALID_TIMESTAMP;
-    const MotionEstimate motion =
-        timed ? motion_.estimateAt(seconds(out.timestamp)) : MotionEstimate{};
+    const travel::MotionEstimate motion =
+        timed ? motion_.estimateAt(seconds(out.timestamp)) : travel::MotionEstimate{};
     if (options_.use_robot_attitude && params.align_attitude) {
         if (motion.attitude) {
             setVehicleAttitude(
@@ -289,7 +289,7 @@ void TravelFilter::setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::t
     motion_.addRobotPose(seconds(t), isometryOf(pose));
 }
 
-MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
+travel::MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
     return motion_.estimateAt(seconds(t));
 }
 

@@ -1,9 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel_mrpt/MotionEstimator.hpp"
+#include "travel/MotionEstimator.hpp"
 
 #include <cmath>
 
-namespace travel_mrpt {
+namespace travel {
 namespace {
 
 /// Rotation vector of R (axis * angle), robust near identity.
@@ -119,4 +119,4 @@ void MotionEstimator::reset() {
     odometry_poses_.has_last = odometry_poses_.has_previous = false;
 }
 
-}  // namespace travel_mrpt
+}  // namespace travel

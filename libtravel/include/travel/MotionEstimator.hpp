@@ -14,9 +14,9 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-#include "travel_mrpt/TravelFilterOptions.hpp"
+#include "travel/Config.hpp"
 
-namespace travel_mrpt {
+namespace travel {
 
 struct MotionEstimate {
     /// Robot orientation in a gravity-aligned world (yaw arbitrary: only roll/pitch matter).
@@ -77,4 +77,4 @@ class MotionEstimator {
     PoseStream robot_poses_, odometry_poses_;
 };
 
-}  // namespace travel_mrpt
+}  // namespace travel
