@@ -82,11 +82,29 @@ void textBox(Raster& img, int x0, int y0, int x1, int y1) {
     img.frameRect(x0, y0, x1, y1, kTextBoxFrame);
 }
 
+uint32_t packed(const Rgb& c) {
+    return (uint32_t{c.r} << 16) | (uint32_t{c.g} << 8) | c.b;
+}
+
 }  // namespace
 
 uint32_t clusterColour(uint32_t id) {
-    const Rgb c = paletteColour(id);
-    return (uint32_t{c.r} << 16) | (uint32_t{c.g} << 8) | c.b;
+    return packed(paletteColour(id));
+}
+
+uint32_t pointColour(PointClass c, uint32_t cluster_id, bool any_cluster) {
+    switch (c) {
+        case PointClass::Ground:
+            return packed(kGround);
+        case PointClass::Outlier:
+            return packed(kOutlier);
+        case PointClass::NonGround:
+            return cluster_id    ? clusterColour(cluster_id)
+                   : any_cluster ? packed(kUnclustered)
+                                 : packed(kNonGround);
+        default:
+            return 0;
+    }
 }
 
 Picture renderBirdsEye(const float* x, const float* y, std::size_t n,

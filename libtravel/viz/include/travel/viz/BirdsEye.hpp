@@ -54,6 +54,11 @@ struct Picture {
 /// Returned as 0xRRGGBB.
 uint32_t clusterColour(uint32_t id);
 
+/// Colour (0xRRGGBB) of a point of class `c` in every picture and 3-D view: ground green,
+/// outliers blue, non-ground in its cluster's colour, grey when in no cluster while others are
+/// clustered (`any_cluster`), red when nothing is clustered. 0 for invalid points (not drawn).
+uint32_t pointColour(PointClass c, uint32_t cluster_id, bool any_cluster);
+
 /// Renders n points (x[i], y[i] in the frame of `terrain`, normally the aligned frame) with
 /// their labels. `cluster_id` is either empty (no cluster colouring) or n long. `terrain` may be
 /// null. Throws std::invalid_argument on size mismatches.
