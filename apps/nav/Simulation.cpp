@@ -91,32 +91,6 @@ travel::Params SimOptions::defaultTravelParams(const sim::LidarModel& lidar, dou
     return p;
 }
 
-Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
-                                       const std::vector<Eigen::Vector2d>& footprint, double x,
-                                       double y, double yaw, double& z) {
-    // Least-squares plane z = a + b dx + c dy through the footprint corners and the centre.
-    Eigen::Matrix3d AtA = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d Atb = Eigen::Vector3d::Zero();
-    const double cy = std::cos(yaw), sy = std::sin(yaw);
-    const auto add = [&](double dx, double dy) {
-        const Eigen::Vector3d row(1.0, dx, dy);
-        AtA += row * row.transpose();
-        Atb += row * scene.terrainHeight(x + dx, y + dy);
-    };
-    add(0.0, 0.0);
-    for (const auto& p : footprint) add(cy * p.x() - sy * p.y(), sy * p.x() + cy * p.y());
-    const Eigen::Vector3d abc = AtA.ldlt().solve(Atb);
-    z = abc[0];
-    const Eigen::Vector3d n = Eigen::Vector3d(-abc[1], -abc[2], 1.0).normalized();
-    Eigen::Vector3d f(cy, sy, abc[1] * cy + abc[2] * sy);  // heading, on the plane
-    f.normalize();
-    Eigen::Matrix3d R;
-    R.col(0) = f;
-    R.col(1) = n.cross(f);
-    R.col(2) = n;
-    return R;
-}
-
 std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& file) {
     if (!fs::is_regular_file(file)) throw std::runtime_error(file + ": navigator config not found");
     mrpt::config::CConfigFile cfg(file);

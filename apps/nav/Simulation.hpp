@@ -89,11 +89,8 @@ struct RunReport {
     std::vector<TrajectorySample> trajectory;
 };
 
-/// Robot base pose on the terrain: x, y, yaw given; z, roll, pitch from the terrain plane
-/// under the footprint. Returns the rotation (robot -> world) and fills z.
-Eigen::Matrix3d robotAttitudeOnTerrain(const sim::Scene& scene,
-                                       const std::vector<Eigen::Vector2d>& footprint, double x,
-                                       double y, double yaw, double& z);
+/// Robot base pose on the terrain (travel/sim/Scene.hpp).
+using sim::robotAttitudeOnTerrain;
 
 /// The robot's footprint from the navigator config (LEVEL1_VECTORX/Y of
 /// [CReactiveNavigationSystem3D]); throws std::runtime_error naming the file.

@@ -7,6 +7,14 @@
 
 namespace travel {
 
+float TerrainModel::groundSlopeDeg(float x, float y) const {
+    const int node = nodeAt(x, y);
+    const std::optional<GroundPlane> ground =
+        node >= 0 && usable() ? groundPlane(node) : std::nullopt;
+    if (!ground) return std::numeric_limits<float>::quiet_NaN();
+    return std::acos(std::clamp(ground->normal.z(), -1.f, 1.f)) * 57.2957795f;
+}
+
 float TerrainModel::heightAboveGround(float x, float y, float z) const {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const int node = nodeAt(x, y);

@@ -169,6 +169,10 @@ struct TerrainModel : TriGridGeometry {
     /// the caller's own fallback (fused map ground, robot base plane, sensor height) follows.
     float heightAboveGround(float x, float y, float z) const;
 
+    /// Slope [deg] of the ground under (x, y): of groundPlane() of the node holding it; NaN
+    /// outside the grid or where that node has no ground.
+    float groundSlopeDeg(float x, float y) const;
+
     /// Step of node a over node b at their shared edge, from each node's OWN (node-wise PCA)
     /// plane: TTMF smooths steps away. The step must show three times: a's plane above b's at
     /// the midpoint of the shared edge, a's mean above b's plane, and b's mean below a's plane;

@@ -62,15 +62,6 @@ octomap::OcTreeKey unpack(uint64_t v) {
     return octomap::OcTreeKey(uint16_t(v >> 32), uint16_t(v >> 16), uint16_t(v));
 }
 
-/// Slope of the ground under a ground point (TerrainModel::groundPlane of its node).
-float groundSlopeDeg(const travel::TerrainModel& t, float x, float y) {
-    const int node = t.nodeAt(x, y);
-    const std::optional<travel::GroundPlane> ground =
-        node >= 0 && t.usable() ? t.groundPlane(node) : std::nullopt;
-    if (!ground) return std::numeric_limits<float>::quiet_NaN();
-    return std::acos(std::clamp(ground->normal.z(), -1.f, 1.f)) * 57.2957795f;
-}
-
 }  // namespace
 
 struct CTraversabilityMap::Scratch {
@@ -179,7 +170,7 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         if (!a.valid[i] || result.labels[i] != PointClass::Ground) continue;
         const Eigen::Vector3f pa(a.x[i], a.y[i], a.z[i]);
         const Eigen::Vector3f pw = to_world * pa + origin;
-        grid_.addGround(pw.x(), pw.y(), pw.z(), groundSlopeDeg(terrain, pa.x(), pa.y()));
+        grid_.addGround(pw.x(), pw.y(), pw.z(), terrain.groundSlopeDeg(pa.x(), pa.y()));
         endKey(pw, s.ground_ends);
     }
     // Pass 2: non-ground points, by their height above the local ground: TRAVEL's

@@ -4,265 +4,35 @@
 #include <mrpt/img/CImage.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 namespace travel_mrpt {
-namespace {
 
 using mrpt::img::CImage;
 using mrpt::img::TColor;
-using travel::PointClass;
 
-struct Rgb {
-    uint8_t r, g, b;
-};
-
-constexpr Rgb kGround{40, 165, 40}, kNonGround{220, 0, 0}, kUnclustered{120, 120, 120},
-    kOutlier{0, 60, 255}, kNodeFill{244, 236, 196}, kNodeEdge{205, 170, 90};
-
-// Well-separated hues, none of them green (ground) or blue (outliers), so that a cluster is
-// never mistaken for a class.
-constexpr std::array<Rgb, 12> kPalette = {{{230, 25, 75},
-                                           {245, 130, 48},
-                                           {145, 30, 180},
-                                           {240, 50, 230},
-                                           {0, 160, 180},
-                                           {170, 110, 40},
-                                           {128, 0, 0},
-                                           {200, 160, 0},
-                                           {250, 110, 160},
-                                           {90, 60, 170},
-                                           {0, 110, 110},
-                                           {210, 80, 20}}};
-
-TColor toTColor(const Rgb& c) {
-    return TColor(c.r, c.g, c.b);
-}
-
-Rgb paletteColour(uint32_t id) {
-    // Knuth's multiplicative hash: neighbouring ids (often neighbouring objects) get unrelated
-    // colours.
-    const uint32_t h = id * 2654435761u;
-    return kPalette[(h >> 16) % kPalette.size()];
-}
-
-/// Largest of 1, 2, 5 x 10^k metres not longer than `max_metres`.
-double niceLength(double max_metres) {
-    double best = 0.1;
-    for (double decade = 0.1; decade <= 1e4; decade *= 10)
-        for (double m : {1.0, 2.0, 5.0})
-            if (m * decade <= max_metres) best = m * decade;
-    return best;
-}
-
-/// Metric (x forward, y left) to pixel (u right, v down), sensor at the centre.
-struct Projection {
-    double centre, mpp;
-    double u(double y) const { return centre - y / mpp; }
-    double v(double x) const { return centre - x / mpp; }
-};
-
-/// Solid fill of a triangle in pixel coordinates. CImage has no polygon fill; direct writes
-/// also keep thousands of nodes cheap. CImage stores BGR (OpenCV order).
-void fillTriangle(CImage& img, const std::array<double, 6>& p, const Rgb& c) {
-    const int w = static_cast<int>(img.getWidth()), h = static_cast<int>(img.getHeight());
-    const int u0 = std::max(0, static_cast<int>(std::floor(std::min({p[0], p[2], p[4]}))));
-    const int u1 = std::min(w - 1, static_cast<int>(std::ceil(std::max({p[0], p[2], p[4]}))));
-    const int v0 = std::max(0, static_cast<int>(std::floor(std::min({p[1], p[3], p[5]}))));
-    const int v1 = std::min(h - 1, static_cast<int>(std::ceil(std::max({p[1], p[3], p[5]}))));
-    const auto edge = [](double ax, double ay, double bx, double by, double px, double py) {
-        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-    };
-    const double area = edge(p[0], p[1], p[2], p[3], p[4], p[5]);
-    if (std::abs(area) < 1e-9) return;
-    for (int v = v0; v <= v1; ++v) {
-        for (int u = u0; u <= u1; ++u) {
-            const double px = u + 0.5, py = v + 0.5;
-            const double e0 = edge(p[2], p[3], p[4], p[5], px, py) / area;
-            const double e1 = edge(p[4], p[5], p[0], p[1], px, py) / area;
-            const double e2 = edge(p[0], p[1], p[2], p[3], px, py) / area;
-            if (e0 < 0 || e1 < 0 || e2 < 0) continue;
-            uint8_t* q = img.ptr<uint8_t>(static_cast<unsigned>(u), static_cast<unsigned>(v));
-            q[0] = c.b;
-            q[1] = c.g;
-            q[2] = c.r;
+void toImage(const travel::viz::Picture& picture, CImage& out) {
+    const travel::viz::Raster& raster = picture.raster;
+    out.resize(raster.width, raster.height, mrpt::img::CH_RGB);
+    // CImage stores BGR (OpenCV order).
+    for (int v = 0; v < raster.height; ++v) {
+        for (int u = 0; u < raster.width; ++u) {
+            const travel::viz::Rgb c = raster.at(u, v);
+            uint8_t* q = out.ptr<uint8_t>(static_cast<unsigned>(u), static_cast<unsigned>(v));
+            q[0] = c.b, q[1] = c.g, q[2] = c.r;
         }
     }
-}
-
-/// Faint fills (pass 0) or outlines (pass 1) of the traversable nodes.
-void drawNodes(CImage& img, const travel::TerrainModel& terrain, const Projection& proj, int pass) {
-    if (!terrain.usable()) return;
-    const auto corners = [&](std::size_t node) {
-        const std::array<Eigen::Vector2f, 3> c = terrain.triangleCorners(static_cast<int>(node));
-        return std::array<double, 6>{proj.u(c[0].y()), proj.v(c[0].x()), proj.u(c[1].y()),
-                                     proj.v(c[1].x()), proj.u(c[2].y()), proj.v(c[2].x())};
-    };
-    if (pass == 0) {
-        for (std::size_t k = 0; k < terrain.nodes.size(); ++k)
-            if (terrain.nodes[k].traversable) fillTriangle(img, corners(k), kNodeFill);
-        return;
-    }
-    const TColor edge = toTColor(kNodeEdge);
-    const auto px = [](double a) { return static_cast<int>(std::lround(a)); };
-    for (std::size_t k = 0; k < terrain.nodes.size(); ++k) {
-        if (!terrain.nodes[k].traversable) continue;
-        const auto p = corners(k);
-        img.line(px(p[0]), px(p[1]), px(p[2]), px(p[3]), edge, 1);
-        img.line(px(p[2]), px(p[3]), px(p[4]), px(p[5]), edge, 1);
-        img.line(px(p[4]), px(p[5]), px(p[0]), px(p[1]), edge, 1);
-    }
-}
-
-/// A white box with a light frame behind text, so that it stays readable over points.
-void textBox(CImage& img, int x0, int y0, int x1, int y1) {
-    img.filledRectangle(x0, y0, x1, y1, TColor(255, 255, 255));
-    img.rectangle(x0, y0, x1, y1, TColor(190, 190, 190), 1);
-}
-
-}  // namespace
-
-uint32_t clusterColour(uint32_t id) {
-    const Rgb c = paletteColour(id);
-    return (uint32_t{c.r} << 16) | (uint32_t{c.g} << 8) | c.b;
-}
-
-void renderBirdsEye(const float* x, const float* y, std::size_t n,
-                    const std::vector<PointClass>& labels, const std::vector<uint32_t>& cluster_id,
-                    const travel::TerrainModel* terrain, const BirdsEyeOptions& opt, CImage& out) {
-    if (labels.size() != n)
-        throw std::invalid_argument("renderBirdsEye: " + std::to_string(labels.size()) +
-                                    " labels for " + std::to_string(n) + " points");
-    if (!cluster_id.empty() && cluster_id.size() != n)
-        throw std::invalid_argument("renderBirdsEye: " + std::to_string(cluster_id.size()) +
-                                    " cluster ids for " + std::to_string(n) + " points");
-    if (opt.size_px < 64 || !(opt.metres_per_pixel > 0) || !std::isfinite(opt.metres_per_pixel))
-        throw std::invalid_argument("renderBirdsEye: size must be >= 64 px and scale > 0");
-
-    const int size = opt.size_px;
-    const double mpp = opt.metres_per_pixel;
-    const bool clustered = !cluster_id.empty();
-    const TColor white(255, 255, 255), grey(205, 205, 205), black(0, 0, 0);
-    out.resize(size, size, mrpt::img::CH_RGB);
-    out.filledRectangle(0, 0, size - 1, size - 1, white);
-    const Projection proj{size / 2.0, mpp};
-    const int centre = size / 2;
-
-    const bool nodes = terrain && opt.draw_nodes;
-    if (nodes && opt.fill_nodes) drawNodes(out, *terrain, proj, 0);
-
-    const double bar_m = niceLength(0.25 * size * mpp);
-    // Range rings every scale-bar length help reading distances.
-    if (opt.range_rings)
-        for (int k = 1; k * bar_m / mpp < size; ++k)
-            out.drawCircle(centre, centre, static_cast<int>(std::lround(k * bar_m / mpp)), grey, 1);
-
-    // Ground first, then outliers, then obstacles: what matters for navigation stays on top.
-    const int s = std::max(1, opt.point_px);
-    const auto plot = [&](std::size_t i, const TColor& colour) {
-        const int u = static_cast<int>(std::lround(proj.u(y[i])));
-        const int v = static_cast<int>(std::lround(proj.v(x[i])));
-        if (u < s || v < s || u >= size - s || v >= size - s) return;
-        out.filledRectangle(u - s / 2, v - s / 2, u - s / 2 + s - 1, v - s / 2 + s - 1, colour);
-    };
-    for (PointClass pass : {PointClass::Ground, PointClass::Outlier, PointClass::NonGround}) {
-        const Rgb base = pass == PointClass::Ground    ? kGround
-                         : pass == PointClass::Outlier ? kOutlier
-                         : clustered                   ? kUnclustered
-                                                       : kNonGround;
-        const TColor colour = toTColor(base);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (labels[i] != pass) continue;
-            if (pass == PointClass::NonGround && clustered && cluster_id[i] != 0) continue;
-            plot(i, colour);
-        }
-        // Node outlines over the ground (dense near the sensor, it would hide them) but under
-        // the obstacles.
-        if (pass == PointClass::Ground && nodes) drawNodes(out, *terrain, proj, 1);
-    }
-    // Clustered points last, in their cluster's colour.
-    if (clustered)
-        for (std::size_t i = 0; i < n; ++i)
-            if (cluster_id[i] != 0) plot(i, toTColor(paletteColour(cluster_id[i])));
-
-    if (opt.sensor_marker) {
-        out.filledRectangle(centre - 3, centre - 3, centre + 3, centre + 3, black);
-        out.line(centre, centre, centre, centre - 14, black, 2);
-    }
-
     out.selectTextFont("9x15");
-    int y_text = 4;
-    if (!opt.title.empty()) {
-        const int w = std::min(size - 1, 12 + 9 * static_cast<int>(opt.title.size()));
-        textBox(out, 0, 0, w, 22);
-        out.textOut(6, y_text + 1, opt.title, black);
-        y_text = 28;
-    }
-    if (opt.legend) {
-        std::vector<std::pair<std::string, Rgb>> entries = {{"ground", kGround}};
-        if (nodes) entries.push_back({"traversable node", kNodeEdge});
-        if (clustered) {
-            entries.push_back({"cluster (colour per id)", kPalette[0]});
-            entries.push_back({"non-ground, no cluster", kUnclustered});
-        } else {
-            entries.push_back({"non-ground", kNonGround});
-        }
-        entries.push_back({"outlier", kOutlier});
-        std::size_t longest = 0;
-        for (const auto& e : entries) longest = std::max(longest, e.first.size());
-        const int row = 18;
-        textBox(out, 0, y_text - 2, 34 + 9 * static_cast<int>(longest) + 6,
-                y_text + row * static_cast<int>(entries.size()) + 2);
-        for (std::size_t k = 0; k < entries.size(); ++k) {
-            const int yk = y_text + row * static_cast<int>(k);
-            if (clustered && k == (nodes ? 2u : 1u)) {
-                // The cluster swatch shows a few palette colours: "one colour each".
-                for (int j = 0; j < 4; ++j)
-                    out.filledRectangle(6 + 6 * j, yk + 3, 11 + 6 * j, yk + 13,
-                                        toTColor(kPalette[j * 3]));
-            } else if (nodes && k == 1) {
-                out.filledRectangle(6, yk + 3, 28, yk + 13, toTColor(kNodeFill));
-                out.rectangle(6, yk + 3, 28, yk + 13, toTColor(kNodeEdge), 1);
-            } else {
-                out.filledRectangle(6, yk + 3, 28, yk + 13, toTColor(entries[k].second));
-            }
-            out.textOut(34, yk + 1, entries[k].first, black);
-        }
-    }
-    if (opt.scale_bar) {
-        const int bar_px = static_cast<int>(std::lround(bar_m / mpp));
-        char text[96];
-        std::snprintf(text, sizeof text, "%g m   (1 px = %g m, up = forward)", bar_m, mpp);
-        const int y_bar = size - 12;
-        textBox(out, 0, y_bar - 24,
-                std::min(size - 1,
-                         std::max(bar_px + 20,
-                                  16 + 9 * static_cast<int>(std::char_traits<char>::length(text)))),
-                size - 1);
-        out.filledRectangle(10, y_bar - 2, 10 + bar_px, y_bar + 1, black);
-        out.textOut(10, y_bar - 20, text, black);
-    }
+    for (const travel::viz::TextLabel& label : picture.text)
+        out.textOut(label.x, label.y, label.text, TColor(0, 0, 0));
 }
 
-void renderBirdsEye(const travel::PointCloud& points, const std::vector<PointClass>& labels,
+void renderBirdsEye(const travel::AlignedCloud& points,
+                    const std::vector<travel::PointClass>& labels,
                     const std::vector<uint32_t>& cluster_id, const travel::TerrainModel* terrain,
                     const BirdsEyeOptions& opt, CImage& out) {
-    if (points.y.size() != points.x.size())
-        throw std::invalid_argument("renderBirdsEye: x and y differ in size");
-    renderBirdsEye(points.x.data(), points.y.data(), points.size(), labels, cluster_id, terrain,
-                   opt, out);
-}
-
-void renderBirdsEye(const travel::AlignedCloud& points, const std::vector<PointClass>& labels,
-                    const std::vector<uint32_t>& cluster_id, const travel::TerrainModel* terrain,
-                    const BirdsEyeOptions& opt, CImage& out) {
-    if (points.y.size() != points.x.size())
-        throw std::invalid_argument("renderBirdsEye: x and y differ in size");
-    renderBirdsEye(points.x.data(), points.y.data(), points.x.size(), labels, cluster_id, terrain,
-                   opt, out);
+    toImage(travel::viz::renderBirdsEye(points, labels, cluster_id, terrain, opt), out);
 }
 
 void sideBySide(const CImage& a, const CImage& b, const std::string& title_a,

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <ostream>
 #include <stdexcept>
 
@@ -168,68 +167,6 @@ mrpt::img::TColor toTColor(uint32_t rgb, uint8_t alpha = 255) {
 
 }  // namespace
 
-// ---------------------------------------------------------------- TerrainSummary
-
-std::size_t TerrainSummary::numTraversable() const {
-    return static_cast<std::size_t>(std::count_if(
-        nodes.begin(), nodes.end(), [](const TerrainNodeRecord& n) { return n.traversable; }));
-}
-
-// ---------------------------------------------------------------- filling
-
-void CObservationTravelLabels::assign(const travel::PointCloud& cloud, const travel::Result& result,
-                                      const Eigen::Matrix3f& aligned_rotation) {
-    const std::size_t n = cloud.size();
-    if (result.labels.size() != n || (!result.cluster_id.empty() && result.cluster_id.size() != n))
-        throw std::invalid_argument("CObservationTravelLabels::assign: the result has " +
-                                    std::to_string(result.labels.size()) + " labels and " +
-                                    std::to_string(result.cluster_id.size()) +
-                                    " cluster ids for a cloud of " + std::to_string(n) +
-                                    " points (expected equal sizes)");
-    if (cloud.y.size() != n || cloud.z.size() != n)
-        throw std::invalid_argument("CObservationTravelLabels::assign: x, y, z sizes differ");
-
-    x.assign(cloud.x.begin(), cloud.x.end());
-    y.assign(cloud.y.begin(), cloud.y.end());
-    z.assign(cloud.z.begin(), cloud.z.end());
-    if (cloud.intensity.size() == n)
-        intensity.assign(cloud.intensity.begin(), cloud.intensity.end());
-    else
-        intensity.assign(n, 0.f);
-    labels.resize(n);
-    for (std::size_t i = 0; i < n; ++i) labels[i] = static_cast<uint8_t>(result.labels[i]);
-    if (result.cluster_id.empty())
-        clusterId.assign(n, 0u);
-    else
-        clusterId.assign(result.cluster_id.begin(), result.cluster_id.end());
-    clusters.assign(result.clusters.begin(), result.clusters.end());
-
-    const travel::TerrainModel& t = result.terrain;
-    static_cast<travel::TriGridGeometry&>(terrain) = t;
-    terrain.nodes.clear();
-    for (std::size_t i = 0; i < t.nodes.size(); ++i) {
-        const travel::TriNode& node = t.nodes[i];
-        if (node.node_class == travel::NodeClass::Empty) continue;
-        TerrainNodeRecord r;
-        r.index = static_cast<uint32_t>(i);
-        r.node_class = node.node_class;
-        r.traversable = node.traversable;
-        r.refitted = node.refitted;
-        r.normal = node.refitted ? node.refit_normal : node.normal;
-        r.d = node.refitted ? node.refit_d : node.d;
-        r.mean = node.refitted ? node.refit_mean : node.mean;
-        r.corner_z = node.corner_z;
-        terrain.nodes.push_back(r);
-    }
-    alignedRotation = aligned_rotation;
-    timings = result.timings;
-}
-
-std::size_t CObservationTravelLabels::count(travel::PointClass c) const {
-    return static_cast<std::size_t>(
-        std::count(labels.begin(), labels.end(), static_cast<uint8_t>(c)));
-}
-
 // ---------------------------------------------------------------- serialization
 
 uint8_t CObservationTravelLabels::serializeGetVersion() const {
@@ -359,48 +296,8 @@ void CObservationTravelLabels::serializeFrom(mrpt::serialization::CArchive& in, 
 
 void CObservationTravelLabels::getDescriptionAsText(std::ostream& o) const {
     CObservation::getDescriptionAsText(o);
-    const std::ios_base::fmtflags old_flags = o.flags();
-    const std::streamsize old_precision = o.precision();
-    const std::size_t n = labels.size();
-    const auto percent = [n](std::size_t k) { return n ? 100.0 * k / n : 0.0; };
     o << "TRAVEL labels of a " << (sourceClass.empty() ? "(unknown)" : sourceClass) << "\n";
-    o << "Points: " << n << "\n" << std::fixed << std::setprecision(1);
-    for (PointClass c :
-         {PointClass::Ground, PointClass::NonGround, PointClass::Outlier, PointClass::Invalid}) {
-        const std::size_t k = count(c);
-        o << "  " << std::left << std::setw(10) << travel::toString(c) << std::right << std::setw(8)
-          << k << "  (" << percent(k) << " %)\n";
-    }
-    o << "Clusters: " << clusters.size() << "\n";
-    if (!clusters.empty()) {
-        std::vector<const travel::ClusterSummary*> largest;
-        largest.reserve(clusters.size());
-        for (const auto& c : clusters) largest.push_back(&c);
-        const std::size_t shown = std::min<std::size_t>(5, largest.size());
-        std::partial_sort(
-            largest.begin(), largest.begin() + shown, largest.end(),
-            [](const auto* a, const auto* b) { return a->num_points > b->num_points; });
-        o << "  largest (aligned frame, m): id, points, centroid, size\n" << std::setprecision(2);
-        for (std::size_t k = 0; k < shown; ++k) {
-            const auto& c = *largest[k];
-            const Eigen::Vector3f size = c.aabb_max - c.aabb_min;
-            o << "  #" << c.id << "  " << c.num_points << "  (" << c.centroid.x() << ", "
-              << c.centroid.y() << ", " << c.centroid.z() << ")  " << size.x() << " x " << size.y()
-              << " x " << size.z() << "\n";
-        }
-    }
-    o << std::setprecision(2) << "Terrain: " << terrain.nodes.size() << " non-empty nodes, "
-      << terrain.numTraversable() << " traversable (cells of " << terrain.resolution << " m, "
-      << terrain.cells_per_side << " per side)\n";
-    const travel::StageTimings& t = timings;
-    o << "Timings [ms]: ground " << t.ground_total << " (preprocess " << t.preprocess
-      << ", embedding " << t.embedding << ", node fitting " << t.node_fitting << ", graph search "
-      << t.graph_search << ", TTMF " << t.ttmf << ", labelling " << t.labelling << ")\n";
-    o << "              objects " << t.objects_total << " (range image " << t.range_image
-      << ", horizontal " << t.horizontal << ", vertical " << t.vertical << ", clusters "
-      << t.clusters << ")\n";
-    o.flags(old_flags);
-    o.precision(old_precision);
+    describe(o);
 }
 
 // ---------------------------------------------------------------- 3-D view
@@ -416,17 +313,10 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
     points->reserve(n - std::min(n, count(PointClass::Invalid)));
     for (std::size_t i = 0; i < n; ++i) {
         const auto c = static_cast<PointClass>(labels[i]);
-        uint32_t rgb;
-        if (c == PointClass::Ground)
-            rgb = kGroundColour;
-        else if (c == PointClass::Outlier)
-            rgb = kOutlierColour;
-        else if (c == PointClass::NonGround) {
-            const uint32_t id = i < clusterId.size() ? clusterId[i] : 0;
-            rgb = id ? clusterColour(id) : any_cluster ? kUnclusteredColour : kNonGroundColour;
-        } else
-            continue;  // invalid (or out of range): not drawn
-        const mrpt::img::TColor t = toTColor(rgb);
+        if (c == PointClass::Invalid || labels[i] > static_cast<uint8_t>(PointClass::Outlier))
+            continue;  // not drawn
+        const uint32_t id = i < clusterId.size() ? clusterId[i] : 0;
+        const mrpt::img::TColor t = toTColor(travel::viz::pointColour(c, id, any_cluster));
         points->push_back(x[i], y[i], z[i], t.R / 255.f, t.G / 255.f, t.B / 255.f);
     }
     o.insert(points);
@@ -449,17 +339,12 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
     nodes->setName("travel_traversable_nodes");
     nodes->enableLight(false);
     const mrpt::img::TColor node_colour(230, 200, 90, 110);
+    std::array<Eigen::Vector3f, 3> corners;
     for (const TerrainNodeRecord& node : terrain.nodes) {
-        if (!node.traversable || !terrain.hasCells()) continue;
-        const std::array<Eigen::Vector2f, 3> xy = terrain.triangleCorners(int(node.index));
+        if (!node.traversable || !terrain.triangle3D(node, corners)) continue;
         mrpt::opengl::TTriangle tri;
-        bool finite = true;
-        for (int k = 0; k < 3; ++k) {
-            const float h = travel::planeHeightAt(node.normal, node.d, xy[k].x(), xy[k].y());
-            finite = finite && std::isfinite(h);
-            tri.vertex(k) = {xy[k].x(), xy[k].y(), h};
-        }
-        if (!finite) continue;
+        for (int k = 0; k < 3; ++k)
+            tri.vertex(k) = {corners[k].x(), corners[k].y(), corners[k].z()};
         tri.computeNormals();
         tri.setColor(node_colour);
         nodes->insertTriangle(tri);

@@ -40,14 +40,6 @@ Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3D& pose) {
     return T;
 }
 
-/// Rz(yaw) Ry(pitch) Rx(roll), MRPT's CPose3D convention.
-Eigen::Matrix3d yawPitchRoll(double yaw, double pitch, double roll) {
-    return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-            Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-            Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-        .toRotationMatrix();
-}
-
 bool sameRotation(const mrpt::poses::CPose3D& a, const mrpt::poses::CPose3D& b) {
     return (rotationOf(a) - rotationOf(b)).cwiseAbs().maxCoeff() < 1e-12;
 }
@@ -168,8 +160,8 @@ void TravelFilter::segment(TravelFrame& out) {
     out.sensorLinearVelocity.setZero();
     out.sensorAngularVelocity.setZero();
     const bool timed = out.timestamp != INVALID_TIMESTAMP;
-    const MotionEstimate motion =
-        timed ? motion_.estimateAt(seconds(out.timestamp)) : MotionEstimate{};
+    const travel::MotionEstimate motion =
+        timed ? motion_.estimateAt(seconds(out.timestamp)) : travel::MotionEstimate{};
     if (options_.use_robot_attitude && params.align_attitude) {
         if (motion.attitude) {
             setVehicleAttitude(
@@ -232,30 +224,20 @@ void TravelFilter::processImu(const mrpt::obs::CObservationIMU& imu) {
                  mrpt::system::LVL_WARN);
         return;
     }
-    const double t = seconds(imu.timestamp);
     mrpt::poses::CPose3D imu_pose;
     imu.getSensorPose(imu_pose);
-    const Eigen::Matrix3d robot_R_imu = rotationOf(imu_pose);
     const auto has = [&](TIMUDataIndex i) { return imu.has(i); };
-
-    std::optional<Eigen::Matrix3d> world_R_imu;
-    if (has(IMU_ORI_QUAT_X) && has(IMU_ORI_QUAT_Y) && has(IMU_ORI_QUAT_Z) && has(IMU_ORI_QUAT_W)) {
-        Eigen::Quaterniond q(imu.get(IMU_ORI_QUAT_W), imu.get(IMU_ORI_QUAT_X),
-                             imu.get(IMU_ORI_QUAT_Y), imu.get(IMU_ORI_QUAT_Z));
-        if (q.norm() > 1e-9 && std::isfinite(q.norm()))
-            world_R_imu = q.normalized().toRotationMatrix();
-    } else if (has(IMU_ROLL) && has(IMU_PITCH)) {
-        // The world yaw reference does not change roll/pitch: 0 when the IMU has no yaw.
-        world_R_imu = yawPitchRoll(has(IMU_YAW) ? imu.get(IMU_YAW) : 0.0, imu.get(IMU_PITCH),
-                                   imu.get(IMU_ROLL));
-    }
-    if (world_R_imu && world_R_imu->allFinite())
-        motion_.addAttitude(t, *world_R_imu * robot_R_imu.transpose());
-
-    if (has(IMU_WX) && has(IMU_WY) && has(IMU_WZ)) {
-        const Eigen::Vector3d w_imu(imu.get(IMU_WX), imu.get(IMU_WY), imu.get(IMU_WZ));
-        if (w_imu.allFinite()) motion_.addAngularVelocity(t, robot_R_imu * w_imu);
-    }
+    travel::ImuReading reading;
+    if (has(IMU_ORI_QUAT_X) && has(IMU_ORI_QUAT_Y) && has(IMU_ORI_QUAT_Z) && has(IMU_ORI_QUAT_W))
+        reading.orientation = Eigen::Quaterniond(imu.get(IMU_ORI_QUAT_W), imu.get(IMU_ORI_QUAT_X),
+                                                 imu.get(IMU_ORI_QUAT_Y), imu.get(IMU_ORI_QUAT_Z));
+    if (has(IMU_ROLL)) reading.roll = imu.get(IMU_ROLL);
+    if (has(IMU_PITCH)) reading.pitch = imu.get(IMU_PITCH);
+    if (has(IMU_YAW)) reading.yaw = imu.get(IMU_YAW);
+    if (has(IMU_WX) && has(IMU_WY) && has(IMU_WZ))
+        reading.angular_velocity =
+            Eigen::Vector3d(imu.get(IMU_WX), imu.get(IMU_WY), imu.get(IMU_WZ));
+    motion_.addImu(seconds(imu.timestamp), rotationOf(imu_pose), reading);
 }
 
 void TravelFilter::processOdometry(const mrpt::obs::CObservationOdometry& odometry) {
@@ -265,16 +247,12 @@ void TravelFilter::processOdometry(const mrpt::obs::CObservationOdometry& odomet
                  mrpt::system::LVL_WARN);
         return;
     }
-    const double t = seconds(odometry.timestamp);
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.linear() = yawPitchRoll(odometry.odometry.phi(), 0, 0);
-    pose.translation() = Eigen::Vector3d(odometry.odometry.x(), odometry.odometry.y(), 0);
-    motion_.addOdometryPose(t, pose);
-    if (odometry.hasVelocities) {
-        const auto& v = odometry.velocityLocal;
-        motion_.addOdometryVelocity(t, Eigen::Vector3d(v.vx, v.vy, 0),
-                                    Eigen::Vector3d(0, 0, v.omega));
-    }
+    const auto& v = odometry.velocityLocal;
+    motion_.addPlanarOdometry(seconds(odometry.timestamp), odometry.odometry.x(),
+                              odometry.odometry.y(), odometry.odometry.phi(),
+                              odometry.hasVelocities ? std::optional<Eigen::Vector3d>(
+                                                           Eigen::Vector3d(v.vx, v.vy, v.omega))
+                                                     : std::nullopt);
 }
 
 void TravelFilter::processAction(const mrpt::obs::CActionRobotMovement2D& action) {
@@ -289,7 +267,7 @@ void TravelFilter::setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::t
     motion_.addRobotPose(seconds(t), isometryOf(pose));
 }
 
-MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
+travel::MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
     return motion_.estimateAt(seconds(t));
 }
 

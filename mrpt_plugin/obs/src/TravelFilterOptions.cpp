@@ -81,7 +81,7 @@ void TravelFilterOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
                                              const std::string& section) {
     TravelFilterOptions result = *this;
     const auto keys = config_text::readSection(source, section);
-    config_text::applySection(keys, result.params, static_cast<travel::FilterSection&>(result));
+    travel::applySectionKeys(keys, result.params, static_cast<travel::FilterSection&>(result));
     try {
         result.params.validate();
         result.validate();

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 
+#include "travel/io/VelodyneModels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
 namespace travel_mrpt {
@@ -78,41 +78,16 @@ class TravelCloudSink final : public CObservationVelodyneScan::PointCloudStorage
     bool with_time_;
 };
 
-/// "VLP-16" -> "VLP16", "HDL-32E" -> "HDL32E": the spellings drivers use vary.
-std::string normalisedModel(const std::string& model) {
-    std::string s;
-    for (char c : model)
-        if (std::isalnum(static_cast<unsigned char>(c)))
-            s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
-/// The default calibration for a rotating scan's lidarModel, falling back on the row count.
-/// Null when none fits (MRPT 2.5.8's HDL64 default is empty, see the notes).
-/// `laser_delay_in_columns`: firing delay of laser id k after its column's azimuth is
-/// k * this (in columns) for MRPT's fromVelodyne() layout, from the Velodyne timing tables:
-/// VLP-16 fires a laser every 2.304 us and stores one firing (55.296 us) per column;
-/// HDL-32E fires every 1.152 us and stores one 46.08 us firing cycle per column.
+/// The default calibration for a rotating scan's lidarModel, falling back on the row count
+/// (travel::io::velodyneModelFor), and its laser timing. Null when none fits (MRPT 2.5.8's
+/// HDL64 default is empty, see the notes).
 const VelodyneCalibration* calibrationFor(const CObservationRotatingScan& obs, std::size_t rows,
                                           double& laser_delay_in_columns) {
-    const std::string model = normalisedModel(obs.lidarModel);
-    const char* name = nullptr;
-    if (model.rfind("VLP16", 0) == 0 || model.rfind("PUCK", 0) == 0)
-        name = "VLP16";
-    else if (model.rfind("HDL32", 0) == 0)
-        name = "HDL32";
-    else if (model.rfind("HDL64", 0) == 0)
-        name = "HDL64";
-    else if (rows == 16)
-        name = "VLP16";
-    else if (rows == 32)
-        name = "HDL32";
-    if (!name) return nullptr;
-    const std::string chosen = name;
-    laser_delay_in_columns = chosen == "VLP16"   ? 2.304 / 55.296
-                             : chosen == "HDL32" ? 1.152 / 46.08
-                                                 : 0.0;
-    const VelodyneCalibration& calib = VelodyneCalibration::LoadDefaultCalibration(chosen);
+    const std::optional<travel::io::VelodyneModel> model =
+        travel::io::velodyneModelFor(obs.lidarModel, rows);
+    if (!model) return nullptr;
+    laser_delay_in_columns = model->laser_delay_in_columns;
+    const VelodyneCalibration& calib = VelodyneCalibration::LoadDefaultCalibration(model->name);
     if (calib.empty() || calib.laser_corrections.size() != rows) return nullptr;
     return &calib;
 }

@@ -1,25 +1,16 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Bird's-eye pictures of a labelled frame, shared by travel-rawlog and travel-view. Headless:
-// drawing goes to an mrpt::img::CImage (save it with saveToFile("x.png")), no X server needed.
-//
-// The picture is centred on the sensor, image up = +x (forward), image left = +y. Ground is
-// green, non-ground red (grey when cluster ids are given: each cluster then gets its own colour,
-// a hash of its id into a palette of well-separated hues), outliers blue; invalid points are not
-// drawn. Optionally the traversable tri-grid nodes of the terrain model are outlined underneath.
+// Bird's-eye pictures of a labelled frame as mrpt::img::CImage (save them with savePicture).
+// The drawing itself is travel::viz::renderBirdsEye (libtravel/viz, what is drawn and how);
+// this layer copies its raster into a CImage and writes its text with CImage's bitmap font.
 //
 // MRPT headers stay out of this header (they are slow to compile): images are passed by
 // reference to the forward-declared CImage; include <mrpt/img/CImage.h> where you use them.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
 #include <string>
-#include <vector>
 
-#include "travel/PointCloud.hpp"
-#include "travel/Preprocessing.hpp"
-#include "travel/TerrainModel.hpp"
+#include "travel/viz/BirdsEye.hpp"
 
 namespace mrpt::img {
 class CImage;
@@ -27,40 +18,13 @@ class CImage;
 
 namespace travel_mrpt {
 
-struct BirdsEyeOptions {
-    int size_px = 800;                ///< image side [px]
-    double metres_per_pixel = 0.075;  ///< scale (0.075: +/-30 m in 800 px)
-    std::string title;                ///< first line, top left (empty: none)
-    bool legend = true;
-    bool scale_bar = true;
-    bool range_rings = true;  ///< one ring per scale-bar length
-    bool sensor_marker = true;
-    /// Outline the traversable nodes of the terrain model (when one is given).
-    bool draw_nodes = true;
-    /// Also fill them faintly (makes the traversable area readable at a glance).
-    bool fill_nodes = true;
-    int point_px = 2;  ///< side of the square drawn per point [px]
-};
+using travel::viz::BirdsEyeOptions;
+using travel::viz::clusterColour;
 
-/// Colour of cluster `id` (> 0): deterministic, the same id always gets the same colour.
-/// Returned as 0xRRGGBB.
-uint32_t clusterColour(uint32_t id);
+/// Copies a picture into `out` (resized, RGB) and writes its text in the 9x15 font.
+void toImage(const travel::viz::Picture& picture, mrpt::img::CImage& out);
 
-/// Renders n points (x[i], y[i] in the frame of `terrain`, normally the aligned frame) with
-/// their labels into `out` (resized to size_px x size_px, RGB). `cluster_id` is either empty (no
-/// cluster colouring) or n long. `terrain` may be null. Throws std::invalid_argument on size
-/// mismatches.
-void renderBirdsEye(const float* x, const float* y, std::size_t n,
-                    const std::vector<travel::PointClass>& labels,
-                    const std::vector<uint32_t>& cluster_id, const travel::TerrainModel* terrain,
-                    const BirdsEyeOptions& opt, mrpt::img::CImage& out);
-
-/// Same, for a cloud (points in the same frame as `terrain`).
-void renderBirdsEye(const travel::PointCloud& points, const std::vector<travel::PointClass>& labels,
-                    const std::vector<uint32_t>& cluster_id, const travel::TerrainModel* terrain,
-                    const BirdsEyeOptions& opt, mrpt::img::CImage& out);
-
-/// Same, for the aligned coordinates of a pipeline (Pipeline::aligned()).
+/// travel::viz::renderBirdsEye into an image (see there).
 void renderBirdsEye(const travel::AlignedCloud& points,
                     const std::vector<travel::PointClass>& labels,
                     const std::vector<uint32_t>& cluster_id, const travel::TerrainModel* terrain,

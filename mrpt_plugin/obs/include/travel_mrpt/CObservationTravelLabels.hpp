@@ -31,39 +31,20 @@
 #include <string>
 #include <vector>
 
-#include "travel/Clusters.hpp"
-#include "travel/PointCloud.hpp"
-#include "travel/Result.hpp"
-#include "travel/TerrainModel.hpp"
+#include "travel/LabelledFrame.hpp"
 
 namespace travel_mrpt {
 
-/// One non-empty tri-grid node of the terrain model, compactly.
-struct TerrainNodeRecord {
-    /// Index into travel::TerrainModel::nodes: 4 * (iy * cells_per_side + ix) + triangle.
-    uint32_t index = 0;
-    travel::NodeClass node_class = travel::NodeClass::Unknown;
-    bool traversable = false;
-    /// true: normal/d/mean are TTMF's refitted plane, false: the node-wise PCA plane.
-    bool refitted = false;
-    /// Plane normal . p + d = 0 (aligned frame).
-    Eigen::Vector3f normal{0.f, 0.f, 1.f};
-    float d = 0.f;
-    /// TTMF corner heights (NaN where no traversable node voted).
-    Eigen::Vector3f corner_z{0.f, 0.f, 0.f};
-    Eigen::Vector3f mean{0.f, 0.f, 0.f};
-};
+using travel::TerrainNodeRecord;
+using travel::TerrainSummary;
 
-/// The terrain model without its empty nodes and per-point bookkeeping. Its tri-grid geometry
-/// (resolution, cells_per_side, origin_xy in the aligned frame; nodeAt, triangleCorners) is
-/// libtravel's.
-struct TerrainSummary : travel::TriGridGeometry {
-    std::vector<TerrainNodeRecord> nodes;  ///< non-empty nodes, increasing index
-
-    std::size_t numTraversable() const;
-};
-
-class CObservationTravelLabels : public mrpt::obs::CObservation, public mrpt::opengl::Visualizable {
+/// The frame's data (points, labels, clusters, terrain, timings) and its filling from libtravel
+/// output are travel::LabelledFrame's; this class adds what MRPT needs: the sensor pose, the
+/// source class, serialization and the 3-D view. assign() leaves sensorPose, sourceClass,
+/// timestamp and sensorLabel to the caller.
+class CObservationTravelLabels : public mrpt::obs::CObservation,
+                                 public mrpt::opengl::Visualizable,
+                                 public travel::LabelledFrame {
     DEFINE_SERIALIZABLE(CObservationTravelLabels, travel_mrpt)
 
   public:
@@ -74,32 +55,6 @@ class CObservationTravelLabels : public mrpt::obs::CObservation, public mrpt::op
     mrpt::poses::CPose3D sensorPose;
     /// Class name of the source observation, e.g. "mrpt::obs::CObservationVelodyneScan".
     std::string sourceClass;
-
-    // ---- Per point, same order and count as the source cloud, sensor frame ----
-    std::vector<float> x, y, z, intensity;
-    /// travel::PointClass values (0 invalid, 1 ground, 2 non-ground, 3 outlier).
-    std::vector<uint8_t> labels;
-    /// 0 = no cluster, k > 0 = clusters[k - 1].
-    std::vector<uint32_t> clusterId;
-
-    /// One per cluster, clusters[k].id == k + 1 (aligned frame).
-    std::vector<travel::ClusterSummary> clusters;
-    /// Terrain model (aligned frame).
-    TerrainSummary terrain;
-    /// Sensor -> aligned rotation of this frame (travel::Pipeline::aligned().rotation).
-    Eigen::Matrix3f alignedRotation = Eigen::Matrix3f::Identity();
-    travel::StageTimings timings;
-
-    /// Fills every TRAVEL field from libtravel output (keeps vector capacity: no allocation
-    /// once warmed up). `cloud` is the sensor-frame input of Pipeline::process(). Throws
-    /// std::invalid_argument when result and cloud sizes differ. sensorPose, sourceClass,
-    /// timestamp and sensorLabel are left to the caller.
-    void assign(const travel::PointCloud& cloud, const travel::Result& result,
-                const Eigen::Matrix3f& aligned_rotation);
-
-    /// Number of points with label `c`.
-    std::size_t count(travel::PointClass c) const;
-    std::size_t size() const { return labels.size(); }
 
     void getSensorPose(mrpt::poses::CPose3D& out_sensor_pose) const override {
         out_sensor_pose = sensorPose;

@@ -29,10 +29,10 @@
 #include <regex>
 #include <string>
 
+#include "travel/MotionEstimator.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/Result.hpp"
-#include "travel_mrpt/MotionEstimator.hpp"
 #include "travel_mrpt/TravelFilterOptions.hpp"
 
 namespace mrpt::obs {
@@ -106,7 +106,7 @@ class TravelFilter : public mrpt::system::COutputLogger {
     void reset();
 
     /// The motion the filter would use for a frame at time t (robot frame), for inspection.
-    MotionEstimate motionAt(mrpt::Clock::time_point t) const;
+    travel::MotionEstimate motionAt(mrpt::Clock::time_point t) const;
 
     /// Stages "convert" and "travel". The filter clears it on destruction: dump it before.
     mrpt::system::CTimeLogger& timeLogger() { return time_logger_; }
@@ -126,7 +126,7 @@ class TravelFilter : public mrpt::system::COutputLogger {
     TravelFilterOptions options_;
     std::regex label_regex_;
     std::map<std::string, SensorPipeline> pipelines_;
-    MotionEstimator motion_;
+    travel::MotionEstimator motion_;
     mrpt::system::CTimeLogger time_logger_{true, "TravelFilter"};
     // Each cause is logged once (until the options change).
     bool noted_no_attitude_ = false, noted_no_velocity_ = false;

@@ -124,4 +124,11 @@ struct Scene {
     void validate() const;
 };
 
+/// Robot base pose on the scene's terrain: x, y, yaw given; z, roll, pitch from the
+/// least-squares terrain plane under the footprint (robot-frame corners) and its centre.
+/// Returns the rotation (robot -> world) and fills z.
+Eigen::Matrix3d robotAttitudeOnTerrain(const Scene& scene,
+                                       const std::vector<Eigen::Vector2d>& footprint, double x,
+                                       double y, double yaw, double& z);
+
 }  // namespace travel::sim

@@ -14,9 +14,9 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-#include "travel_mrpt/TravelFilterOptions.hpp"
+#include "travel/Config.hpp"
 
-namespace travel_mrpt {
+namespace travel {
 
 struct MotionEstimate {
     /// Robot orientation in a gravity-aligned world (yaw arbitrary: only roll/pitch matter).
@@ -24,6 +24,16 @@ struct MotionEstimate {
     std::optional<Eigen::Vector3d> linear_velocity;   ///< robot frame [m/s]
     std::optional<Eigen::Vector3d> angular_velocity;  ///< robot frame [rad/s]
 };
+
+/// One IMU reading, each part optional (what the device reports), in the IMU frame.
+struct ImuReading {
+    std::optional<Eigen::Quaterniond> orientation;    ///< world <- IMU (need not be normalised)
+    std::optional<double> roll, pitch, yaw;           ///< [rad], used when no orientation
+    std::optional<Eigen::Vector3d> angular_velocity;  ///< gyro [rad/s]
+};
+
+/// Rz(yaw) Ry(pitch) Rx(roll) (MRPT's CPose3D convention).
+Eigen::Matrix3d yawPitchRoll(double yaw, double pitch, double roll);
 
 class MotionEstimator {
   public:
@@ -37,6 +47,14 @@ class MotionEstimator {
     /// Measured robot-frame twist from wheel odometry: (vx, vy, 0) and (0, 0, omega).
     void addOdometryVelocity(double t, const Eigen::Vector3d& v_robot,
                              const Eigen::Vector3d& w_robot);
+    /// An IMU reading: its attitude (orientation, else roll/pitch with yaw 0 when absent: the
+    /// world yaw reference does not change roll/pitch) and its gyro, moved to the robot frame
+    /// with the IMU's mounting rotation. Non-finite or degenerate parts are ignored.
+    void addImu(double t, const Eigen::Matrix3d& robot_R_imu, const ImuReading& reading);
+    /// Planar wheel odometry: pose (x, y, phi) and, when known, velocities (vx, vy, omega) in
+    /// the robot frame.
+    void addPlanarOdometry(double t, double x, double y, double phi,
+                           const std::optional<Eigen::Vector3d>& vx_vy_omega);
     /// Robot pose in a world/map frame (3-D: its roll/pitch are also an attitude sample).
     void addRobotPose(double t, const Eigen::Isometry3d& world_T_robot);
     /// Odometry pose (planar, its own frame): used for differencing only, never as attitude.
@@ -77,4 +95,4 @@ class MotionEstimator {
     PoseStream robot_poses_, odometry_poses_;
 };
 
-}  // namespace travel_mrpt
+}  // namespace travel

@@ -1,9 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-#include "travel_mrpt/MotionEstimator.hpp"
+#include "travel/MotionEstimator.hpp"
 
 #include <cmath>
 
-namespace travel_mrpt {
+namespace travel {
 namespace {
 
 /// Rotation vector of R (axis * angle), robust near identity.
@@ -13,6 +13,13 @@ Eigen::Vector3d logOf(const Eigen::Matrix3d& R) {
 }
 
 }  // namespace
+
+Eigen::Matrix3d yawPitchRoll(double yaw, double pitch, double roll) {
+    return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+            Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+            Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+        .toRotationMatrix();
+}
 
 void MotionEstimator::PoseStream::add(double t, const Eigen::Isometry3d& pose) {
     // A repeated time stamp would make a zero interval: keep the newer pose only.
@@ -49,6 +56,34 @@ void MotionEstimator::addOdometryVelocity(double t, const Eigen::Vector3d& v_rob
                                           const Eigen::Vector3d& w_robot) {
     odom_linear_ = {true, t, v_robot};
     odom_angular_ = {true, t, w_robot};
+}
+
+void MotionEstimator::addImu(double t, const Eigen::Matrix3d& robot_R_imu,
+                             const ImuReading& reading) {
+    std::optional<Eigen::Matrix3d> world_R_imu;
+    if (reading.orientation) {
+        const Eigen::Quaterniond& q = *reading.orientation;
+        if (q.norm() > 1e-9 && std::isfinite(q.norm()))
+            world_R_imu = q.normalized().toRotationMatrix();
+    } else if (reading.roll && reading.pitch) {
+        world_R_imu = yawPitchRoll(reading.yaw.value_or(0.0), *reading.pitch, *reading.roll);
+    }
+    if (world_R_imu && world_R_imu->allFinite())
+        addAttitude(t, *world_R_imu * robot_R_imu.transpose());
+    if (reading.angular_velocity && reading.angular_velocity->allFinite())
+        addAngularVelocity(t, robot_R_imu * *reading.angular_velocity);
+}
+
+void MotionEstimator::addPlanarOdometry(double t, double x, double y, double phi,
+                                        const std::optional<Eigen::Vector3d>& vx_vy_omega) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = yawPitchRoll(phi, 0, 0);
+    pose.translation() = Eigen::Vector3d(x, y, 0);
+    addOdometryPose(t, pose);
+    if (vx_vy_omega) {
+        const Eigen::Vector3d& v = *vx_vy_omega;
+        addOdometryVelocity(t, Eigen::Vector3d(v.x(), v.y(), 0), Eigen::Vector3d(0, 0, v.z()));
+    }
 }
 
 void MotionEstimator::addRobotPose(double t, const Eigen::Isometry3d& world_T_robot) {
@@ -119,4 +154,4 @@ void MotionEstimator::reset() {
     odometry_poses_.has_last = odometry_poses_.has_previous = false;
 }
 
-}  // namespace travel_mrpt
+}  // namespace travel
