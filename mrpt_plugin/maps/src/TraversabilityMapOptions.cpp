@@ -11,8 +11,8 @@ void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFil
                                                   const std::string& section) {
     TraversabilityMapOptions result = *this;
     const auto keys = config_text::readSection(source, section);
-    config_text::applySection(keys, result.travel.params, result.map(),
-                              static_cast<travel::FilterSection&>(result.travel));
+    travel::applySectionKeys(keys, result.travel.params, result.map(),
+                             static_cast<travel::FilterSection&>(result.travel));
     try {
         result.validate();
     } catch (const travel::ConfigError& e) {

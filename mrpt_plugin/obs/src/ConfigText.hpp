@@ -35,13 +35,6 @@ inline std::vector<travel::SectionKey> readSection(const mrpt::config::CConfigFi
     return out;
 }
 
-/// travel::applySectionKeys, under the name TraversabilityMapOptions.cpp calls.
-template <class... Sections>
-void applySection(const std::vector<travel::SectionKey>& keys, travel::Params& params,
-                  Sections&... sections) {
-    travel::applySectionKeys(keys, params, sections...);
-}
-
 /// Every key of `sections...` as `key = value` in `section` of `target`.
 template <class... Sections>
 void writeSection(mrpt::config::CConfigFileBase& target, const std::string& section,
