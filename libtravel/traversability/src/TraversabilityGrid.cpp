@@ -311,6 +311,20 @@ float TraversabilityGrid::groundHeight(long cell) const {
     return ground_count_[cell] > 0 ? ground_mean_[cell] : kNaN;
 }
 
+double TraversabilityGrid::meanGroundHeight() const {
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t c = 0; c < cellCount(); ++c)
+        if (ground_count_[c] > 0) sum += ground_mean_[c], ++count;
+    return count ? sum / double(count) : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::array<std::size_t, 3> TraversabilityGrid::stateCounts(const GridFusionParams& fusion) const {
+    std::array<std::size_t, 3> counts{};
+    for (std::size_t c = 0; c < cellCount(); ++c) ++counts[int(state(long(c), fusion))];
+    return counts;
+}
+
 float TraversabilityGrid::groundSpread(long cell) const {
     const uint32_t n = ground_count_[cell];
     return n > 1 ? std::sqrt(std::max(0.f, ground_m2_[cell]) / float(n - 1)) : 0.f;

@@ -12,15 +12,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "travel/Errors.hpp"
+#include "travel/traversability/FrameFusion.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
-
-using travel::PointClass;
 
 namespace travel_mrpt {
 
@@ -65,7 +63,8 @@ octomap::OcTreeKey unpack(uint64_t v) {
 }  // namespace
 
 struct CTraversabilityMap::Scratch {
-    std::vector<uint64_t> ground_ends, obstacle_ends, far_ends, free_keys;
+    travel::RayEnds ends;
+    travel::VoxelUpdate voxels;
     octomap::KeyRay ray;
 };
 
@@ -132,99 +131,37 @@ bool CTraversabilityMap::internal_insertObservation(
 void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
                                    const mrpt::poses::CPose3D& robotPose) {
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
-    const travel::AlignedCloud& a = *frame.aligned;
-    const travel::Result& result = frame.result;
-    const travel::TerrainModel& terrain = result.terrain;
-    const std::size_t n = std::min({a.x.size(), a.valid.size(), result.labels.size()});
-
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
-    const Eigen::Matrix3f to_world = sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
-                                     frame.alignedRotation.transpose();
-    const Eigen::Vector3f origin(float(sensor_in_world.x()), float(sensor_in_world.y()),
-                                 float(sensor_in_world.z()));
-    const float sensor_height = float(options_.travel.params.sensor_height);
-    const float min_h = float(options_.obstacle_min_height);
-    const float max_h = float(options_.obstacle_max_height);
-    const float max_ray = float(options_.max_ray_length);
-
+    const travel::PlacedFrame placed{
+        *frame.aligned, frame.result,
+        sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
+            frame.alignedRotation.transpose(),
+        Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),
+                        float(sensor_in_world.z())),
+        mrpt::Clock::toDouble(frame.timestamp)};
     Scratch& s = *scratch_;
-    s.ground_ends.clear();
-    s.obstacle_ends.clear();
-    s.far_ends.clear();
+    travel::fuseFrame(placed, options_, float(options_.travel.params.sensor_height), grid_, s.ends);
+
+    // The ray ends as OctoMap keys; the voxels along the rays are carved free, the obstacle
+    // ends marked occupied, each voxel once.
+    s.voxels.clear();
     octomap::OcTreeKey key;
-    const auto endKey = [&](const Eigen::Vector3f& p, std::vector<uint64_t>& near_list) {
-        Eigen::Vector3f end = p;
-        std::vector<uint64_t>* list = &near_list;
-        const float range = (p - origin).norm();
-        if (range > max_ray) {  // too long to trust its end: carve up to max_ray only
-            end = origin + (p - origin) * (max_ray / range);
-            list = &s.far_ends;
-        }
-        if (octree_->coordToKeyChecked(end.x(), end.y(), end.z(), key)) list->push_back(pack(key));
+    const auto toKeys = [&](const std::vector<Eigen::Vector3f>& points,
+                            std::vector<uint64_t>& keys) {
+        for (const Eigen::Vector3f& p : points)
+            if (octree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) keys.push_back(pack(key));
     };
-
-    grid_.beginFrame();
-    // Pass 1: ground points, so that pass 2 sees this frame's ground heights too.
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!a.valid[i] || result.labels[i] != PointClass::Ground) continue;
-        const Eigen::Vector3f pa(a.x[i], a.y[i], a.z[i]);
-        const Eigen::Vector3f pw = to_world * pa + origin;
-        grid_.addGround(pw.x(), pw.y(), pw.z(), terrain.groundSlopeDeg(pa.x(), pa.y()));
-        endKey(pw, s.ground_ends);
-    }
-    // Pass 2: non-ground points, by their height above the local ground: TRAVEL's
-    // (TerrainModel::heightAboveGround), else the ground fused in the grid cell this frame, else
-    // its cluster's ground, else the sensor height.
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!a.valid[i] || result.labels[i] != PointClass::NonGround) continue;
-        const Eigen::Vector3f pa(a.x[i], a.y[i], a.z[i]);
-        const Eigen::Vector3f pw = to_world * pa + origin;
-        float height = terrain.heightAboveGround(pa.x(), pa.y(), pa.z());
-        if (!std::isfinite(height)) {
-            const long cell = grid_.cellIndex(pw.x(), pw.y());
-            const uint32_t cluster = i < result.cluster_id.size() ? result.cluster_id[i] : 0;
-            if (cell >= 0 && std::isfinite(grid_.groundHeightThisFrame(cell)))
-                height = pw.z() - grid_.groundHeightThisFrame(cell);
-            else if (cluster > 0 && cluster <= result.clusters.size() &&
-                     std::isfinite(result.clusters[cluster - 1].ground_z))
-                height = pa.z() - result.clusters[cluster - 1].ground_z;
-            else
-                height = pa.z() + sensor_height;
-        }
-        if (height < min_h) continue;  // kerb faces, low vegetation: neither ground nor obstacle
-        if (height <= max_h) grid_.addObstacle(pw.x(), pw.y());
-        endKey(pw, s.obstacle_ends);
-    }
-    grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), options_);
-
-    // OctoMap: one ray per distinct end voxel (not per point), free voxels deduplicated, then
-    // each voxel updated once: hits occupied, traversed voxels free unless hit in this frame.
-    const auto sortUnique = [](std::vector<uint64_t>& v) {
-        std::sort(v.begin(), v.end());
-        v.erase(std::unique(v.begin(), v.end()), v.end());
-    };
-    sortUnique(s.ground_ends);
-    sortUnique(s.obstacle_ends);
-    sortUnique(s.far_ends);
-    s.free_keys.clear();
-    const octomap::point3d o(origin.x(), origin.y(), origin.z());
-    const auto castTo = [&](uint64_t end) {
+    toKeys(s.ends.ground, s.voxels.ground_ends);
+    toKeys(s.ends.obstacle, s.voxels.obstacle_ends);
+    toKeys(s.ends.far, s.voxels.far_ends);
+    const octomap::point3d o(placed.origin.x(), placed.origin.y(), placed.origin.z());
+    s.voxels.cast(std::size_t(options_.ray_stride), [&](uint64_t end, std::vector<uint64_t>& out) {
         if (!octree_->computeRayKeys(o, octree_->keyToCoord(unpack(end)), s.ray)) return;
-        for (const octomap::OcTreeKey& k : s.ray) s.free_keys.push_back(pack(k));
-    };
-    const std::size_t stride = std::size_t(options_.ray_stride);
-    for (std::size_t k = 0; k < s.ground_ends.size(); k += stride) castTo(s.ground_ends[k]);
-    for (uint64_t end : s.obstacle_ends) castTo(end);
-    for (uint64_t end : s.far_ends) {
-        castTo(end);
-        s.free_keys.push_back(end);  // the truncated end itself was traversed
-    }
-    sortUnique(s.free_keys);
-    for (uint64_t k : s.free_keys)
-        if (!std::binary_search(s.obstacle_ends.begin(), s.obstacle_ends.end(), k))
-            octree_->updateNode(unpack(k), false, true);
-    for (uint64_t k : s.obstacle_ends) octree_->updateNode(unpack(k), true, true);
+        for (const octomap::OcTreeKey& k : s.ray) out.push_back(pack(k));
+    });
+    for (uint64_t k : s.voxels.freeKeys()) octree_->updateNode(unpack(k), false, true);
+    for (uint64_t k : s.voxels.occupiedKeys()) octree_->updateNode(unpack(k), true, true);
     octree_->updateInnerOccupancy();
 
     ++frames_inserted_;
@@ -257,15 +194,11 @@ const mrpt::maps::CSimplePointsMap* CTraversabilityMap::getAsSimplePointsMap() c
 void CTraversabilityMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
     const GridGeometry& g = options_;
     // The plane at the mean ground height of the observed cells, so that voxels sit on it.
-    double z_sum = 0;
-    std::size_t z_count = 0;
-    for (std::size_t c = 0; c < grid_.cellCount(); ++c)
-        if (std::isfinite(grid_.groundHeight(long(c))))
-            z_sum += grid_.groundHeight(long(c)), ++z_count;
+    const double z_mean = grid_.meanGroundHeight();
     auto plane = mrpt::opengl::CTexturedPlane::Create(float(g.min_x), float(g.max_x),
                                                       float(g.min_y), float(g.max_y));
     plane->assignImage(traversabilityImage(*this, /*north_up=*/false));
-    plane->setLocation(0, 0, z_count ? z_sum / double(z_count) - 0.02 : 0.0);
+    plane->setLocation(0, 0, std::isfinite(z_mean) ? z_mean - 0.02 : 0.0);
     o.insert(plane);
 
     auto voxels = mrpt::opengl::CPointCloudColoured::Create();
@@ -277,16 +210,12 @@ void CTraversabilityMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) co
 }
 
 std::string CTraversabilityMap::asString() const {
-    std::size_t traversable = 0, obstacle = 0;
-    for (std::size_t c = 0; c < grid_.cellCount(); ++c) {
-        const CellState st = state(long(c));
-        traversable += st == CellState::Traversable;
-        obstacle += st == CellState::Obstacle;
-    }
+    const auto counts = grid_.stateCounts(options_);
     std::ostringstream out;
     out << "CTraversabilityMap: " << grid_.sizeX() << " x " << grid_.sizeY() << " cells of "
-        << options_.resolution << " m, " << grid_.observedCells() << " observed (" << traversable
-        << " traversable, " << obstacle << " obstacle), OctoMap " << octree_->getNumLeafNodes()
+        << options_.resolution << " m, " << grid_.observedCells() << " observed ("
+        << counts[int(CellState::Traversable)] << " traversable, "
+        << counts[int(CellState::Obstacle)] << " obstacle), OctoMap " << octree_->getNumLeafNodes()
         << " leaves of " << options_.octomap_resolution << " m, " << frames_inserted_ << " frames";
     return out.str();
 }

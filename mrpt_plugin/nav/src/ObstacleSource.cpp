@@ -4,7 +4,6 @@
 #include <mrpt/maps/CSimplePointsMap.h>
 
 #include <chrono>
-#include <cmath>
 
 namespace travel_mrpt {
 
@@ -12,59 +11,24 @@ void ObstacleSource::setMemory(const travel::NavSection& nav) {
     nav.validate();
     std::lock_guard<std::mutex> lock(update_mutex_);
     memory_ = nav;
-    past_.clear();
+    // In MRPT clock ticks; -1 (no memory) unless memory_seconds > 0.
+    const auto max_age = std::chrono::duration_cast<mrpt::Clock::duration>(
+        std::chrono::duration<double>(nav.memory_seconds));
+    recall_.configure(nav.memory_seconds > 0.0 ? int64_t(max_age.count()) : -1, nav.memory_radius);
 }
 
 void ObstacleSource::update(const ObstacleFrame& frame) {
     std::lock_guard<std::mutex> lock(update_mutex_);
     work_.clear();
     compute(frame, work_);
-    addMemory(frame, work_);
+    recall_.recallAndRemember(frame.timestamp.time_since_epoch().count(), frame.robotOdometry,
+                              work_);
     work_.timestamp = frame.timestamp;
     {
         std::lock_guard<std::mutex> publish(publish_mutex_);
         std::swap(work_, published_);
         has_published_ = true;
     }
-}
-
-void ObstacleSource::addMemory(const ObstacleFrame& frame, ObstaclePoints& out) {
-    if (!(memory_.memory_seconds > 0.0)) return;
-    const auto max_age = std::chrono::duration_cast<mrpt::Clock::duration>(
-        std::chrono::duration<double>(memory_.memory_seconds));
-    while (!past_.empty() && frame.timestamp - past_.front().stamp > max_age) {
-        spare_.push_back(std::move(past_.front().points));
-        past_.pop_front();
-    }
-    const std::size_t fresh = out.size();
-    const double r2 = memory_.memory_radius * memory_.memory_radius;
-    const Eigen::Vector3d& now = frame.robotOdometry;
-    for (const Remembered& m : past_) {
-        // Point seen from pose m.odometry -> odometry frame -> robot frame now.
-        const double c0 = std::cos(m.odometry.z()), s0 = std::sin(m.odometry.z());
-        const double c1 = std::cos(now.z()), s1 = std::sin(now.z());
-        for (std::size_t i = 0; i < m.points.size(); ++i) {
-            const double wx = m.odometry.x() + c0 * m.points.x[i] - s0 * m.points.y[i];
-            const double wy = m.odometry.y() + s0 * m.points.x[i] + c0 * m.points.y[i];
-            const double dx = wx - now.x(), dy = wy - now.y();
-            if (dx * dx + dy * dy > r2) continue;
-            out.push_back(static_cast<float>(c1 * dx + s1 * dy),
-                          static_cast<float>(-s1 * dx + c1 * dy), m.points.z[i]);
-        }
-    }
-    // Remember this frame's own obstacles (not the recalled ones: they are already stored).
-    Remembered r;
-    if (!spare_.empty()) {
-        r.points = std::move(spare_.back());
-        spare_.pop_back();
-    }
-    r.points.clear();
-    r.stamp = frame.timestamp;
-    r.odometry = now;
-    for (std::size_t i = 0; i < fresh; ++i)
-        if (out.x[i] * out.x[i] + out.y[i] * out.y[i] <= 4.0 * r2)
-            r.points.push_back(out.x[i], out.y[i], out.z[i]);
-    past_.push_back(std::move(r));
 }
 
 bool ObstacleSource::latest(ObstaclePoints& out) const {

@@ -12,8 +12,7 @@ namespace travel_mrpt {
 using mrpt::img::CImage;
 using mrpt::img::TColor;
 
-void toImage(const travel::viz::Picture& picture, CImage& out) {
-    const travel::viz::Raster& raster = picture.raster;
+void toImage(const travel::viz::Raster& raster, CImage& out) {
     out.resize(raster.width, raster.height, mrpt::img::CH_RGB);
     // CImage stores BGR (OpenCV order).
     for (int v = 0; v < raster.height; ++v) {
@@ -23,6 +22,10 @@ void toImage(const travel::viz::Picture& picture, CImage& out) {
             q[0] = c.b, q[1] = c.g, q[2] = c.r;
         }
     }
+}
+
+void toImage(const travel::viz::Picture& picture, CImage& out) {
+    toImage(picture.raster, out);
     out.selectTextFont("9x15");
     for (const travel::viz::TextLabel& label : picture.text)
         out.textOut(label.x, label.y, label.text, TColor(0, 0, 0));

@@ -12,6 +12,8 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "travel/Errors.hpp"
+#include "travel/io/LabelledFrameCodec.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 
 using travel::PointClass;
@@ -22,144 +24,25 @@ namespace travel_mrpt {
 namespace {
 
 constexpr uint8_t kSerializationVersion = 0;
-constexpr uint32_t kMaxStringLength = 65536;
-constexpr int32_t kMaxCellsPerSide = 32767;  // 4 * cells^2 still fits a uint32 node index
-constexpr uint8_t kTraversableFlag = 1, kRefittedFlag = 2;
-// Large counts are read in slices, growing the vector as bytes actually arrive: a corrupt
-// count then fails at the end of the stream instead of allocating gigabytes up front.
-constexpr std::size_t kReadSlice = 1u << 16;
 
-// Every stage of travel::StageTimings, in serialization order.
-using travel::StageTimings;
-constexpr double StageTimings::*kTimingFields[] = {
-    &StageTimings::preprocess,   &StageTimings::embedding,   &StageTimings::node_fitting,
-    &StageTimings::graph_search, &StageTimings::ttmf,        &StageTimings::labelling,
-    &StageTimings::ground_total, &StageTimings::range_image, &StageTimings::horizontal,
-    &StageTimings::vertical,     &StageTimings::clusters,    &StageTimings::objects_total};
+/// The archive as the byte stream of travel::io's LabelledFrame codec.
+struct ArchiveSink final : travel::io::ByteSink {
+    explicit ArchiveSink(mrpt::serialization::CArchive& a) : archive(a) {}
+    void write(const void* data, std::size_t bytes) override { archive.WriteBuffer(data, bytes); }
+    mrpt::serialization::CArchive& archive;
+};
 
-[[noreturn]] void corrupt(const std::string& what) {
-    throw std::runtime_error("CObservationTravelLabels: corrupt or truncated stream: " + what);
-}
-
-void readExactly(mrpt::serialization::CArchive& in, void* dst, std::size_t bytes,
-                 const char* what) {
-    if (bytes == 0) return;
-    std::size_t got = 0;
-    try {
-        got = in.ReadBuffer(dst, bytes);
-    } catch (const std::exception&) {
-        got = 0;
+struct ArchiveSource final : travel::io::ByteSource {
+    explicit ArchiveSource(mrpt::serialization::CArchive& a) : archive(a) {}
+    std::size_t read(void* data, std::size_t bytes) override {
+        try {
+            return archive.ReadBuffer(data, bytes);
+        } catch (const std::exception&) {
+            return 0;  // MRPT throws at the end of the stream
+        }
     }
-    if (got != bytes) corrupt(std::string("stream ended while reading ") + what);
-}
-
-template <typename T>
-T readPod(mrpt::serialization::CArchive& in, const char* what) {
-    T value{};
-    readExactly(in, &value, sizeof(T), what);
-    return value;
-}
-
-template <typename T>
-void writePodArray(mrpt::serialization::CArchive& out, const std::vector<T>& v) {
-    if (!v.empty()) out.WriteBufferFixEndianness(v.data(), v.size());
-}
-
-template <typename T>
-void readPodArray(mrpt::serialization::CArchive& in, std::vector<T>& v, std::size_t n,
-                  const char* what) {
-    if (n <= v.capacity()) {
-        v.resize(n);
-        readExactly(in, v.data(), n * sizeof(T), what);
-        return;
-    }
-    v.clear();
-    while (v.size() < n) {
-        const std::size_t done = v.size(), slice = std::min(kReadSlice, n - done);
-        v.resize(done + slice);
-        readExactly(in, v.data() + done, slice * sizeof(T), what);
-    }
-}
-
-void writeString(mrpt::serialization::CArchive& out, const std::string& s) {
-    const uint32_t n = static_cast<uint32_t>(std::min<std::size_t>(s.size(), kMaxStringLength));
-    out << n;
-    if (n) out.WriteBuffer(s.data(), n);
-}
-
-void readString(mrpt::serialization::CArchive& in, std::string& s, const char* what) {
-    const auto n = readPod<uint32_t>(in, what);
-    if (n > kMaxStringLength)
-        corrupt(std::string(what) + " is " + std::to_string(n) + " characters long (limit " +
-                std::to_string(kMaxStringLength) + ")");
-    s.resize(n);
-    readExactly(in, s.data(), n, what);
-}
-
-void writeVec3(mrpt::serialization::CArchive& out, const Eigen::Vector3f& v) {
-    out << v.x() << v.y() << v.z();
-}
-
-Eigen::Vector3f readVec3(mrpt::serialization::CArchive& in, const char* what) {
-    float v[3];
-    readExactly(in, v, sizeof(v), what);
-    return {v[0], v[1], v[2]};
-}
-
-void writeCluster(mrpt::serialization::CArchive& out, const travel::ClusterSummary& c) {
-    out << c.id << c.num_points << c.first_point;
-    writeVec3(out, c.centroid);
-    writeVec3(out, c.aabb_min);
-    writeVec3(out, c.aabb_max);
-    out << c.obb_yaw;
-    writeVec3(out, c.obb_center);
-    writeVec3(out, c.obb_extent);
-    out << c.ground_z << c.height_above_ground;
-}
-
-travel::ClusterSummary readCluster(mrpt::serialization::CArchive& in) {
-    travel::ClusterSummary c;
-    c.id = readPod<uint32_t>(in, "cluster id");
-    c.num_points = readPod<uint32_t>(in, "cluster size");
-    c.first_point = readPod<uint32_t>(in, "cluster first point");
-    c.centroid = readVec3(in, "cluster centroid");
-    c.aabb_min = readVec3(in, "cluster box");
-    c.aabb_max = readVec3(in, "cluster box");
-    c.obb_yaw = readPod<float>(in, "cluster yaw");
-    c.obb_center = readVec3(in, "cluster oriented box");
-    c.obb_extent = readVec3(in, "cluster oriented box");
-    c.ground_z = readPod<float>(in, "cluster ground height");
-    c.height_above_ground = readPod<float>(in, "cluster height");
-    return c;
-}
-
-void writeNode(mrpt::serialization::CArchive& out, const TerrainNodeRecord& n) {
-    const uint8_t flags = (n.traversable ? kTraversableFlag : 0) | (n.refitted ? kRefittedFlag : 0);
-    out << n.index << static_cast<uint8_t>(n.node_class) << flags;
-    writeVec3(out, n.normal);
-    out << n.d;
-    writeVec3(out, n.corner_z);
-    writeVec3(out, n.mean);
-}
-
-TerrainNodeRecord readNode(mrpt::serialization::CArchive& in) {
-    TerrainNodeRecord n;
-    n.index = readPod<uint32_t>(in, "node index");
-    const auto node_class = readPod<uint8_t>(in, "node class");
-    if (node_class < static_cast<uint8_t>(travel::NodeClass::Unknown) ||
-        node_class > static_cast<uint8_t>(travel::NodeClass::Obstacle))
-        corrupt("node class " + std::to_string(node_class) + " (expected 1..3)");
-    n.node_class = static_cast<travel::NodeClass>(node_class);
-    const auto flags = readPod<uint8_t>(in, "node flags");
-    if (flags & ~(kTraversableFlag | kRefittedFlag)) corrupt("node flags " + std::to_string(flags));
-    n.traversable = flags & kTraversableFlag;
-    n.refitted = flags & kRefittedFlag;
-    n.normal = readVec3(in, "node normal");
-    n.d = readPod<float>(in, "node plane");
-    n.corner_z = readVec3(in, "node corners");
-    n.mean = readVec3(in, "node mean");
-    return n;
-}
+    mrpt::serialization::CArchive& archive;
+};
 
 mrpt::img::TColor toTColor(uint32_t rgb, uint8_t alpha = 255) {
     return mrpt::img::TColor((rgb >> 16) & 0xFF, (rgb >> 8) & 0xFF, rgb & 0xFF, alpha);
@@ -168,126 +51,45 @@ mrpt::img::TColor toTColor(uint32_t rgb, uint8_t alpha = 255) {
 }  // namespace
 
 // ---------------------------------------------------------------- serialization
+// Header (sensor label, timestamp, sensor pose, source class), then travel::io's LabelledFrame.
 
 uint8_t CObservationTravelLabels::serializeGetVersion() const {
     return kSerializationVersion;
 }
 
 void CObservationTravelLabels::serializeTo(mrpt::serialization::CArchive& out) const {
-    const std::size_t n = labels.size();
-    if (x.size() != n || y.size() != n || z.size() != n || intensity.size() != n ||
-        clusterId.size() != n)
-        throw std::logic_error(
-            "CObservationTravelLabels: x, y, z, intensity, labels and clusterId must have the "
-            "same size before serialization");
-    writeString(out, sensorLabel);
+    ArchiveSink sink(out);
+    travel::io::writeString(sink, sensorLabel);
     out << timestamp;
     out << sensorPose.x() << sensorPose.y() << sensorPose.z() << sensorPose.yaw()
         << sensorPose.pitch() << sensorPose.roll();
-    writeString(out, sourceClass);
-
-    out << static_cast<uint32_t>(n);
-    writePodArray(out, x);
-    writePodArray(out, y);
-    writePodArray(out, z);
-    writePodArray(out, intensity);
-    writePodArray(out, labels);
-    writePodArray(out, clusterId);
-
-    out << static_cast<uint32_t>(clusters.size());
-    for (const auto& c : clusters) writeCluster(out, c);
-
-    out << terrain.resolution << terrain.cells_per_side << terrain.origin_xy
-        << static_cast<uint32_t>(terrain.nodes.size());
-    for (const auto& node : terrain.nodes) writeNode(out, node);
-
-    for (int i = 0; i < 9; ++i) out << alignedRotation.data()[i];
-    for (const auto field : kTimingFields) out << timings.*field;
+    travel::io::writeString(sink, sourceClass);
+    travel::io::writeLabelledFrame(sink, *this);
 }
 
 void CObservationTravelLabels::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
     if (version != kSerializationVersion)
-        corrupt("unknown version " + std::to_string(version) + " (this build reads version " +
-                std::to_string(kSerializationVersion) + ")");
+        throw std::runtime_error("CObservationTravelLabels: unknown version " +
+                                 std::to_string(version) + " (this build reads version " +
+                                 std::to_string(kSerializationVersion) + ")");
+    ArchiveSource source(in);
+    // A failed read leaves a consistent (empty) object behind.
+    const auto forget = [this] { static_cast<travel::LabelledFrame&>(*this) = {}; };
     try {
-        readString(in, sensorLabel, "sensor label");
+        travel::io::readString(source, sensorLabel, "sensor label");
         in >> timestamp;
         double pose[6];
-        readExactly(in, pose, sizeof(pose), "sensor pose");
+        travel::io::readExactly(source, pose, sizeof(pose), "sensor pose");
         for (double v : pose)
-            if (!std::isfinite(v)) corrupt("non-finite sensor pose");
+            if (!std::isfinite(v)) throw travel::InputError("non-finite sensor pose");
         sensorPose = mrpt::poses::CPose3D(pose[0], pose[1], pose[2], pose[3], pose[4], pose[5]);
-        readString(in, sourceClass, "source class");
-
-        const auto n = readPod<uint32_t>(in, "point count");
-        if (n > kMaxPoints)
-            corrupt("point count " + std::to_string(n) + " above the limit of " +
-                    std::to_string(kMaxPoints));
-        readPodArray(in, x, n, "x");
-        readPodArray(in, y, n, "y");
-        readPodArray(in, z, n, "z");
-        readPodArray(in, intensity, n, "intensity");
-        readPodArray(in, labels, n, "labels");
-        readPodArray(in, clusterId, n, "cluster ids");
-        for (std::size_t i = 0; i < n; ++i)
-            if (labels[i] > static_cast<uint8_t>(PointClass::Outlier))
-                corrupt("label " + std::to_string(labels[i]) + " of point " + std::to_string(i) +
-                        " (expected 0..3)");
-
-        // Every cluster holds at least one point.
-        const auto num_clusters = readPod<uint32_t>(in, "cluster count");
-        if (num_clusters > n)
-            corrupt(std::to_string(num_clusters) + " clusters for " + std::to_string(n) +
-                    " points");
-        clusters.clear();
-        clusters.reserve(std::min<std::size_t>(num_clusters, kReadSlice));
-        for (uint32_t k = 0; k < num_clusters; ++k) {
-            clusters.push_back(readCluster(in));
-            if (clusters.back().id != k + 1)
-                corrupt("cluster " + std::to_string(k) + " has id " +
-                        std::to_string(clusters.back().id) + " (expected " + std::to_string(k + 1) +
-                        ")");
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            if (clusterId[i] > num_clusters)
-                corrupt("cluster id " + std::to_string(clusterId[i]) + " of point " +
-                        std::to_string(i) + " (only " + std::to_string(num_clusters) +
-                        " clusters)");
-
-        terrain.resolution = readPod<float>(in, "terrain resolution");
-        terrain.cells_per_side = readPod<int32_t>(in, "terrain size");
-        terrain.origin_xy = readPod<float>(in, "terrain origin");
-        if (terrain.cells_per_side < 0 || terrain.cells_per_side > kMaxCellsPerSide)
-            corrupt("terrain of " + std::to_string(terrain.cells_per_side) +
-                    " cells per side (expected 0.." + std::to_string(kMaxCellsPerSide) + ")");
-        if (terrain.cells_per_side > 0 &&
-            !(std::isfinite(terrain.resolution) && terrain.resolution > 0.f &&
-              std::isfinite(terrain.origin_xy)))
-            corrupt("terrain resolution or origin not finite and positive");
-        const uint64_t max_nodes = 4ull * static_cast<uint64_t>(terrain.cells_per_side) *
-                                   static_cast<uint64_t>(terrain.cells_per_side);
-        const auto num_nodes = readPod<uint32_t>(in, "node count");
-        if (num_nodes > max_nodes)
-            corrupt(std::to_string(num_nodes) + " nodes in a grid of " + std::to_string(max_nodes));
-        terrain.nodes.clear();
-        terrain.nodes.reserve(std::min<std::size_t>(num_nodes, kReadSlice));
-        for (uint32_t k = 0; k < num_nodes; ++k) {
-            terrain.nodes.push_back(readNode(in));
-            const uint32_t index = terrain.nodes.back().index;
-            if (index >= max_nodes || (k > 0 && index <= terrain.nodes[k - 1].index))
-                corrupt("node index " + std::to_string(index) +
-                        " (expected increasing indices below " + std::to_string(max_nodes) + ")");
-        }
-
-        readExactly(in, alignedRotation.data(), 9 * sizeof(float), "aligned rotation");
-        for (const auto field : kTimingFields) timings.*field = readPod<double>(in, "timings");
+        travel::io::readString(source, sourceClass, "source class");
+        travel::io::readLabelledFrame(source, *this, kMaxPoints);
+    } catch (const travel::InputError& e) {
+        forget();
+        throw std::runtime_error(std::string("CObservationTravelLabels: ") + e.what());
     } catch (...) {
-        // Leave a consistent (empty) object behind.
-        for (auto* v : {&x, &y, &z, &intensity}) v->clear();
-        labels.clear();
-        clusterId.clear();
-        clusters.clear();
-        terrain = TerrainSummary{};
+        forget();
         throw;
     }
 }

@@ -2,7 +2,6 @@
 //
 // Velodyne family: CObservationVelodyneScan (raw packets) and CObservationRotatingScan (range
 // image). Both index lasers in FIRING order; TRAVEL wants rings in ELEVATION order.
-#include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/obs/VelodyneCalibration.h>
@@ -10,8 +9,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 
+#include "travel/io/RotatingScan.hpp"
 #include "travel/io/VelodyneModels.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
@@ -22,26 +21,22 @@ using mrpt::obs::CObservationRotatingScan;
 using mrpt::obs::CObservationVelodyneScan;
 using mrpt::obs::VelodyneCalibration;
 
-// Enough for every Velodyne/Ouster model; a fixed array keeps the per-frame path allocation-free.
-constexpr std::size_t kMaxLasers = 256;
+using travel::io::kMaxLasers;
 using RingTable = std::array<uint16_t, kMaxLasers>;
+using LaserTable = std::array<travel::io::LaserCorrection, kMaxLasers>;
 
 bool fail(std::string* why_not, const char* reason) {
     if (why_not) *why_not = reason;
     return false;
 }
 
-/// ring_of_laser[id] = rank of laser id's elevation (0 = lowest); ties keep id order.
-void makeRingTable(const VelodyneCalibration& calib, RingTable& ring_of_laser) {
-    const std::size_t n = calib.laser_corrections.size();
-    std::array<uint16_t, kMaxLasers> by_elevation{};
-    for (std::size_t i = 0; i < n; ++i) by_elevation[i] = static_cast<uint16_t>(i);
-    std::stable_sort(by_elevation.begin(), by_elevation.begin() + n, [&](uint16_t a, uint16_t b) {
-        return calib.laser_corrections[a].verticalCorrection <
-               calib.laser_corrections[b].verticalCorrection;
-    });
-    for (std::size_t rank = 0; rank < n; ++rank)
-        ring_of_laser[by_elevation[rank]] = static_cast<uint16_t>(rank);
+/// MRPT's calibration as libtravel's (n <= kMaxLasers lasers).
+void toLaserTable(const VelodyneCalibration& calib, LaserTable& lasers) {
+    for (std::size_t i = 0; i < calib.laser_corrections.size(); ++i) {
+        const auto& lc = calib.laser_corrections[i];
+        lasers[i] = {lc.verticalCorrection, lc.verticalOffsetCorrection,
+                     lc.horizontalOffsetCorrection, lc.azimuthCorrection};
+    }
 }
 
 /// Streams MRPT's decoded points straight into the travel cloud (no intermediate copy).
@@ -103,8 +98,10 @@ bool velodyneToTravelCloud(const CObservationVelodyneScan& obs, travel::PointClo
     if (num_lasers > kMaxLasers) return fail(why_not, "Velodyne calibration with > 256 lasers");
     if (obs.scan_packets.empty()) return fail(why_not, "Velodyne scan without packets");
 
+    LaserTable lasers;
+    toLaserTable(obs.calibration, lasers);
     RingTable ring_of_laser{};
-    makeRingTable(obs.calibration, ring_of_laser);
+    travel::io::ringOfLaser(lasers.data(), num_lasers, ring_of_laser.data());
 
     CObservationVelodyneScan::TGeneratePointCloudParameters gen;
     gen.minDistance = 0.f;  // the range window is libtravel's min_range/max_range
@@ -151,54 +148,21 @@ bool rotatingScanToTravelCloud(const CObservationRotatingScan& obs, travel::Poin
     // The per-laser firing delay is only known for fromVelodyne()'s column layout.
     if (!mrpt_quirk) laser_delay_in_columns = 0;
 
-    RingTable ring_of_laser{};
-    makeRingTable(*calib, ring_of_laser);
-    std::array<float, kMaxLasers> cos_vert{}, sin_vert{}, vert_offset{}, horiz_offset{},
-        azimuth_corr{}, firing_delay{};  // firing_delay in columns
-    for (std::size_t r = 0; r < rows; ++r) {
-        const auto& lc = calib->laser_corrections[r];
-        cos_vert[r] = static_cast<float>(std::cos(mrpt::DEG2RAD(lc.verticalCorrection)));
-        sin_vert[r] = static_cast<float>(std::sin(mrpt::DEG2RAD(lc.verticalCorrection)));
-        vert_offset[r] = static_cast<float>(lc.verticalOffsetCorrection);
-        horiz_offset[r] = static_cast<float>(lc.horizontalOffsetCorrection);
-        azimuth_corr[r] = static_cast<float>(mrpt::DEG2RAD(lc.azimuthCorrection));
-        firing_delay[r] = static_cast<float>(laser_delay_in_columns * static_cast<double>(r));
-    }
-
-    const bool has_intensity = static_cast<std::size_t>(obs.intensityImage.rows()) == rows &&
-                               static_cast<std::size_t>(obs.intensityImage.cols()) == cols;
-    const bool has_time = obs.sweepDuration > 0;
-    const float range_scale = static_cast<float>(obs.rangeResolution);
-    const double azimuth_step = obs.azimuthSpan / static_cast<double>(true_cols);
-    const double time_step = obs.sweepDuration / static_cast<double>(true_cols);
-
-    std::size_t num_returns = 0;
-    for (std::size_t c = 0; c <= last_used; ++c)
-        for (std::size_t r = 0; r < rows; ++r) num_returns += ranges(r, c) != 0;
-    out.reserve(num_returns);
-    out.ring.reserve(num_returns);
-    if (has_time) out.time.reserve(num_returns);
-
-    // Column-major: firing order, like the Velodyne decoder.
-    for (std::size_t c = 0; c <= last_used; ++c) {
-        for (std::size_t r = 0; r < rows; ++r) {
-            const uint16_t raw = ranges(r, c);
-            if (raw == 0) continue;  // no return
-            const double column = static_cast<double>(c) + firing_delay[r];
-            const float d = range_scale * static_cast<float>(raw);
-            // Velodyne azimuth grows clockwise seen from above: MRPT +y is Velodyne -x.
-            const float az =
-                static_cast<float>(obs.startAzimuth + azimuth_step * column) + azimuth_corr[r];
-            const float cos_az = std::cos(az), sin_az = std::sin(az);
-            const float xy = d * cos_vert[r];
-            out.push_back(xy * cos_az + horiz_offset[r] * sin_az,
-                          -(xy * sin_az - horiz_offset[r] * cos_az),
-                          d * sin_vert[r] + vert_offset[r],
-                          has_intensity ? static_cast<float>(obs.intensityImage(r, c)) : 0.f);
-            out.ring.push_back(ring_of_laser[r]);
-            if (has_time) out.time.push_back(static_cast<float>(time_step * column));
-        }
-    }
+    travel::io::RangeImageScan scan;
+    scan.ranges = ranges.data();
+    scan.intensity = static_cast<std::size_t>(obs.intensityImage.rows()) == rows &&
+                             static_cast<std::size_t>(obs.intensityImage.cols()) == cols
+                         ? obs.intensityImage.data()
+                         : nullptr;
+    scan.rows = rows, scan.columns = cols, scan.columns_used = last_used + 1;
+    scan.sweep_columns = true_cols;
+    scan.laser_delay_in_columns = laser_delay_in_columns;
+    scan.range_resolution = obs.rangeResolution;
+    scan.start_azimuth = obs.startAzimuth, scan.azimuth_span = obs.azimuthSpan;
+    scan.sweep_duration = obs.sweepDuration;
+    LaserTable lasers;
+    toLaserTable(*calib, lasers);
+    travel::io::rangeImageToCloud(scan, lasers.data(), out);
     return true;
 }
 

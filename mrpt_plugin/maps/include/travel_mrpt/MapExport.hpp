@@ -31,18 +31,16 @@ class CTraversabilityMap;
 void toOccupancyGrid(const CTraversabilityMap& map, mrpt::maps::COccupancyGridMap2D& out);
 void toHeightGrid(const CTraversabilityMap& map, mrpt::maps::CHeightGridMap2D& out);
 
-/// One pixel per cell. north_up: row 0 = max_y (pictures); else row 0 = min_y (textures).
+/// One pixel per cell (travel::viz::traversabilityRaster, heightRaster). north_up: row 0 = max_y
+/// (pictures); else row 0 = min_y (textures).
 mrpt::img::CImage traversabilityImage(const CTraversabilityMap& map, bool north_up = true);
 /// Ground height in jet colours over [z_lo, z_hi] (auto: observed range when z_lo >= z_hi).
 mrpt::img::CImage heightImage(const CTraversabilityMap& map, double z_lo = 0, double z_hi = 0);
-/// Nearest-neighbour enlargement so that small grids are visible (factor >= 1).
-mrpt::img::CImage enlarge(const mrpt::img::CImage& image, int factor);
 
 void saveOctoMap(const CTraversabilityMap& map, const std::string& path);
 void saveOccupancyGridGz(const CTraversabilityMap& map, const std::string& path);
 void saveHeightGridGz(const CTraversabilityMap& map, const std::string& path);
 void save3DScene(const CTraversabilityMap& map, const std::string& path);
-void savePng(const mrpt::img::CImage& image, const std::string& path);
 
 /// Writes every export with this prefix (see CTraversabilityMap::
 /// saveMetricMapRepresentationToFile) and returns the paths written. PNGs are enlarged so the

@@ -11,9 +11,9 @@
 // the navigator never sees a half-written set, and neither side waits for the other's work.
 // Buffers are reused across frames (no allocation once warm).
 //
-// Optional short-term memory: obstacles of earlier frames are kept for `memory_seconds` while
-// they stay within `memory_radius` of the robot (moved with the robot's odometry), because a
-// LiDAR on a robot does not see the ground right around itself (below its lowest beam).
+// Optional short-term memory (travel::ObstacleMemory): obstacles of earlier frames are kept for
+// `memory_seconds` while they stay within `memory_radius` of the robot (moved with the robot's
+// odometry), because a LiDAR on a robot does not see the ground right around itself.
 #pragma once
 
 #include <mrpt/core/Clock.h>
@@ -21,7 +21,6 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstddef>
-#include <deque>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -30,6 +29,7 @@
 #include "travel/PointCloud.hpp"
 #include "travel/Preprocessing.hpp"
 #include "travel/Result.hpp"
+#include "travel/traversability/ObstacleMemory.hpp"
 #include "travel/traversability/TravelObstacles.hpp"
 
 namespace mrpt::maps {
@@ -85,18 +85,10 @@ class ObstacleSource {
     virtual void compute(const ObstacleFrame& frame, ObstaclePoints& out) = 0;
 
   private:
-    struct Remembered {
-        mrpt::Clock::time_point stamp;
-        Eigen::Vector3d odometry;  // robot pose when seen
-        ObstaclePoints points;     // robot frame then
-    };
-    void addMemory(const ObstacleFrame& frame, ObstaclePoints& out);
-
     travel::NavSection memory_;
-    std::mutex update_mutex_;            // one update() at a time
-    ObstaclePoints work_;                // written by update() only
-    std::deque<Remembered> past_;        // written by update() only
-    std::vector<ObstaclePoints> spare_;  // recycled memory buffers
+    std::mutex update_mutex_;        // one update() at a time
+    ObstaclePoints work_;            // written by update() only
+    travel::ObstacleMemory recall_;  // written by update() only
     mutable std::mutex publish_mutex_;
     ObstaclePoints published_;
     bool has_published_ = false;

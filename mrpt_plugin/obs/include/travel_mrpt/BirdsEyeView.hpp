@@ -21,6 +21,8 @@ namespace travel_mrpt {
 using travel::viz::BirdsEyeOptions;
 using travel::viz::clusterColour;
 
+/// Copies a raster into `out` (resized, RGB).
+void toImage(const travel::viz::Raster& raster, mrpt::img::CImage& out);
 /// Copies a picture into `out` (resized, RGB) and writes its text in the 9x15 font.
 void toImage(const travel::viz::Picture& picture, mrpt::img::CImage& out);
 

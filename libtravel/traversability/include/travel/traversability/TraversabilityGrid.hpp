@@ -16,6 +16,7 @@
 //   grid.state(ix, iy, fusion)
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -69,6 +70,10 @@ class TraversabilityGrid {
     float logodds(long cell) const { return logodds_[cell]; }
     /// Mean ground height [m] (NaN when no ground point fell in the cell).
     float groundHeight(long cell) const;
+    /// Mean ground height of the cells holding ground [m] (NaN when none does).
+    double meanGroundHeight() const;
+    /// Number of cells in each state, indexed by CellState.
+    std::array<std::size_t, 3> stateCounts(const GridFusionParams& fusion) const;
     /// During a frame (before endFrame): the fused ground height, else this frame's mean ground
     /// height in the cell so far, else NaN.
     float groundHeightThisFrame(long cell) const;
