@@ -18,11 +18,10 @@
 //   preset=vlp16  sensor_height=1.8  max_step_height=0.1
 // The keys and their units are listed in TraversabilityMapOptions.hpp (and docs/map.md).
 //
-// A point is an obstacle when TRAVEL labels it non-ground and it stands at least
-// obstacle_min_height above the local ground: the plane of the frame's traversable tri-grid node
-// under it, else the ground height fused in its grid cell (this frame's ground points included),
-// else a neighbouring node's plane, else its cluster's ground_z, else -sensor_height below the
-// sensor.
+// The grid fusion, the obstacle rule (height above the local ground: its one fallback chain)
+// and the ray bookkeeping are libtravel's (travel::fuseFrame, travel::VoxelUpdate in
+// travel/traversability/FrameFusion.hpp); this class places the frame with MRPT poses and
+// casts the rays in the OctoMap.
 #pragma once
 
 #include <mrpt/maps/CMetricMap.h>
