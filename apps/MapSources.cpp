@@ -60,6 +60,17 @@ std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
     return std::nullopt;
 }
 
+namespace {
+// TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the
+// ground), on the one frame that has it.
+void reportMount(const Options& o, const travel_mrpt::CTraversabilityMap& map) {
+    const travel::MountNote& note = map.lastFrame().result.mount;
+    if (note && !o.quiet)
+        std::cerr << "travel-map: " << (note.isWarning() ? "warning: " : "") << note.message
+                  << "\n";
+}
+}  // namespace
+
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
                const std::optional<PoseFileSource>& pose_file) {
     travel_mrpt::RawlogReader reader(o.input);
@@ -80,6 +91,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             return;
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
+            reportMount(o, map);
             ++stats.inserted;
             ++stats.lidar;
         } else {
@@ -150,9 +162,10 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
         points->mark_as_modified();
         obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
         ++stats.lidar;
-        if (map.insertObservation(*obs, pose ? *pose : CPose3D()))
+        if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
+            reportMount(o, map);
             ++stats.inserted;
-        else
+        } else
             ++stats.rejected;
         progress.update(k + 1, files.size(),
                         std::chrono::duration<double>(Clock::now() - start).count());

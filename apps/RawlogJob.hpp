@@ -160,6 +160,9 @@ class RawlogSegmenter {
         totals_.convert_ms.push_back(frame_.convert_ms);
         csv_.add(frame, obs, frame_);
         reference_.add(result);
+        if (result.mount && !options_.quiet)
+            std::cerr << "travel-rawlog: " << (result.mount.isWarning() ? "warning: " : "")
+                      << obs.sensorLabel << ": " << result.mount.message << "\n";
         if (!options_.png_prefix.empty() && frame_.aligned)
             writePictures(frame, obs, *frame_.aligned);
     }

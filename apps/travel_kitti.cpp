@@ -133,6 +133,9 @@ int run(int argc, char** argv) {
         }
         travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame);
         totals.add(frame);
+        if (const travel::MountNote& note = frame.segmentation.mount; note && verbose)
+            std::cerr << "travel-kitti: " << (note.isWarning() ? "warning: " : "") << note.message
+                      << "\n";
         const travel::PointCloud& cloud = frame.cloud;
         const travel::eval::Segmentation& result = frame.segmentation;
 

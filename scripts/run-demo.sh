@@ -30,13 +30,14 @@ fi
 }
 
 mkdir -p "$OUT_DIR"
-# Settings for this scan (floor height, cell size) and why: share/configs/mrpt_sample_vlp16.yaml
+# The sensor preset only: the floor height (2.24 m here) is estimated from the scan
+# (sensor_height: auto) and printed; the seed search then reaches the first ground ring.
 cmd=(build/apps/travel-rawlog
   -i "$dataset"
   -o "travel-out/${NAME}_travel.rawlog"
   --png "travel-out/$NAME"
   --csv "travel-out/$NAME.csv"
-  --config share/configs/mrpt_sample_vlp16.yaml)
+  --preset vlp16 --set sensor_height=auto)
 echo "[run-demo] running: ${cmd[*]}"
 "${cmd[@]}"
 

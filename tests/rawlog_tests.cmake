@@ -17,6 +17,16 @@ add_test(NAME apps.travel_rawlog_cli
     -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog.cmake)
 set_tests_properties(apps.travel_rawlog_cli PROPERTIES TIMEOUT 300)
 
+# sensor_height: auto on MRPT's sample: reported, the preset's wrong height warned once.
+add_test(NAME apps.travel_rawlog_mount_auto
+  COMMAND ${CMAKE_COMMAND}
+    -DTRAVEL_RAWLOG=$<TARGET_FILE:travel-rawlog>
+    -DCONFIG=${PROJECT_SOURCE_DIR}/share/configs/mrpt_sample_vlp16.yaml
+    -DSAMPLE=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_mount_auto
+    -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_mount_auto.cmake)
+set_tests_properties(apps.travel_rawlog_mount_auto PROPERTIES TIMEOUT 120)
+
 # The one rawlog reader of travel-rawlog and travel-map: records, exact error messages, motion.
 travel_mrpt_test(test_rawlog_reader test_rawlog_reader.cpp)
 target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::io mrpt::serialization)

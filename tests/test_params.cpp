@@ -438,7 +438,7 @@ TEST(ParamsYaml, RoundTripsExactly) {
 TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
     const std::string yaml = travel::paramsToYaml(Params());
     EXPECT_CONTAINS(yaml, "# [m] Height of the sensor origin");
-    EXPECT_CONTAINS(yaml, "(range [0, 100])\nsensor_height: 1.73\n");
+    EXPECT_CONTAINS(yaml, "(range [0, 100] or auto)\nsensor_height: 1.73\n");
     EXPECT_CONTAINS(yaml, "\nmax_range: 80.0\n");
     EXPECT_CONTAINS(yaml, "(true/false)\nttmf: true\n");
     EXPECT_CONTAINS(yaml, "\nmax_grid_cells_per_side: 512\n");
@@ -451,6 +451,52 @@ TEST(ParamsYaml, EveryKeyWithCommentedUnitAndRange) {
         defaults, [&](const char* name, const auto&, const char*, double, double, const char*) {
             EXPECT_CONTAINS(yaml, "\n" + std::string(name) + ": ");
         });
+}
+
+// ---- `auto` mount values (sensor_height, mount_roll_deg, mount_pitch_deg) ---------------------
+
+TEST(ParamsAuto, YamlIniAndOverrideAcceptAutoAndKeepTheFallback) {
+    const Params yaml = fromText("preset: vlp16\nsensor_height: auto\nmount_pitch_deg: Auto\n");
+    EXPECT_TRUE(yaml.sensor_height.isAuto());
+    EXPECT_EQ(yaml.sensor_height.value, 0.5);  // the preset's value is the fallback
+    EXPECT_TRUE(yaml.mount_pitch_deg.isAuto());
+    EXPECT_FALSE(yaml.mount_roll_deg.isAuto());
+    EXPECT_NO_THROW(yaml.validate());
+
+    const Params ini = fromText("[travel]\nsensor_height = auto\nmount_roll_deg = AUTO\n");
+    EXPECT_TRUE(ini.sensor_height.isAuto());
+    EXPECT_EQ(ini.sensor_height.value, 1.73);
+    EXPECT_TRUE(ini.mount_roll_deg.isAuto());
+
+    Params p;
+    travel::applyOverride("sensor_height=auto", p);
+    EXPECT_TRUE(p.sensor_height.isAuto());
+    travel::applyOverride("sensor_height=2.24", p);  // a number again: no longer auto
+    EXPECT_FALSE(p.sensor_height.isAuto());
+    EXPECT_EQ(p.sensor_height, 2.24);
+}
+
+TEST(ParamsAuto, PrintedBackAndReadAgain) {
+    Params p;
+    travel::applyOverride("sensor_height=auto", p);
+    travel::applyOverride("mount_pitch_deg=auto", p);
+    const std::string yaml = travel::paramsToYaml(p);
+    EXPECT_CONTAINS(yaml, "\nsensor_height: auto\n");
+    EXPECT_CONTAINS(yaml, "\nmount_pitch_deg: auto\n");
+    EXPECT_CONTAINS(yaml, "\nmount_roll_deg: 0.0\n");
+    const Params back = fromText(yaml);
+    EXPECT_TRUE(back.sensor_height.isAuto());
+    EXPECT_TRUE(back.mount_pitch_deg.isAuto());
+    EXPECT_FALSE(back.mount_roll_deg.isAuto());
+    EXPECT_EQ(travel::paramsToYaml(back), yaml);
+}
+
+TEST(ParamsAuto, OnlyMountValuesAcceptAuto) {
+    EXPECT_CONTAINS(configErrorOf([] { fromText("mount_yaw_deg: auto\n"); }), "mount_yaw_deg");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("tgf_resolution: auto\n"); }),
+                    "is not a finite number");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("sensor_height: automatic\n"); }), "(or auto)");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("sensor_height: -1\n"); }), "sensor_height");
 }
 
 // ---------------------------------------------------------------- one configuration, sections

@@ -166,6 +166,18 @@ std::string parse(const std::string& text, bool& out) {
     return {};
 }
 
+std::string parse(const std::string& text, AutoReal& out) {
+    if (toLower(text) == "auto") {
+        out.automatic = true;
+        return {};
+    }
+    double value = 0;
+    std::string error = parse(text, value);
+    if (!error.empty()) return error + " (or auto)";
+    out = AutoReal(value);
+    return {};
+}
+
 std::string parseChoice(const std::string& text, const char* choices, int& index) {
     const std::string lower = toLower(text);
     const auto allowed = splitChoices(choices);
@@ -200,6 +212,9 @@ std::string format(int value) {
 }
 std::string format(bool value) {
     return value ? "true" : "false";
+}
+std::string format(const AutoReal& value) {
+    return value.isAuto() ? "auto" : formatReal(value.value);
 }
 
 // A bare word when it reads back as the same string, otherwise quoted.

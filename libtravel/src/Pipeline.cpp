@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <algorithm>
+
 #include "travel/GroundLabelling.hpp"
 #include "travel/NodeFitting.hpp"
 
@@ -19,11 +21,60 @@ double msSince(Clock::time_point& t) {
     return ms;
 }
 
+// Frames on which `auto` mount values are tried before the fallbacks are kept for good.
+constexpr std::size_t kMaxMountFrames = 10;
+
+bool hasAutoMount(const Params& p) {
+    return p.sensor_height.isAuto() || p.mount_roll_deg.isAuto() || p.mount_pitch_deg.isAuto();
+}
+
 }  // namespace
 
-Pipeline::Pipeline(const Params& params) : params_(params) {
+Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) {
     params_.validate();
+    applyFirstGroundRing();
     field_.configure(params_);
+}
+
+void Pipeline::applyFirstGroundRing() {
+    const std::vector<double> table = elevationTableDeg(params_);
+    if (table.empty()) return;
+    const double lowest = *std::min_element(table.begin(), table.end());
+    params_.seed_search_radius =
+        std::max(configured_.seed_search_radius,
+                 firstGroundRingRadius(params_.sensor_height, lowest, params_.tgf_resolution));
+}
+
+void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, MountNote& note) {
+    const std::size_t frame = frame_index_++;
+    if (mount_done_) return;
+    // Up in the sensor frame under the configured mount (auto angles at their fallbacks).
+    const Eigen::Vector3d prior_up = mountRotation(params_).transpose() * Eigen::Vector3d::UnitZ();
+    const GroundPlaneEstimate ground =
+        mount_estimator_.estimate(cloud, prior_up, params_.min_range, params_.max_range);
+    if (!ground.found) {
+        if (frame + 1 < kMaxMountFrames) return;
+        mount_done_ = true;
+        if (!hasAutoMount(configured_)) return;
+        note = notFoundMountNote(configured_, frame);
+        return;
+    }
+    mount_done_ = true;
+    if (hasAutoMount(configured_)) {
+        if (params_.sensor_height.isAuto()) params_.sensor_height = ground.height;
+        if (params_.mount_roll_deg.isAuto()) params_.mount_roll_deg = ground.roll_deg;
+        if (params_.mount_pitch_deg.isAuto()) params_.mount_pitch_deg = ground.pitch_deg;
+        applyFirstGroundRing();
+        note = estimatedMountNote(configured_, ground, frame);
+    }
+    const MountNote check =
+        checkedMountNote(configured_, ground, alignmentRotation(params_, input), frame);
+    if (!check) return;
+    if (note) {
+        note.message += "; " + check.message;
+    } else {
+        note = check;
+    }
 }
 
 void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result& result) {
@@ -34,6 +85,9 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
                                     std::to_string(cloud.z.size()) + ")");
     StageTimings& t = result.timings;
     Clock::time_point clock = Clock::now();
+    result.mount.kind = MountNote::Kind::None;
+    result.mount.message.clear();
+    updateMount(cloud, input, result.mount);
     preprocess(cloud, params_, input, aligned_);
     t.preprocess = msSince(clock);
     field_.embed(aligned_, result.terrain);

@@ -109,6 +109,7 @@ class MethodSegmenter final : public Segmenter {
         }
         const Clock::time_point t2 = Clock::now();
         out.stages = pipeline_ ? result_.timings : StageTimings{};
+        out.mount = pipeline_ ? result_.mount : MountNote{};
         if (method_.objects == Objects::TravelAos) {
             // The pipeline times its own stages; the copies above are not part of them.
             out.ground_ms = result_.timings.ground_total;

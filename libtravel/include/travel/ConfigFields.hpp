@@ -22,6 +22,8 @@ std::string parse(const std::string& text, double& out);
 std::string parse(const std::string& text, float& out);
 std::string parse(const std::string& text, int& out);
 std::string parse(const std::string& text, bool& out);
+/// "auto" (any case) keeps out.value as the fallback; otherwise a number as for double.
+std::string parse(const std::string& text, AutoReal& out);
 /// `choices` "a|b|c": the matching choice (any case) stored as listed; "" = any text.
 std::string parse(const std::string& text, std::string& out, const char* choices);
 /// Index of `text` in `choices` (any case), or why not.
@@ -31,6 +33,7 @@ std::string format(double value);  ///< shortest text that reads back exactly, w
 std::string format(float value);
 std::string format(int value);
 std::string format(bool value);
+std::string format(const AutoReal& value);     ///< "auto" or the number
 std::string format(const std::string& value);  ///< bare word or quoted
 /// The n-th '|'-separated choice.
 std::string choiceAt(const char* choices, int index);
@@ -82,6 +85,9 @@ std::string rangeError(const char* name, const T& value, const char* unit, doubl
         return "'" + std::string(name) + "' = '" + value + "' is not one of " + unit;
     } else if constexpr (std::is_enum_v<T> || std::is_same_v<T, bool>) {
         return {};
+    } else if constexpr (std::is_same_v<T, AutoReal>) {
+        if (value.isAuto()) return {};
+        return rangeError(name, value.value, unit, lo, hi);
     } else {
         const double v = static_cast<double>(value);
         if (v >= lo && v <= hi) return {};  // false for NaN
@@ -119,7 +125,7 @@ bool assignKey(Section& section, const std::string& key, const std::string& text
         if (found || key != name) return;
         found = true;
         using T = fields::Bare<decltype(value)>;
-        T parsed{};
+        T parsed = value;  // AutoReal: `auto` keeps the current number as its fallback
         const std::string error = fields::parseAny(text, parsed, unit);
         if (!error.empty()) throw ConfigError("invalid value for '" + key + "': " + error);
         const std::string range = fields::rangeError(name, parsed, unit, lo, hi);
@@ -170,8 +176,9 @@ std::string sectionToYaml(const Section& section, const std::string& indent) {
             const std::string allowed = *unit ? "(one of " + std::string(unit) + ")" : "(any text)";
             comment = fields::wrappedComment(description, allowed, indent);
         } else {
-            const std::string range =
+            std::string range =
                 std::is_same_v<T, bool> ? "true/false" : "range " + fields::rangeText(lo, hi, "");
+            if constexpr (std::is_same_v<T, AutoReal>) range += " or auto";
             comment =
                 fields::wrappedComment("[" + std::string(*unit ? unit : "-") + "] " + description,
                                        "(" + range + ")", indent);

@@ -11,22 +11,44 @@
 
 namespace travel {
 
+/// A real parameter that may also be `auto` (sensor_height, mount_roll_deg, mount_pitch_deg):
+/// then the Pipeline estimates it from the first frame(s) (MountEstimator.hpp) and keeps the
+/// estimate. `value` is the configured number, or with `auto` the fallback used until an
+/// estimate exists (the value it had before `auto` was set, e.g. the preset's). It reads as a
+/// double (its value) so that code which only needs a number stays unchanged.
+struct AutoReal {
+    double value = 0.0;
+    bool automatic = false;
+
+    AutoReal() = default;
+    AutoReal(double v) : value(v) {}  // NOLINT: implicit, `params.sensor_height = 1.73`
+    static AutoReal makeAuto(double fallback) {
+        AutoReal a(fallback);
+        a.automatic = true;
+        return a;
+    }
+    bool isAuto() const { return automatic; }
+    operator double() const { return value; }  // NOLINT: implicit on purpose, see above
+};
+
 // X(type, name, default, unit, min, max, description)
-// Types: double, int, bool, std::string. Angles are in degrees in files; the code converts once.
-// For std::string parameters the `unit` slot lists the allowed values ("a|b|c") and min/max are
-// unused (0).
+// Types: double, AutoReal (a double or `auto`), int, bool, std::string. Angles are in degrees in
+// files; the code converts once. For std::string parameters the `unit` slot lists the allowed
+// values ("a|b|c") and min/max are unused (0).
 #define TRAVEL_PARAM_LIST(X)                                                                      \
     /* ---- Sensor and pre-processing (paper Sec. III-A) ---- */                                  \
-    X(double, sensor_height, 1.73, "m", 0.0, 100.0,                                               \
-      "Height of the sensor origin above the ground under the vehicle (h_s)")                     \
+    X(AutoReal, sensor_height, 1.73, "m", 0.0, 100.0,                                             \
+      "Height of the sensor origin above the ground under the vehicle (h_s); auto = estimated "   \
+      "from the first frame by a robust ground-plane fit")                                        \
     X(double, min_range, 2.7, "m", 0.0, 1000.0,                                                   \
       "Points closer than this (3-D range) are invalid: returns from the vehicle itself")         \
     X(double, max_range, 80.0, "m", 0.1, 2000.0,                                                  \
       "Points farther than this (3-D range) are invalid; also sets the tri-grid extent R")        \
-    X(double, mount_roll_deg, 0.0, "deg", -180.0, 180.0,                                          \
-      "Roll of the sensor in the vehicle frame (extrinsic)")                                      \
-    X(double, mount_pitch_deg, 0.0, "deg", -90.0, 90.0,                                           \
-      "Pitch of the sensor in the vehicle frame (extrinsic)")                                     \
+    X(AutoReal, mount_roll_deg, 0.0, "deg", -180.0, 180.0,                                        \
+      "Roll of the sensor in the vehicle frame (extrinsic); auto = from the first frame's "       \
+      "ground plane (the vehicle standing level)")                                                \
+    X(AutoReal, mount_pitch_deg, 0.0, "deg", -90.0, 90.0,                                         \
+      "Pitch of the sensor in the vehicle frame (extrinsic); auto = as mount_roll_deg")           \
     X(double, mount_yaw_deg, 0.0, "deg", -180.0, 180.0,                                           \
       "Yaw of the sensor in the vehicle frame (extrinsic); the tri-grid is aligned with the "     \
       "vehicle frame")                                                                            \

@@ -5,8 +5,16 @@
 //
 //   Pipeline travel(params);            // validates params (throws ConfigError)
 //   travel.process(cloud, {}, result);  // result.labels[i] for every input point i
+//   if (result.mount) std::cerr << result.mount.message << "\n";  // once: estimate or warning
+//
+// The mount (MountEstimator.hpp): `auto` sensor_height / mount_roll_deg / mount_pitch_deg are
+// estimated from the first frame with a ground plane (tried on up to 10 frames; until then
+// their fallback values are used) and kept; fixed values are checked once against the first
+// frame's ground plane. Either way result.mount reports it on that frame. The seed search
+// radius is raised to reach the first ground ring (firstGroundRingRadius) when it cannot.
 #pragma once
 
+#include "travel/MountEstimator.hpp"
 #include "travel/Params.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/Preprocessing.hpp"
@@ -23,7 +31,11 @@ class Pipeline {
   public:
     explicit Pipeline(const Params& params);
 
+    /// The parameters in use: `auto` values replaced by their estimates once known, the seed
+    /// search radius as raised by the first-ground-ring rule.
     const Params& params() const { return params_; }
+    /// The parameters as given to the constructor.
+    const Params& configuredParams() const { return configured_; }
 
     /// Traversable ground segmentation (TGS) of one frame, then (params.cluster_objects)
     /// above-ground object segmentation (AOS) of its non-ground points.
@@ -35,7 +47,16 @@ class Pipeline {
     const RangeImage& rangeImage() const { return range_image_; }
 
   private:
+    /// Estimates `auto` values or checks fixed ones (until done); sets `note`.
+    void updateMount(const PointCloud& cloud, const FrameInput& input, MountNote& note);
+    /// seed_search_radius >= firstGroundRingRadius for the current height and elevation table.
+    void applyFirstGroundRing();
+
+    Params configured_;
     Params params_;
+    MountEstimator mount_estimator_;
+    std::size_t frame_index_ = 0;
+    bool mount_done_ = false;
     AlignedCloud aligned_;
     TriGridField field_;
     TraversableGraphSearch graph_search_;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "travel/Clusters.hpp"
+#include "travel/MountEstimator.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/TerrainModel.hpp"
 
@@ -40,6 +41,9 @@ struct Result {
 
     /// Number of points per class, indexed by PointClass value.
     std::array<std::size_t, 4> class_counts{};
+    /// News about the sensor mount, set on one frame only (Pipeline: `auto` values estimated,
+    /// or configured ones far from the ground); show `mount.message` to the user.
+    MountNote mount;
 
     std::size_t count(PointClass c) const { return class_counts[static_cast<int>(c)]; }
 };

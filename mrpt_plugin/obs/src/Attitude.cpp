@@ -10,8 +10,10 @@ namespace travel_mrpt {
 
 void setMountFromSensorPose(const mrpt::poses::CPose3D& sensor_pose, travel::Params& params) {
     params.mount_yaw_deg = mrpt::RAD2DEG(sensor_pose.yaw());
-    params.mount_pitch_deg = mrpt::RAD2DEG(sensor_pose.pitch());
-    params.mount_roll_deg = mrpt::RAD2DEG(sensor_pose.roll());
+    // `auto` angles stay auto: the pipeline estimates them from the ground.
+    if (!params.mount_pitch_deg.isAuto())
+        params.mount_pitch_deg = mrpt::RAD2DEG(sensor_pose.pitch());
+    if (!params.mount_roll_deg.isAuto()) params.mount_roll_deg = mrpt::RAD2DEG(sensor_pose.roll());
 }
 
 Eigen::Matrix3d levellingRotation(const mrpt::poses::CPose3D& robot_pose) {

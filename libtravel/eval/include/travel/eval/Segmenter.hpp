@@ -30,6 +30,8 @@ struct Segmentation {
     double objects_ms = 0;             ///< clustering (0 for ground-only methods)
     /// Per-stage times when the ground stage is TRAVEL's (zeros for the baselines).
     StageTimings stages;
+    /// TRAVEL's note on the sensor mount, on the one frame that has one (Result::mount).
+    MountNote mount;
 };
 
 class Segmenter {

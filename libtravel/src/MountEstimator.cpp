@@ -1,0 +1,230 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/MountEstimator.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+namespace travel {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+// Candidate bins: 2 deg sectors x 1 m rings up to 40 m (farther ground is sparse and may bend).
+constexpr int kSectors = 180;
+constexpr double kBinLength = 1.0;
+constexpr double kMaxCandidateRange = 40.0;
+constexpr int kRansacIterations = 300;
+constexpr double kRansacInlierDist = 0.1;      // m, range noise plus small unevenness
+constexpr double kRefitDist[] = {0.1, 0.06};   // m, successive least-squares bands
+constexpr double kMaxTiltFromPriorDeg = 30.0;  // steeper planes are walls, not ground
+constexpr std::size_t kMinInliers = 100;
+
+// Plane n.p + d = 0 through the points within `band` of the previous plane (PCA); false when
+// fewer than 3 points.
+template <class ForEachPoint>
+bool refitPlane(ForEachPoint&& for_each, Eigen::Vector3d& n, double& d, double band,
+                std::size_t& count) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    count = 0;
+    for_each([&](const Eigen::Vector3d& p) {
+        if (std::fabs(n.dot(p) + d) >= band) return;
+        sum += p;
+        outer += p * p.transpose();
+        ++count;
+    });
+    if (count < 3) return false;
+    const Eigen::Vector3d mean = sum / static_cast<double>(count);
+    const Eigen::Matrix3d cov = outer / static_cast<double>(count) - mean * mean.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    Eigen::Vector3d normal = eig.eigenvectors().col(0);  // smallest eigenvalue first
+    if (normal.dot(n) < 0) normal = -normal;
+    n = normal;
+    d = -n.dot(mean);
+    return true;
+}
+
+// Thousands separated by commas: 12345 -> "12,345".
+std::string grouped(std::size_t value) {
+    std::string digits = std::to_string(value), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+std::string fixed2(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.2f", value);
+    return text;
+}
+
+}  // namespace
+
+MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
+                             std::size_t frame) {
+    MountNote note;
+    note.kind = MountNote::Kind::Estimated;
+    note.frame = frame;
+    note.ground = ground;
+    std::string what;
+    const auto add = [&](const std::string& text) { what += (what.empty() ? "" : ", ") + text; };
+    if (configured.sensor_height.isAuto())
+        add("sensor_height auto: " + fixed2(ground.height) + " m");
+    if (configured.mount_roll_deg.isAuto())
+        add("mount_roll_deg auto: " + fixed2(ground.roll_deg) + " deg");
+    if (configured.mount_pitch_deg.isAuto())
+        add("mount_pitch_deg auto: " + fixed2(ground.pitch_deg) + " deg");
+    note.message = what + " (from frame " + std::to_string(frame) + ", " +
+                   grouped(ground.num_inliers) + " ground points)";
+    return note;
+}
+
+MountNote notFoundMountNote(const Params& configured, std::size_t frame) {
+    MountNote note;
+    note.kind = MountNote::Kind::NotFound;
+    note.frame = frame;
+    note.message = "no ground plane found in frames 0 to " + std::to_string(frame) +
+                   ": the auto mount values keep their fallbacks (sensor_height " +
+                   fixed2(configured.sensor_height.value) + " m, mount_roll_deg " +
+                   fixed2(configured.mount_roll_deg.value) + ", mount_pitch_deg " +
+                   fixed2(configured.mount_pitch_deg.value) + "); set them in the configuration";
+    return note;
+}
+
+MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
+                           const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame) {
+    MountNote note;
+    if (!ground.found) return note;
+    std::string what;
+    const AutoReal& h = configured.sensor_height;
+    if (!h.isAuto() && std::fabs(ground.height - h.value) > kMountHeightTolerance) {
+        what = "sensor_height is " + fixed2(h.value) + " m but the ground is " +
+               fixed2(ground.height) +
+               " m below the sensor: set sensor_height: " + fixed2(ground.height) + " or auto";
+    }
+    const AutoReal& roll = configured.mount_roll_deg;
+    const AutoReal& pitch = configured.mount_pitch_deg;
+    const double tilt_deg =
+        std::acos(std::clamp((sensor_to_aligned * ground.normal).z(), -1.0, 1.0)) * kRadToDeg;
+    if ((!roll.isAuto() || !pitch.isAuto()) && tilt_deg > kMountTiltToleranceDeg) {
+        what += std::string(what.empty() ? "" : "; ") + "the ground is tilted by " +
+                fixed2(tilt_deg) + " deg with mount_roll_deg " + fixed2(roll.value) +
+                ", mount_pitch_deg " + fixed2(pitch.value) +
+                ": set mount_roll_deg: " + fixed2(ground.roll_deg) +
+                ", mount_pitch_deg: " + fixed2(ground.pitch_deg) + " or auto";
+    }
+    if (what.empty()) return note;
+    note.kind = MountNote::Kind::Mismatch;
+    note.frame = frame;
+    note.ground = ground;
+    note.message = what + " (measured on frame " + std::to_string(frame) + ", " +
+                   grouped(ground.num_inliers) + " ground points)";
+    return note;
+}
+
+void mountAnglesFromNormal(const Eigen::Vector3d& n, double& roll_deg, double& pitch_deg) {
+    roll_deg = std::atan2(n.y(), n.z()) * kRadToDeg;
+    pitch_deg = std::atan2(-n.x(), std::hypot(n.y(), n.z())) * kRadToDeg;
+}
+
+double firstGroundRingRadius(double sensor_height, double lowest_elevation_deg,
+                             double tgf_resolution) {
+    if (!(lowest_elevation_deg < 0.0) || !(sensor_height > 0.0)) return 0.0;
+    return sensor_height / std::tan(-lowest_elevation_deg / kRadToDeg) + 0.5 * tgf_resolution;
+}
+
+GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
+                                             const Eigen::Vector3d& prior_up, double min_range,
+                                             double max_range) {
+    GroundPlaneEstimate out;
+    const Eigen::Vector3d up = prior_up.normalized();
+    // Any two directions completing `up` to an orthonormal basis.
+    const Eigen::Vector3d e1 = up.unitOrthogonal();
+    const Eigen::Vector3d e2 = up.cross(e1);
+    const double max_r = std::min(max_range, kMaxCandidateRange);
+    const int num_rings = static_cast<int>(std::ceil(max_r / kBinLength));
+    bin_point_.assign(static_cast<std::size_t>(kSectors) * std::max(num_rings, 1), -1);
+    bin_height_.assign(bin_point_.size(), 0.f);
+
+    const std::size_t n = cloud.size();
+    const double min_r2 = min_range * min_range, max_r2 = max_r * max_r;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
+        const double r2 = p.squaredNorm();
+        if (!(r2 >= min_r2 && r2 <= max_r2)) continue;  // also drops NaN
+        const double u = e1.dot(p), v = e2.dot(p), h = up.dot(p);
+        const double rxy = std::hypot(u, v);
+        const int ring = std::min(num_rings - 1, static_cast<int>(rxy / kBinLength));
+        int sector = static_cast<int>((std::atan2(v, u) + M_PI) / (2 * M_PI) * kSectors);
+        sector = std::clamp(sector, 0, kSectors - 1);
+        const std::size_t bin = static_cast<std::size_t>(ring) * kSectors + sector;
+        if (bin_point_[bin] < 0 || h < bin_height_[bin]) {
+            bin_point_[bin] = static_cast<int32_t>(i);
+            bin_height_[bin] = static_cast<float>(h);
+        }
+    }
+    candidates_.clear();
+    for (const int32_t i : bin_point_) {
+        if (i >= 0) candidates_.emplace_back(cloud.x[i], cloud.y[i], cloud.z[i]);
+    }
+    out.num_candidates = candidates_.size();
+    if (candidates_.size() < 3) return out;
+
+    // RANSAC, seeded: a 64-bit LCG (Knuth's MMIX constants), the same on every platform.
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    const auto next = [&](std::size_t bound) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<std::size_t>((state >> 33) % bound);
+    };
+    const double min_up = std::cos(kMaxTiltFromPriorDeg / kRadToDeg);
+    std::size_t best_count = 0;
+    Eigen::Vector3d best_n = up;
+    double best_d = 0;
+    const std::size_t m = candidates_.size();
+    for (int it = 0; it < kRansacIterations; ++it) {
+        const Eigen::Vector3d& a = candidates_[next(m)];
+        const Eigen::Vector3d& b = candidates_[next(m)];
+        const Eigen::Vector3d& c = candidates_[next(m)];
+        Eigen::Vector3d normal = (b - a).cross(c - a);
+        const double len = normal.norm();
+        if (!(len > 1e-9)) continue;
+        normal /= len;
+        if (normal.dot(up) < 0) normal = -normal;
+        if (normal.dot(up) < min_up) continue;
+        const double d = -normal.dot(a);
+        if (!(d > 0)) continue;  // the sensor must be above the ground
+        std::size_t count = 0;
+        for (const auto& p : candidates_) count += std::fabs(normal.dot(p) + d) < kRansacInlierDist;
+        if (count > best_count) best_count = count, best_n = normal, best_d = d;
+    }
+    if (best_count < 3) return out;
+
+    const auto candidate_points = [&](auto&& visit) {
+        for (const auto& p : candidates_) visit(p);
+    };
+    std::size_t count = 0;
+    if (!refitPlane(candidate_points, best_n, best_d, kRansacInlierDist, count)) return out;
+    const auto all_points = [&](auto&& visit) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
+            const double r2 = p.squaredNorm();
+            if (r2 >= min_r2 && r2 <= max_r2) visit(p);
+        }
+    };
+    for (const double band : kRefitDist) {
+        if (!refitPlane(all_points, best_n, best_d, band, count)) return out;
+    }
+    out.normal = best_n;
+    out.height = best_d;
+    out.num_inliers = count;
+    mountAnglesFromNormal(best_n, out.roll_deg, out.pitch_deg);
+    out.found = count >= kMinInliers && best_d > 0;
+    return out;
+}
+
+}  // namespace travel
