@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "Readers.hpp"
+#include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
 
@@ -17,8 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr ScanFormat kFormats[] = {ScanFormat::Auto, ScanFormat::KittiBin, ScanFormat::NuScenesBin,
-                                   ScanFormat::Pcd, ScanFormat::Ply};
+constexpr EnumName<ScanFormat> kFormatNames[] = {{ScanFormat::Auto, "auto"},
+                                                 {ScanFormat::KittiBin, "kitti"},
+                                                 {ScanFormat::NuScenesBin, "nuscenes"},
+                                                 {ScanFormat::Pcd, "pcd"},
+                                                 {ScanFormat::Ply, "ply"}};
 constexpr const char* kFormatHint =
     "give the format with --format (kitti: x y z intensity, nuscenes: x y z intensity ring)";
 
@@ -150,28 +154,16 @@ void readBin(const std::string& path, const std::vector<unsigned char>& bytes, S
 }  // namespace
 
 const char* toString(ScanFormat format) {
-    switch (format) {
-        case ScanFormat::Auto:
-            return "auto";
-        case ScanFormat::KittiBin:
-            return "kitti";
-        case ScanFormat::NuScenesBin:
-            return "nuscenes";
-        case ScanFormat::Pcd:
-            return "pcd";
-        case ScanFormat::Ply:
-            return "ply";
-    }
-    return "?";
+    return nameOf(kFormatNames, format);
 }
 
 const char* scanFormatNames() {
-    return "auto, kitti, nuscenes, pcd, ply";
+    static const std::string names = namesOf(kFormatNames, ", ", ", ");
+    return names.c_str();
 }
 
 ScanFormat scanFormatFromString(const std::string& name) {
-    for (const ScanFormat f : kFormats)
-        if (name == toString(f)) return f;
+    if (const auto format = findByName(kFormatNames, name)) return *format;
     throw ConfigError("unknown scan format '" + name + "'; allowed: " + scanFormatNames());
 }
 
