@@ -333,6 +333,12 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
                             "fractional ring); " +
                             hint);
     const float nan = std::numeric_limits<float>::quiet_NaN();
+    p = dir.writeFloats("all_nan.bin", std::vector<float>(20, nan));  // 80 bytes: 16 and 20 fit
+    EXPECT_EQ(error(p), p +
+                            ": not a scan: neither its KITTI (16-byte) nor its nuScenes (20-byte) "
+                            "records are plausible points (coordinates over 1 km or not finite, "
+                            "negative intensity or a fractional ring); " +
+                            hint);
     p = dir.writeFloats("nan.bin", {nan, 0.f, 0.f, 1.f, 0.f, nan, 0.f, 1.f});
     EXPECT_EQ(error(p, ScanFormat::KittiBin), p + ": none of its 2 points has finite x, y, z");
     p = dir.writeFloats("short.bin", {1.f, 2.f, 3.f, 4.f, 5.f});

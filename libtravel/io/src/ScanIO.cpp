@@ -105,12 +105,13 @@ ScanFormat binFormatFromContents(const std::string& path, const std::vector<unsi
     }
     if (kitti) return ScanFormat::KittiBin;
     if (nuscenes) return ScanFormat::NuScenesBin;
-    const std::string layouts = kitti_size && nuscenes_size
-                                    ? "KITTI (16-byte) nor nuScenes (20-byte)"
-                                : kitti_size ? "KITTI (16-byte)"
-                                             : "nuScenes (20-byte)";
-    fail(path, "not a scan: its " + layouts +
-                   " records are not plausible points (coordinates over 1 km or not finite, "
+    const std::string records =
+        kitti_size && nuscenes_size
+            ? "neither its KITTI (16-byte) nor its nuScenes (20-byte) records are"
+            : std::string("its ") + (kitti_size ? "KITTI (16-byte)" : "nuScenes (20-byte)") +
+                  " records are not";
+    fail(path, "not a scan: " + records +
+                   " plausible points (coordinates over 1 km or not finite, "
                    "negative intensity or a fractional ring); " +
                    kFormatHint);
 }
