@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "TempDir.hpp"
 #include "travel/Errors.hpp"
 #include "travel/eval/KittiIO.hpp"
 
@@ -32,32 +33,7 @@ std::string inputErrorOf(F&& f) {
 #define EXPECT_CONTAINS(haystack, needle) \
     EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() /
-               ("travel_test_kitti_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
-                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    std::string writeBytes(const std::string& name, const std::vector<unsigned char>& bytes) const {
-        std::ofstream out(file(name), std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        return file(name);
-    }
-    // Host-order floats: the tests run on little-endian hosts, like the file format.
-    std::string writeFloats(const std::string& name, const std::vector<float>& values) const {
-        std::vector<unsigned char> bytes(values.size() * sizeof(float));
-        std::memcpy(bytes.data(), values.data(), bytes.size());
-        return writeBytes(name, bytes);
-    }
-};
+using travel_test::TempDir;
 
 PointCloud sampleCloud() {
     PointCloud c;
@@ -191,8 +167,9 @@ TEST(KittiIO, LabelsRoundTripAndCount) {
 
 TEST(KittiIO, WriteFailureThrows) {
     TempDir dir;
-    EXPECT_THROW(travel::writeLabelFile(dir.file("no/such/dir/a.label"), {1u}), std::runtime_error);
-    EXPECT_THROW(travel::writeKittiBin(dir.file("no/such/dir/a.bin"), sampleCloud()),
+    const fs::path missing = dir.path / "no/such/dir";  // dir.file() would create it
+    EXPECT_THROW(travel::writeLabelFile((missing / "a.label").string(), {1u}), std::runtime_error);
+    EXPECT_THROW(travel::writeKittiBin((missing / "a.bin").string(), sampleCloud()),
                  std::runtime_error);
     PointCloud inconsistent = sampleCloud();
     inconsistent.z.pop_back();

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "TempDir.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
 
@@ -95,9 +96,8 @@ TEST(NavClosedLoop, HeightThresholdClimbsTheRampButHitsTheKerbOnTheSlope) {
 
 TEST(NavClosedLoop, NavlogDeserializesAsLogFileRecords) {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "travel_test_nav_navlog";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const travel_test::TempDir tmp("travel_test_nav_navlog");
+    const fs::path& dir = tmp.path;
     SimOptions o = options(SourceKind::Travel, 8.0);
     o.navlog_file = (dir / "flat.reactivenavlog").string();
     const RunReport r = runSimulation(loadWorld(kShare + "/worlds/flat_obstacles.world"), o);
@@ -122,5 +122,4 @@ TEST(NavClosedLoop, NavlogDeserializesAsLogFileRecords) {
     // One record per navigation step (8 s at 10 Hz).
     EXPECT_GE(records, 70u);
     EXPECT_GE(with_obstacles, records / 2);
-    fs::remove_all(dir);
 }

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "TempDir.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
@@ -63,26 +64,7 @@ Params fromText(const std::string& text) {
     return p;
 }
 
-// A temporary directory removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() /
-               ("travel_test_params_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
-                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string write(const std::string& name, const std::string& text) const {
-        const fs::path file = path / name;
-        fs::create_directories(file.parent_path());
-        std::ofstream(file) << text;
-        return file.string();
-    }
-};
+using travel_test::TempDir;
 
 }  // namespace
 

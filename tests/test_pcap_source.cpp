@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "TempDir.hpp"
 #include "travel/Errors.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
@@ -123,8 +124,8 @@ std::string errorOf(F&& f) {
 }
 
 TEST(PcapSource, ErrorsNameTheFile) {
-    const fs::path dir = fs::temp_directory_path() / "travel_test_pcap_source";
-    fs::create_directories(dir);
+    const travel_test::TempDir tmp("travel_test_pcap_source");
+    const fs::path& dir = tmp.path;
     const std::string missing = (dir / "missing.pcap").string();
     EXPECT_EQ(errorOf([&] { travel_mrpt::PcapSource(missing, model("VLP16")); }),
               missing + ": no such file");
@@ -153,7 +154,6 @@ TEST(PcapSource, ErrorsNameTheFile) {
     const std::string hdl64 = errorOf([&] { travel_mrpt::PcapSource(empty, model("HDL-64E")); });
     EXPECT_NE(hdl64.find("HDL64"), std::string::npos) << hdl64;
     EXPECT_NE(hdl64.find("calibration XML"), std::string::npos) << hdl64;
-    fs::remove_all(dir);
 }
 
 TEST(PcapSource, ModelNames) {

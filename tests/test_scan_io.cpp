@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "TempDir.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/ScanIO.hpp"
 
@@ -37,34 +38,7 @@ std::string inputErrorOf(F&& f) {
     return "(no InputError)";
 }
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() /
-               ("travel_test_scan_io_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
-                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const {
-        fs::create_directories((path / name).parent_path());
-        return (path / name).string();
-    }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        std::ofstream out(file(name), std::ios::binary);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        return file(name);
-    }
-    // Host-order floats: the tests run on little-endian hosts, like the file formats.
-    std::string writeFloats(const std::string& name, const std::vector<float>& values) const {
-        std::string bytes(values.size() * sizeof(float), '\0');
-        std::memcpy(bytes.data(), values.data(), bytes.size());
-        return write(name, bytes);
-    }
-};
+using travel_test::TempDir;
 
 template <class T>
 std::string le(T v) {
@@ -359,6 +333,12 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
                             "fractional ring); " +
                             hint);
     const float nan = std::numeric_limits<float>::quiet_NaN();
+    p = dir.writeFloats("all_nan.bin", std::vector<float>(20, nan));  // 80 bytes: 16 and 20 fit
+    EXPECT_EQ(error(p), p +
+                            ": not a scan: neither its KITTI (16-byte) nor its nuScenes (20-byte) "
+                            "records are plausible points (coordinates over 1 km or not finite, "
+                            "negative intensity or a fractional ring); " +
+                            hint);
     p = dir.writeFloats("nan.bin", {nan, 0.f, 0.f, 1.f, 0.f, nan, 0.f, 1.f});
     EXPECT_EQ(error(p, ScanFormat::KittiBin), p + ": none of its 2 points has finite x, y, z");
     p = dir.writeFloats("short.bin", {1.f, 2.f, 3.f, 4.f, 5.f});

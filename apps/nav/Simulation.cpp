@@ -21,44 +21,34 @@
 #include <unistd.h>
 
 #include "nav/Collision.hpp"
+#include "travel/EnumNames.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
 namespace travel::navsim {
 namespace fs = std::filesystem;
 
+namespace {
+
+constexpr EnumName<SourceKind> kSourceKindNames[] = {
+    {SourceKind::Travel, "travel"}, {SourceKind::Raw, "raw"}, {SourceKind::Threshold, "threshold"}};
+constexpr EnumName<Outcome> kOutcomeNames[] = {{Outcome::Goal, "goal"},
+                                               {Outcome::Collision, "collision"},
+                                               {Outcome::NavigatorGaveUp, "navigator-gave-up"},
+                                               {Outcome::Timeout, "timeout"}};
+
+}  // namespace
+
 const char* toString(SourceKind kind) {
-    switch (kind) {
-        case SourceKind::Travel:
-            return "travel";
-        case SourceKind::Raw:
-            return "raw";
-        case SourceKind::Threshold:
-            return "threshold";
-    }
-    return "?";
+    return nameOf(kSourceKindNames, kind);
 }
 
 SourceKind parseSourceKind(const std::string& name) {
-    if (name == "travel") return SourceKind::Travel;
-    if (name == "raw") return SourceKind::Raw;
-    if (name == "threshold") return SourceKind::Threshold;
-    throw std::invalid_argument("unknown obstacle source '" + name +
-                                "' (expected travel, raw or threshold)");
+    return valueFromName(kSourceKindNames, name, "obstacle source");
 }
 
 const char* toString(Outcome outcome) {
-    switch (outcome) {
-        case Outcome::Goal:
-            return "goal";
-        case Outcome::Collision:
-            return "collision";
-        case Outcome::NavigatorGaveUp:
-            return "navigator-gave-up";
-        case Outcome::Timeout:
-            return "timeout";
-    }
-    return "?";
+    return nameOf(kOutcomeNames, outcome);
 }
 
 sim::LidarModel SimOptions::defaultLidar() {

@@ -5,10 +5,16 @@
 #include <regex>
 
 #include "travel/ConfigFields.hpp"
+#include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 
 namespace travel {
 namespace {
+
+constexpr EnumName<VelocitySource> kVelocitySourceNames[] = {{VelocitySource::Auto, "auto"},
+                                                             {VelocitySource::Imu, "imu"},
+                                                             {VelocitySource::Poses, "poses"},
+                                                             {VelocitySource::None, "none"}};
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw ConfigError(what);
@@ -17,24 +23,11 @@ void require(bool ok, const std::string& what) {
 }  // namespace
 
 const char* toString(VelocitySource source) {
-    switch (source) {
-        case VelocitySource::Auto:
-            return "auto";
-        case VelocitySource::Imu:
-            return "imu";
-        case VelocitySource::Poses:
-            return "poses";
-        case VelocitySource::None:
-            return "none";
-    }
-    return "?";
+    return nameOf(kVelocitySourceNames, source);
 }
 
 VelocitySource velocitySourceFromString(const std::string& text) {
-    for (VelocitySource s :
-         {VelocitySource::Auto, VelocitySource::Imu, VelocitySource::Poses, VelocitySource::None})
-        if (text == toString(s)) return s;
-    throw ConfigError("velocity_source must be one of auto|imu|poses|none, got '" + text + "'");
+    return valueFromName<ConfigError>(kVelocitySourceNames, text, "velocity_source");
 }
 
 void FilterSection::validate() const {

@@ -31,6 +31,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 
 namespace travel {
@@ -39,6 +40,11 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+constexpr EnumName<RingSource> kRingSourceNames[] = {{RingSource::None, "none"},
+                                                     {RingSource::Field, "field"},
+                                                     {RingSource::ScanOrder, "scan_order"},
+                                                     {RingSource::Table, "table"}};
 
 // Params limits num_rings to 1024; per-ring arrays live on the stack at this size.
 constexpr int kMaxRings = 1024;
@@ -474,17 +480,7 @@ class RowAssigner {
 }  // namespace
 
 const char* toString(RingSource source) {
-    switch (source) {
-        case RingSource::None:
-            return "none";
-        case RingSource::Field:
-            return "field";
-        case RingSource::ScanOrder:
-            return "scan_order";
-        case RingSource::Table:
-            return "table";
-    }
-    return "?";
+    return nameOf(kRingSourceNames, source);
 }
 
 std::vector<double> elevationTableDeg(const Params& params) {

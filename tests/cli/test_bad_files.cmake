@@ -128,6 +128,30 @@ foreach(frame 000000 000001)
   endif()
 endforeach()
 
+# Scans that are no scans (issue 13): empty, garbage (text padded to a multiple of 16 bytes, which
+# used to become junk points) and non-finite only (quiet NaN 0x7FC01010 in every float; its bytes
+# are all printable-safe, so file(WRITE) can make it). Each: non-zero exit naming the file, and no
+# .label written for it.
+string(ASCII 16 16 192 127 nan_float)
+string(REPEAT "${nan_float}" 80 nan_text)  # 20 KITTI or 16 nuScenes records
+set(text "This is a text file, padded to a multiple of 16 bytes.")
+string(APPEND text "          ")  # 64 bytes
+foreach(kind empty garbage nan)
+  set(dir ${WORK_DIR}/bin_${kind})
+  file(MAKE_DIRECTORY ${dir}/scans)
+  if(kind STREQUAL "empty")
+    file(WRITE ${dir}/scans/000000.bin "")
+  elseif(kind STREQUAL "garbage")
+    file(WRITE ${dir}/scans/000000.bin "${text}")
+  else()
+    file(WRITE ${dir}/scans/000000.bin "${nan_text}")
+  endif()
+  expect_failure_mentioning("000000.bin" ${TRAVEL_KITTI} --scans ${dir}/scans --out ${dir}/out -q)
+  if(EXISTS ${dir}/out/000000.label)
+    message(FATAL_ERROR "${kind} .bin: a .label was written for a file that is no scan")
+  endif()
+endforeach()
+
 # .label truncated (not a multiple of 4, or a multiple of 4 but too few): error naming it.
 foreach(cut 0 3 2001 3996)
   set(dir ${WORK_DIR}/label_cut_${cut})

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "travel/EnumNames.hpp"
+
 namespace travel {
 
 namespace {
@@ -20,16 +22,13 @@ double percent(uint64_t num, uint64_t den, double if_empty) {
     return den == 0 ? if_empty : 100.0 * static_cast<double>(num) / static_cast<double>(den);
 }
 
+constexpr EnumName<GroundProtocol> kProtocolNames[] = {
+    {GroundProtocol::A, "A (Patchwork benchmark)"}, {GroundProtocol::B, "B (Patchwork++)"}};
+
 }  // namespace
 
 const char* protocolName(GroundProtocol protocol) {
-    switch (protocol) {
-        case GroundProtocol::A:
-            return "A (Patchwork benchmark)";
-        case GroundProtocol::B:
-            return "B (Patchwork++)";
-    }
-    return "?";
+    return nameOf(kProtocolNames, protocol);
 }
 
 ConfusionCounts countGround(const std::vector<PointClass>& pred,

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "travel/EnumNames.hpp"
+
 namespace travel {
 
 struct PointCloud {
@@ -45,18 +47,13 @@ enum class PointClass : uint8_t {
     Outlier = 3,    ///< far below the ground surface (reflections, multipath)
 };
 
+inline constexpr EnumName<PointClass> kPointClassNames[] = {{PointClass::Invalid, "invalid"},
+                                                            {PointClass::Ground, "ground"},
+                                                            {PointClass::NonGround, "nonground"},
+                                                            {PointClass::Outlier, "outlier"}};
+
 inline const char* toString(PointClass c) {
-    switch (c) {
-        case PointClass::Invalid:
-            return "invalid";
-        case PointClass::Ground:
-            return "ground";
-        case PointClass::NonGround:
-            return "nonground";
-        case PointClass::Outlier:
-            return "outlier";
-    }
-    return "?";
+    return nameOf(kPointClassNames, c);
 }
 
 }  // namespace travel

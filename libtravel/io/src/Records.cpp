@@ -4,10 +4,21 @@
 #include <string>
 
 #include "Readers.hpp"
+#include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
 
 namespace travel::io_detail {
+namespace {
+
+// The PCD / PLY field names that have a place in a PointCloud ("t" is handled apart: its unit
+// depends on the type).
+constexpr EnumName<Target> kTargetNames[] = {
+    {Target::X, "x"},       {Target::Y, "y"},
+    {Target::Z, "z"},       {Target::Intensity, "intensity"},
+    {Target::Ring, "ring"}, {Target::Time, "time"}};
+
+}  // namespace
 
 void fail(const std::string& path, const std::string& message) {
     throw InputError(path + ": " + message);
@@ -50,12 +61,7 @@ bool isInteger(ValueType type) {
 
 Target targetOf(const std::string& name, ValueType type, double& scale) {
     scale = 1.0;
-    if (name == "x") return Target::X;
-    if (name == "y") return Target::Y;
-    if (name == "z") return Target::Z;
-    if (name == "intensity") return Target::Intensity;
-    if (name == "ring") return Target::Ring;
-    if (name == "time") return Target::Time;
+    if (const auto target = findByName(kTargetNames, name)) return *target;
     if (name == "t") {
         if (isInteger(type)) scale = 1e-9;  // Ouster: uint32 ns since the start of the scan
         return Target::Time;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "Readers.hpp"
+#include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
 
@@ -17,8 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr ScanFormat kFormats[] = {ScanFormat::Auto, ScanFormat::KittiBin, ScanFormat::NuScenesBin,
-                                   ScanFormat::Pcd, ScanFormat::Ply};
+constexpr EnumName<ScanFormat> kFormatNames[] = {{ScanFormat::Auto, "auto"},
+                                                 {ScanFormat::KittiBin, "kitti"},
+                                                 {ScanFormat::NuScenesBin, "nuscenes"},
+                                                 {ScanFormat::Pcd, "pcd"},
+                                                 {ScanFormat::Ply, "ply"}};
 constexpr const char* kFormatHint =
     "give the format with --format (kitti: x y z intensity, nuscenes: x y z intensity ring)";
 
@@ -101,12 +105,13 @@ ScanFormat binFormatFromContents(const std::string& path, const std::vector<unsi
     }
     if (kitti) return ScanFormat::KittiBin;
     if (nuscenes) return ScanFormat::NuScenesBin;
-    const std::string layouts = kitti_size && nuscenes_size
-                                    ? "KITTI (16-byte) nor nuScenes (20-byte)"
-                                : kitti_size ? "KITTI (16-byte)"
-                                             : "nuScenes (20-byte)";
-    fail(path, "not a scan: its " + layouts +
-                   " records are not plausible points (coordinates over 1 km or not finite, "
+    const std::string records =
+        kitti_size && nuscenes_size
+            ? "neither its KITTI (16-byte) nor its nuScenes (20-byte) records are"
+            : std::string("its ") + (kitti_size ? "KITTI (16-byte)" : "nuScenes (20-byte)") +
+                  " records are not";
+    fail(path, "not a scan: " + records +
+                   " plausible points (coordinates over 1 km or not finite, "
                    "negative intensity or a fractional ring); " +
                    kFormatHint);
 }
@@ -150,28 +155,16 @@ void readBin(const std::string& path, const std::vector<unsigned char>& bytes, S
 }  // namespace
 
 const char* toString(ScanFormat format) {
-    switch (format) {
-        case ScanFormat::Auto:
-            return "auto";
-        case ScanFormat::KittiBin:
-            return "kitti";
-        case ScanFormat::NuScenesBin:
-            return "nuscenes";
-        case ScanFormat::Pcd:
-            return "pcd";
-        case ScanFormat::Ply:
-            return "ply";
-    }
-    return "?";
+    return nameOf(kFormatNames, format);
 }
 
 const char* scanFormatNames() {
-    return "auto, kitti, nuscenes, pcd, ply";
+    static const std::string names = namesOf(kFormatNames, ", ", ", ");
+    return names.c_str();
 }
 
 ScanFormat scanFormatFromString(const std::string& name) {
-    for (const ScanFormat f : kFormats)
-        if (name == toString(f)) return f;
+    if (const auto format = findByName(kFormatNames, name)) return *format;
     throw ConfigError("unknown scan format '" + name + "'; allowed: " + scanFormatNames());
 }
 

@@ -1,7 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "Readers.hpp"
 #include "travel/io/BinaryFile.hpp"
@@ -59,18 +62,29 @@ void appendAscii(const PointCloud& cloud, const Columns& c, std::size_t i, std::
     out += '\n';
 }
 
-void writeText(const std::string& path, const std::string& header, const std::string& body) {
-    std::string all = header + body;
-    writeFileBytes(path, reinterpret_cast<const unsigned char*>(all.data()), all.size());
+// `header`, then one text line per point (the ascii encodings of PCD and PLY).
+void writeAscii(const std::string& path, std::string header, const PointCloud& cloud,
+                const Columns& c) {
+    for (std::size_t i = 0; i < c.n; ++i) appendAscii(cloud, c, i, header);
+    writeFileBytes(path, reinterpret_cast<const unsigned char*>(header.data()), header.size());
+}
+
+// `header`, then every point as one packed row (KITTI .bin, binary PCD and PLY).
+std::vector<unsigned char> packRows(const std::string& header, const PointCloud& cloud,
+                                    const Columns& c) {
+    const std::size_t row = rowSize(c);
+    std::vector<unsigned char> bytes(header.begin(), header.end());
+    bytes.resize(header.size() + c.n * row);
+    for (std::size_t i = 0; i < c.n; ++i)
+        packPoint(cloud, c, i, bytes.data() + header.size() + i * row);
+    return bytes;
 }
 
 }  // namespace
 
 void writeKittiBin(const std::string& path, const PointCloud& cloud) {
     const Columns c = columnsOf("writeKittiBin", path, cloud);
-    std::vector<unsigned char> bytes(c.n * 16);
-    const Columns xyzi{c.n, c.intensity, false, false};
-    for (std::size_t i = 0; i < c.n; ++i) packPoint(cloud, xyzi, i, bytes.data() + i * 16);
+    const std::vector<unsigned char> bytes = packRows({}, cloud, {c.n, c.intensity, false, false});
     writeFileBytes(path, bytes.data(), bytes.size());
 }
 
@@ -87,36 +101,31 @@ void writePcd(const std::string& path, const PointCloud& cloud, PcdEncoding enco
     header += std::string("COUNT 1 1 1 1") + (c.ring ? " 1" : "") + (c.time ? " 1" : "") + "\n";
     header += "WIDTH " + std::to_string(c.n) + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
               std::to_string(c.n) + "\nDATA " + data + "\n";
-    if (encoding == PcdEncoding::Ascii) {
-        std::string body;
-        for (std::size_t i = 0; i < c.n; ++i) appendAscii(cloud, c, i, body);
-        writeText(path, header, body);
+    if (encoding == PcdEncoding::Ascii) return writeAscii(path, header, cloud, c);
+    if (encoding == PcdEncoding::Binary) {
+        const std::vector<unsigned char> bytes = packRows(header, cloud, c);
+        writeFileBytes(path, bytes.data(), bytes.size());
         return;
     }
+    // Field after field (all x, then all y, ...), as PCL does before compressing.
+    const std::vector<unsigned char> packed = packRows({}, cloud, c);
     const std::size_t row = rowSize(c);
-    std::vector<unsigned char> packed(c.n * row);
-    for (std::size_t i = 0; i < c.n; ++i) packPoint(cloud, c, i, packed.data() + i * row);
-    std::vector<unsigned char> body;
-    if (encoding == PcdEncoding::Binary) {
-        body = std::move(packed);
-    } else {
-        // Field after field (all x, then all y, ...), as PCL does before compressing.
-        const std::size_t widths[] = {4, 4, 4, 4, c.ring ? 2u : 0u, c.time ? 4u : 0u};
-        std::vector<unsigned char> soa(packed.size());
-        std::size_t column = 0, offset = 0;
-        for (const std::size_t w : widths) {
-            for (std::size_t i = 0; i < c.n; ++i)
-                std::memcpy(soa.data() + column + i * w, packed.data() + i * row + offset, w);
-            column += c.n * w, offset += w;
-        }
-        const std::vector<unsigned char> lzf = lzfCompress(soa.data(), soa.size());
-        body.resize(8 + lzf.size());
-        le::store(static_cast<uint32_t>(lzf.size()), body.data());
-        le::store(static_cast<uint32_t>(soa.size()), body.data() + 4);
-        std::copy(lzf.begin(), lzf.end(), body.begin() + 8);
+    const std::size_t widths[] = {4, 4, 4, 4, c.ring ? 2u : 0u, c.time ? 4u : 0u};
+    std::vector<unsigned char> soa(packed.size());
+    std::size_t column = 0, offset = 0;
+    for (const std::size_t w : widths) {
+        for (std::size_t i = 0; i < c.n; ++i)
+            std::memcpy(soa.data() + column + i * w, packed.data() + i * row + offset, w);
+        column += c.n * w, offset += w;
     }
-    body.insert(body.begin(), header.begin(), header.end());
-    writeFileBytes(path, body.data(), body.size());
+    const std::vector<unsigned char> lzf = lzfCompress(soa.data(), soa.size());
+    std::vector<unsigned char> bytes(header.begin(), header.end());
+    bytes.resize(header.size() + 8 + lzf.size());
+    le::store(static_cast<uint32_t>(lzf.size()), bytes.data() + header.size());
+    le::store(static_cast<uint32_t>(soa.size()), bytes.data() + header.size() + 4);
+    std::copy(lzf.begin(), lzf.end(),
+              bytes.begin() + static_cast<std::ptrdiff_t>(header.size() + 8));
+    writeFileBytes(path, bytes.data(), bytes.size());
 }
 
 void writePly(const std::string& path, const PointCloud& cloud, PlyEncoding encoding) {
@@ -129,17 +138,8 @@ void writePly(const std::string& path, const PointCloud& cloud, PlyEncoding enco
     if (c.ring) header += "property ushort ring\n";
     if (c.time) header += "property float time\n";
     header += "end_header\n";
-    if (encoding == PlyEncoding::Ascii) {
-        std::string body;
-        for (std::size_t i = 0; i < c.n; ++i) appendAscii(cloud, c, i, body);
-        writeText(path, header, body);
-        return;
-    }
-    const std::size_t row = rowSize(c);
-    std::vector<unsigned char> bytes(header.begin(), header.end());
-    bytes.resize(header.size() + c.n * row);
-    for (std::size_t i = 0; i < c.n; ++i)
-        packPoint(cloud, c, i, bytes.data() + header.size() + i * row);
+    if (encoding == PlyEncoding::Ascii) return writeAscii(path, header, cloud, c);
+    const std::vector<unsigned char> bytes = packRows(header, cloud, c);
     writeFileBytes(path, bytes.data(), bytes.size());
 }
 

@@ -12,8 +12,6 @@
 namespace travel::sim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegToRad = kPi / 180.0;
 // Objects reach this far below the lowest sampled terrain under them, so that terrain between
 // the samples cannot open a gap under the object.
 constexpr double kObjectSink = 0.05;

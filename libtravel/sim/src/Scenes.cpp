@@ -4,7 +4,16 @@
 namespace travel::sim {
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+// A 15 m ramp rising along +x from x = start_x, centred on y = 0.
+Ramp rampAlongX(double start_x, double width, double slope_deg) {
+    Ramp ramp;
+    ramp.start = {start_x, 0.0};
+    ramp.direction = {1.0, 0.0};
+    ramp.length = 15.0;
+    ramp.width = width;
+    ramp.slope_deg = slope_deg;
+    return ramp;
+}
 
 Step halfPlane(const Eigen::Vector2d& start, const Eigen::Vector2d& towards_raised_side,
                double height) {
@@ -54,13 +63,7 @@ Scene flatGround() {
 
 Scene slope(double slope_deg) {
     Scene scene;
-    Ramp ramp;
-    ramp.start = {6.0, 0.0};
-    ramp.direction = {1.0, 0.0};
-    ramp.length = 15.0;
-    ramp.width = 20.0;
-    ramp.slope_deg = slope_deg;
-    scene.ramps.push_back(ramp);
+    scene.ramps.push_back(rampAlongX(6.0, 20.0, slope_deg));
     return scene;
 }
 
@@ -105,13 +108,7 @@ Scene urbanObjects() {
 
 Scene mixed() {
     Scene scene;
-    Ramp ramp;
-    ramp.start = {12.0, 0.0};
-    ramp.direction = {1.0, 0.0};
-    ramp.length = 15.0;
-    ramp.width = 8.0;
-    ramp.slope_deg = 10.0;
-    scene.ramps.push_back(ramp);
+    scene.ramps.push_back(rampAlongX(12.0, 8.0, 10.0));
     scene.steps.push_back(halfPlane({0.0, 5.0}, {0.0, 1.0}, 0.15));
     scene.bumps = {{{-15.0, -12.0}, 0.4, 3.0}, {{8.0, -16.0}, 0.3, 2.5}, {{-20.0, 15.0}, 0.5, 4.0}};
     scene.boxes = {car(1, -8.0, -2.0, 10.0)};

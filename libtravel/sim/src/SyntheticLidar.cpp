@@ -12,8 +12,6 @@
 namespace travel::sim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegToRad = kPi / 180.0;
 constexpr float kTerrainIntensity = 0.5f;
 constexpr float kObjectIntensity = 0.8f;
 // Bisection stops when the crossing is bracketed this tightly [m]: 18 halvings of a 0.25 m step.
@@ -300,6 +298,17 @@ struct PreparedScene {
     }
 };
 
+// Appends n beams evenly spaced from lo_deg to hi_deg (a single beam sits at lo_deg).
+void appendUniformBeams(std::vector<double>& elevations_deg, int n, double lo_deg, double hi_deg) {
+    for (int i = 0; i < n; ++i)
+        elevations_deg.push_back(n == 1 ? lo_deg : lo_deg + (hi_deg - lo_deg) * i / (n - 1));
+}
+
+LidarModel withMaxRange(LidarModel model, double max_range) {
+    model.max_range = max_range;
+    return model;
+}
+
 }  // namespace
 
 std::vector<double> LidarModel::elevationsByRing() const {
@@ -331,42 +340,29 @@ LidarModel LidarModel::hdl64(int columns) {
     // The real unit has an upper and a lower block of 32 lasers with different spacing.
     LidarModel model;
     constexpr int kBlockBeams = 32;
-    for (int i = 0; i < kBlockBeams; ++i) {
-        model.elevations_deg.push_back(2.0 + (-8.33 - 2.0) * i / (kBlockBeams - 1));
-    }
-    for (int i = 0; i < kBlockBeams; ++i) {
-        model.elevations_deg.push_back(-8.83 + (-24.33 + 8.83) * i / (kBlockBeams - 1));
-    }
+    appendUniformBeams(model.elevations_deg, kBlockBeams, 2.0, -8.33);
+    appendUniformBeams(model.elevations_deg, kBlockBeams, -8.83, -24.33);
     model.columns = columns;
     model.max_range = 120.0;
     return model;
 }
 
 LidarModel LidarModel::hdl32(int columns) {
-    LidarModel model = uniform(32, -30.67, 10.67, columns);
-    model.max_range = 100.0;
-    return model;
+    return withMaxRange(uniform(32, -30.67, 10.67, columns), 100.0);
 }
 
 LidarModel LidarModel::vlp16(int columns) {
-    LidarModel model = uniform(16, -15.0, 15.0, columns);
-    model.max_range = 100.0;
-    return model;
+    return withMaxRange(uniform(16, -15.0, 15.0, columns), 100.0);
 }
 
 LidarModel LidarModel::os128(int columns) {
-    LidarModel model = uniform(128, -22.5, 22.5, columns);
-    model.max_range = 120.0;
-    return model;
+    return withMaxRange(uniform(128, -22.5, 22.5, columns), 120.0);
 }
 
 LidarModel LidarModel::uniform(int n_beams, double lo_deg, double hi_deg, int columns) {
     if (n_beams < 1) throw std::invalid_argument("travel::sim::LidarModel::uniform: n_beams < 1");
     LidarModel model;
-    for (int i = 0; i < n_beams; ++i) {
-        model.elevations_deg.push_back(
-            n_beams == 1 ? lo_deg : lo_deg + (hi_deg - lo_deg) * i / (n_beams - 1));
-    }
+    appendUniformBeams(model.elevations_deg, n_beams, lo_deg, hi_deg);
     model.columns = columns;
     return model;
 }

@@ -8,6 +8,8 @@
 
 #include <Eigen/Dense>
 
+#include "travel/EnumNames.hpp"
+
 namespace travel {
 namespace {
 
@@ -22,18 +24,14 @@ constexpr double kCorrectionGates[] = {kCorrectionGate0, 0.3, 0.1, 0.05};
 constexpr int kStepRadius = 2;           ///< [cells] neighbourhood of the step rule
 constexpr float kMaxPairDistance = 4.f;  ///< [cells] farthest pair of the step rule
 
+constexpr EnumName<CellState> kCellStateNames[] = {{CellState::Unknown, "unknown"},
+                                                   {CellState::Traversable, "traversable"},
+                                                   {CellState::Obstacle, "obstacle"}};
+
 }  // namespace
 
 const char* toString(CellState state) {
-    switch (state) {
-        case CellState::Unknown:
-            return "unknown";
-        case CellState::Traversable:
-            return "traversable";
-        case CellState::Obstacle:
-            return "obstacle";
-    }
-    return "?";
+    return nameOf(kCellStateNames, state);
 }
 
 void TraversabilityGrid::reset(const GridGeometry& geometry) {

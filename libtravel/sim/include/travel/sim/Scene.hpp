@@ -14,6 +14,8 @@
 namespace travel::sim {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegToRad = kPi / 180.0;  ///< the scene's angles (slope_deg, yaw_deg) are degrees
 
 /// An inclined strip: the height rises linearly along `direction` from the start line for
 /// `length` metres, then stays at the top height for `plateau_length` metres (a raised level).
