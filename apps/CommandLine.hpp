@@ -1,37 +1,153 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Shared by the apps: command-line parsing (MRPT's TCLAP returns false from parse() - after
-// printing the message - on a parse error and after --help / --version, instead of exiting;
-// callers must stop then), the parameter sources in their documented order, and main()'s
-// one-line error reporting.
+// Shared by the apps: the one command-line dialect (docs/cli.md), declared here once:
+// CommandLine (TCLAP with the project's version, examples in --help, "unknown flag X; did you
+// mean Y?" errors), CommonFlags (-i/-o/-f/-q/-v and the configuration flags), PictureFlags
+// (--mpp, --size), the parameter sources in their documented order, and main()'s one-line
+// error reporting.
 #pragma once
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/3rdparty/tclap/StdOutput.h>
 
+#include <cmath>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "travel/Config.hpp"
+#include "travel/ConfigFields.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/io/ScanIO.hpp"
+
+#ifndef TRAVEL_VERSION
+#error "TRAVEL_VERSION (CMake's PROJECT_VERSION) is defined for the apps in apps/CMakeLists.txt"
+#endif
 
 namespace travel::apps {
 
-/// Parses; returns the exit code to stop with (0 after --help / --version, 1 after an error),
-/// or nothing when the program should go on.
-inline std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv) {
-    if (cmd.parse(argc, argv)) return std::nullopt;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help" || arg == "--version") return 0;
+/// Flags the one dialect replaced (the project is 0.x: the old spellings are gone, not kept as
+/// aliases); giving one gets the new spelling suggested.
+inline const std::pair<const char*, const char*> kReplacedFlags[] = {
+    {"--scans", "-i/--input"}, {"--scan", "-i/--input"},
+    {"-w", "-i/--input"},      {"--world", "-i/--input"},
+    {"--out", "-o/--output"},  {"--png-mpp", "--mpp"},
+    {"--png-size", "--size"},  {"--print-params", "--print-config"}};
+
+/// "-i/--input" or "--set": how the help and the messages name a flag.
+inline std::string flagName(const TCLAP::Arg& arg) {
+    if (arg.shortID().rfind('<', 0) == 0) return arg.shortID();  // positional: "<command>"
+    return (arg.getFlag().empty() ? "" : "-" + arg.getFlag() + "/") + "--" + arg.getName();
+}
+
+/// The declared flag nearest to `given` ("--inptu", "--scans"), as "; did you mean -i/--input?",
+/// or "".
+inline std::string suggestFlag(TCLAP::CmdLineInterface& cmd, const std::string& given) {
+    const std::string bare = given.substr(0, given.find('='));
+    std::vector<std::string> names;
+    std::vector<const TCLAP::Arg*> args;
+    for (const TCLAP::Arg* arg : cmd.getArgList()) {
+        if (arg->getName().empty() || arg->getName() == TCLAP::Arg::ignoreNameString()) continue;
+        if (arg->shortID().rfind('<', 0) == 0) continue;  // an unlabelled (positional) argument
+        names.push_back(arg->getName());
+        args.push_back(arg);
     }
-    return 1;
+    for (const auto& [old_flag, new_flag] : kReplacedFlags)
+        for (const TCLAP::Arg* arg : args)  // only a flag this app has
+            if (bare == old_flag && flagName(*arg) == new_flag)
+                return std::string("; did you mean ") + new_flag + "?";
+    const std::string key = bare.substr(std::min(bare.find_first_not_of('-'), bare.size()));
+    const std::string best = key.size() < 2 ? "" : travel::fields::nearestName(key, names);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == best) return "; did you mean " + flagName(*args[i]) + "?";
+    return "";
+}
+
+/// TCLAP's output for the apps: --help with examples, --version as "<app> <version>", and a
+/// parse error as one line naming the flag (instead of TCLAP's full usage dump).
+class AppOutput : public TCLAP::StdOutput {
+  public:
+    AppOutput(std::string app, std::vector<std::string> examples)
+        : app_(std::move(app)), examples_(std::move(examples)) {}
+
+    void usage(TCLAP::CmdLineInterface& cmd) override {
+        TCLAP::StdOutput::usage(cmd);
+        std::cout << "Examples:\n";
+        for (const std::string& example : examples_) std::cout << "  " << example << "\n";
+        std::cout << "\nThe flags every app shares: docs/cli.md\n";
+    }
+    void version(TCLAP::CmdLineInterface& cmd) override {
+        std::cout << app_ << " " << cmd.getVersion() << "\n";
+    }
+    void failure(TCLAP::CmdLineInterface& cmd, TCLAP::ArgException& e) override {
+        failed_ = true;
+        std::string id = e.argId();
+        if (id.rfind("Argument: ", 0) == 0) id.erase(0, 10);
+        if (id.size() > 2 && id.front() == '(' && id.back() == ')')
+            id = id.substr(1, id.size() - 2);
+        std::string text;
+        // A flag where a positional value is expected (travel-eval's command) fails its
+        // constraint: "Value '--scans' does not meet constraint: ...".
+        const auto quote = e.error().find("Value '-");
+        if (quote == 0 && e.error().find("' does not meet constraint") != std::string::npos)
+            id = e.error().substr(7, e.error().find('\'', 7) - 7);
+        if (e.error().rfind("Couldn't find match", 0) == 0 || quote == 0)
+            text = (id.rfind('-', 0) == 0 ? "unknown flag " + id : "unexpected argument " + id) +
+                   suggestFlag(cmd, id);
+        else if (e.error().rfind("One or more required", 0) == 0)
+            for (const TCLAP::Arg* arg : cmd.getArgList())
+                if (arg->isRequired() && !arg->isSet())
+                    text += (text.empty() ? "missing " : ", ") + flagName(*arg);
+        if (text.empty()) text = e.error() + (id.empty() || id == " " ? "" : " (" + id + ")");
+        std::cerr << app_ << ": " << text << "\nRun '" << app_
+                  << " --help' for the flags and examples.\n";
+    }
+    bool failed() const { return failed_; }
+
+  private:
+    std::string app_;
+    std::vector<std::string> examples_;
+    bool failed_ = false;
+};
+
+/// An app's command line: TCLAP's CmdLine with the project version and AppOutput. Declare the
+/// flags on cmd, then parse().
+class CommandLine {
+  public:
+    CommandLine(const std::string& app, const std::string& description,
+                std::vector<std::string> examples)
+        : output_(app, std::move(examples)), cmd(description, ' ', TRAVEL_VERSION) {
+        cmd.setOutput(&output_);
+    }
+    /// Returns the exit code to stop with (0 after --help / --version, 1 after an error, the
+    /// message printed), or nothing when the program should go on.
+    std::optional<int> parse(int argc, char** argv) {
+        if (!cmd.parse(argc, argv)) return output_.failed() ? 1 : 0;
+        for (const auto& check : checks) check();  // throw usageError()
+        return std::nullopt;
+    }
+    /// Checks across flags, run after parsing (before the app looks at any file).
+    std::vector<std::function<void()>> checks;
+
+  private:
+    AppOutput output_;  // declared first: outlives cmd, which does not own it
+
+  public:
+    TCLAP::CmdLine cmd;
+};
+
+/// A command-line mistake found after parsing (a missing or contradictory flag): runMain()
+/// prints it with the --help hint.
+inline TCLAP::CmdLineParseException usageError(const std::string& message) {
+    return TCLAP::CmdLineParseException(message);
 }
 
 /// MRPT exception texts span many lines (banner, nested "Message:" lines, locations, call
@@ -152,6 +268,95 @@ struct ConfigFlags {
     }
 };
 
+/// The flags every app takes, with the same meaning everywhere (docs/cli.md): -i/--input,
+/// -o/--output, -f/--format, -q/--quiet, -v/--verbose and the ConfigFlags.
+struct CommonFlags {
+    mutable TCLAP::MultiArg<std::string> input;  // TCLAP's getValue() is not const
+    mutable TCLAP::ValueArg<std::string> output;
+    ConfigFlags config;
+    mutable TCLAP::ValueArg<std::string> format;
+    mutable TCLAP::SwitchArg quiet_arg, verbose_arg;
+
+    /// `repeatable_input`: the app reads several inputs (-i A -i B); `default_preset` as
+    /// ConfigFlags'.
+    CommonFlags(CommandLine& line, bool repeatable_input, const std::string& default_preset)
+        : CommonFlags(line.cmd, repeatable_input, default_preset) {
+        line.checks.push_back([this] {
+            if (quiet_arg.getValue() && verbose_arg.getValue())
+                throw usageError("-q/--quiet and -v/--verbose contradict each other");
+        });
+    }
+    CommonFlags(TCLAP::CmdLine& cmd, bool repeatable_input, const std::string& default_preset)
+        : input("i", "input",
+                "Input: a scan (.bin, .pcd, .ply), a folder of scans, a KITTI sequence folder "
+                "(velodyne/; labels/ found automatically), a rawlog or a Velodyne .pcap, "
+                "whichever this app reads (see above)" +
+                    std::string(repeatable_input ? "; repeatable" : ""),
+                false, "PATH", cmd),
+          output("o", "output", "Output file or folder (see above); folders are created", false, "",
+                 "PATH", cmd),
+          config(cmd, default_preset),
+          format("f", "format",
+                 std::string("Scan file format: ") + scanFormatNames() +
+                     " (auto: decided from the file name, folder and contents, never guessed)",
+                 false, "auto", "NAME", cmd),
+          quiet_arg("q", "quiet", "Print nothing but errors", cmd),
+          verbose_arg("v", "verbose", "Print more (per-frame details, library debug logs)", cmd),
+          repeatable_(repeatable_input) {}
+
+    /// Every -i, in order; `fallback` (when not empty) if none was given.
+    std::vector<std::string> inputs(const std::string& fallback = "") const {
+        if (input.getValue().empty() && fallback.empty())
+            throw usageError("missing -i/--input PATH");
+        if (input.getValue().size() > 1 && !repeatable_)
+            throw usageError("-i/--input given " + std::to_string(input.getValue().size()) +
+                             " times: this app reads one input");
+        return input.getValue().empty() ? std::vector<std::string>{fallback} : input.getValue();
+    }
+    /// The one -i (required unless `fallback` is given).
+    std::string inputPath(const std::string& fallback = "") const {
+        return inputs(fallback).front();
+    }
+    /// The -o (required unless `fallback` is given).
+    std::string outputPath(const std::string& fallback = "") const {
+        if (!output.isSet() && fallback.empty()) throw usageError("missing -o/--output PATH");
+        return output.isSet() ? output.getValue() : fallback;
+    }
+    /// -f as ScanFormat (ConfigError listing the names when unknown).
+    ScanFormat scanFormat() const { return scanFormatFromString(format.getValue()); }
+    /// For the apps whose inputs are not scan files (rawlogs, pcaps, worlds).
+    void requireAutoFormat(const std::string& what) const {
+        if (format.getValue() != "auto")
+            throw usageError("-f/--format " + format.getValue() + ": this app reads " + what +
+                             ", recognised by their contents; only -f auto");
+    }
+    bool quiet() const { return quiet_arg.getValue(); }
+    bool verbose() const { return verbose_arg.getValue(); }
+
+  private:
+    bool repeatable_;
+};
+
+/// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
+struct PictureFlags {
+    mutable TCLAP::ValueArg<double> mpp;  // TCLAP's getValue() is not const
+    mutable TCLAP::ValueArg<int> size;
+    explicit PictureFlags(TCLAP::CmdLine& cmd)
+        : mpp("", "mpp", "Picture scale: metres per pixel (default 0.075: +/-30 m in 800 px)",
+              false, 0.075, "M", cmd),
+          size("", "size", "Picture (panel) side in pixels, 64 to 8192", false, 800, "PX", cmd) {}
+    double metresPerPixel() const {
+        if (!(mpp.getValue() > 0) || !std::isfinite(mpp.getValue()))
+            throw usageError("--mpp must be > 0");
+        return mpp.getValue();
+    }
+    int sidePixels() const {
+        if (size.getValue() < 64 || size.getValue() > 8192)
+            throw usageError("--size must be in [64, 8192]");
+        return size.getValue();
+    }
+};
+
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
 /// or an uncaught exception).
@@ -160,7 +365,8 @@ int runMain(const char* name, Run&& run, int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const TCLAP::ArgException& e) {
-        std::cerr << name << ": " << e.error() << " (" << e.argId() << ")\n";
+        std::cerr << name << ": " << e.error() << "\nRun '" << name
+                  << " --help' for the flags and examples.\n";
     } catch (const ConfigError& e) {
         std::cerr << name << ": configuration error: " << oneLine(e.what()) << "\n";
     } catch (const std::exception& e) {

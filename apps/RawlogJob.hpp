@@ -93,6 +93,7 @@ struct Options {
     bool plain_clouds = true;
     std::vector<std::string> overrides;
     bool quiet = false;
+    bool verbose = false;
     bool ignore_sensor_pose = false;
     int png_size = 800;
     double png_metres_per_pixel = 0.075;
