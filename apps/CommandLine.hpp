@@ -268,10 +268,26 @@ struct ConfigFlags {
     }
 };
 
+/// -i/--input: a MultiArg, shown in --help as repeatable only where the app reads several inputs.
+class InputArg : public TCLAP::MultiArg<std::string> {
+  public:
+    InputArg(const std::string& description, bool repeatable, TCLAP::CmdLine& cmd)
+        : MultiArg("i", "input", description, false, "PATH", cmd), repeatable_(repeatable) {}
+    std::string shortID(const std::string& val) const override {
+        return repeatable_ ? MultiArg::shortID(val) : Arg::shortID(_typeDesc);
+    }
+    std::string longID(const std::string& val) const override {
+        return repeatable_ ? MultiArg::longID(val) : Arg::longID(_typeDesc);
+    }
+
+  private:
+    bool repeatable_;
+};
+
 /// The flags every app takes, with the same meaning everywhere (docs/cli.md): -i/--input,
 /// -o/--output, -f/--format, -q/--quiet, -v/--verbose and the ConfigFlags.
 struct CommonFlags {
-    mutable TCLAP::MultiArg<std::string> input;  // TCLAP's getValue() is not const
+    mutable InputArg input;  // TCLAP's getValue() is not const
     mutable TCLAP::ValueArg<std::string> output;
     ConfigFlags config;
     mutable TCLAP::ValueArg<std::string> format;
@@ -287,12 +303,11 @@ struct CommonFlags {
         });
     }
     CommonFlags(TCLAP::CmdLine& cmd, bool repeatable_input, const std::string& default_preset)
-        : input("i", "input",
-                "Input: a scan (.bin, .pcd, .ply), a folder of scans, a KITTI sequence folder "
-                "(velodyne/; labels/ found automatically), a rawlog or a Velodyne .pcap, "
-                "whichever this app reads (see above)" +
-                    std::string(repeatable_input ? "; repeatable" : ""),
-                false, "PATH", cmd),
+        : input(
+              "Input: a scan (.bin, .pcd, .ply), a folder of scans, a KITTI sequence folder "
+              "(velodyne/; labels/ found automatically), a rawlog or a Velodyne .pcap, "
+              "whichever this app reads (see above)",
+              repeatable_input, cmd),
           output("o", "output", "Output file or folder (see above); folders are created", false, "",
                  "PATH", cmd),
           config(cmd, default_preset),
