@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
 #include "travel/Config.hpp"
 #include "travel/ConfigFields.hpp"
 #include "travel/ConfigIO.hpp"
@@ -369,6 +370,24 @@ struct PictureFlags {
         if (size.getValue() < 64 || size.getValue() > 8192)
             throw usageError("--size must be in [64, 8192]");
         return size.getValue();
+    }
+};
+
+/// --max-memory MIB, for the apps that read MRPT files (travel-map, travel-rawlog; see
+/// MemoryLimit.hpp for why).
+struct MemoryLimitFlag {
+    mutable TCLAP::ValueArg<long> arg;  // TCLAP's getValue() is not const
+    explicit MemoryLimitFlag(TCLAP::CmdLine& cmd)
+        : arg("", "max-memory",
+              "Address-space ceiling of this process in MiB (0 = none). A corrupt rawlog can "
+              "announce gigabyte-sized objects that MRPT's reader would allocate; above the "
+              "ceiling the record is reported as corrupt instead. Default " +
+                  std::to_string(kDefaultMemoryLimitMiB),
+              false, static_cast<long>(kDefaultMemoryLimitMiB), "MIB", cmd) {}
+    std::size_t mib() const {
+        if (arg.getValue() < 0 || (arg.getValue() > 0 && arg.getValue() < 256))
+            throw usageError("--max-memory must be 0 (no limit) or at least 256 MiB");
+        return static_cast<std::size_t>(arg.getValue());
     }
 };
 

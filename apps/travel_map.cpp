@@ -103,11 +103,7 @@ int run(int argc, char** argv) {
                                        "", "FILE", cmd);
     TCLAP::ValueArg<long> max_frames("", "max-frames", "Stop after this many frames (0 = all)",
                                      false, 0, "N", cmd);
-    TCLAP::ValueArg<long> max_memory(
-        "", "max-memory",
-        "Address-space ceiling in MiB (0 = none); a corrupt rawlog record that announces more "
-        "is reported instead of exhausting memory",
-        false, long(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
+    const travel::apps::MemoryLimitFlag max_memory(cmd);
     TCLAP::MultiArg<std::string> probe(
         "", "probe",
         "Print the state of the grid cell at world X,Y after mapping (repeatable; a line "
@@ -131,10 +127,8 @@ int run(int argc, char** argv) {
             throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
         probes.emplace_back(x, y);
     }
-    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
-        throw std::runtime_error("--max-memory must be 0 (no limit) or at least 256 MiB");
     if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
-    const std::string note = travel::apps::applyMemoryLimit(std::size_t(max_memory.getValue()));
+    const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && !o.quiet) std::cerr << "travel-map: " << note << "\n";
 
     // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
@@ -156,7 +150,9 @@ int run(int argc, char** argv) {
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    if (o.quiet) map.filter().setMinLoggingLevel(mrpt::system::LVL_ERROR);  // -q: errors only
+    map.filter().setMinLoggingLevel(o.quiet     ? mrpt::system::LVL_ERROR  // -q: errors only
+                                    : o.verbose ? mrpt::system::LVL_DEBUG
+                                                : mrpt::system::LVL_INFO);
     // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
     const std::string extension = fs::path(o.input).extension().string();
     const bool kitti = fs::is_directory(o.input) || extension == ".bin" || extension == ".pcd" ||

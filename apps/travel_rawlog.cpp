@@ -153,13 +153,7 @@ Options parseCommandLine(int argc, char** argv) {
                                  "Keep the mount_* parameters of the configuration instead of "
                                  "each observation's sensorPose",
                                  cmd);
-    TCLAP::ValueArg<long> max_memory(
-        "", "max-memory",
-        "Address-space ceiling of this process in MiB (0 = none). A corrupt rawlog can announce "
-        "gigabyte-sized objects that MRPT's reader would allocate; above the ceiling the record "
-        "is reported as corrupt instead. Default " +
-            std::to_string(travel::apps::kDefaultMemoryLimitMiB),
-        false, static_cast<long>(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
+    const travel::apps::MemoryLimitFlag max_memory(cmd);
     Options o;
     o.exit_code = line.parse(argc, argv);
     if (o.exit_code) return o;
@@ -185,9 +179,7 @@ Options parseCommandLine(int argc, char** argv) {
     o.ignore_sensor_pose = ignore_pose.getValue();
     o.label_reference = reference.getValue();
     o.plain_clouds = !no_plain.getValue();
-    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
-        throw AppError("--max-memory must be 0 (no limit) or at least 256 MiB");
-    o.max_memory_mib = static_cast<std::size_t>(max_memory.getValue());
+    o.max_memory_mib = max_memory.mib();
     return o;
 }
 
