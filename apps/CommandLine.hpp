@@ -1,13 +1,15 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Shared by the apps: command-line parsing (MRPT's TCLAP returns false from parse() - after
-// printing the message - on a parse error and after --help / --version, instead of exiting;
-// callers must stop then), the parameter sources in their documented order, and main()'s
-// one-line error reporting.
+// Shared by the apps: the one command-line dialect (docs/cli.md), declared here once:
+// CommonFlags (-i/-o/-f/-q/-v and the configuration flags), PictureFlags (--mpp, --size),
+// MemoryLimitFlag, the parameter sources in their documented order, and main()'s one-line error
+// reporting. The parser itself (CommandLine: version, examples, "did you mean") is in
+// CommandLineParser.hpp.
 #pragma once
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <optional>
@@ -15,24 +17,16 @@
 #include <string>
 #include <vector>
 
+#include "CommandLineParser.hpp"
+#include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
 #include "travel/Config.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/io/ScanIO.hpp"
 
 namespace travel::apps {
-
-/// Parses; returns the exit code to stop with (0 after --help / --version, 1 after an error),
-/// or nothing when the program should go on.
-inline std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv) {
-    if (cmd.parse(argc, argv)) return std::nullopt;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help" || arg == "--version") return 0;
-    }
-    return 1;
-}
 
 /// MRPT exception texts span many lines (banner, nested "Message:" lines, locations, call
 /// stacks); keep the innermost message, which says what went wrong. One-line texts are kept.
@@ -152,6 +146,128 @@ struct ConfigFlags {
     }
 };
 
+/// -i/--input: a MultiArg, shown in --help as repeatable only where the app reads several inputs.
+class InputArg : public TCLAP::MultiArg<std::string> {
+  public:
+    InputArg(const std::string& description, bool repeatable, TCLAP::CmdLine& cmd)
+        : MultiArg("i", "input", description, false, "PATH", cmd), repeatable_(repeatable) {}
+    std::string shortID(const std::string& val) const override {
+        return repeatable_ ? MultiArg::shortID(val) : Arg::shortID(_typeDesc);
+    }
+    std::string longID(const std::string& val) const override {
+        return repeatable_ ? MultiArg::longID(val) : Arg::longID(_typeDesc);
+    }
+
+  private:
+    bool repeatable_;
+};
+
+/// The flags every app takes, with the same meaning everywhere (docs/cli.md): -i/--input,
+/// -o/--output, -f/--format, -q/--quiet, -v/--verbose and the ConfigFlags.
+struct CommonFlags {
+    mutable InputArg input;  // TCLAP's getValue() is not const
+    mutable TCLAP::ValueArg<std::string> output;
+    ConfigFlags config;
+    mutable TCLAP::ValueArg<std::string> format;
+    mutable TCLAP::SwitchArg quiet_arg, verbose_arg;
+
+    /// `repeatable_input`: the app reads several inputs (-i A -i B); `default_preset` as
+    /// ConfigFlags'.
+    CommonFlags(CommandLine& line, bool repeatable_input, const std::string& default_preset)
+        : CommonFlags(line.cmd, repeatable_input, default_preset) {
+        line.checks.push_back([this] {
+            if (quiet_arg.getValue() && verbose_arg.getValue())
+                throw usageError("-q/--quiet and -v/--verbose contradict each other");
+        });
+    }
+    CommonFlags(TCLAP::CmdLine& cmd, bool repeatable_input, const std::string& default_preset)
+        : input(
+              "Input: a scan (.bin, .pcd, .ply), a folder of scans, a KITTI sequence folder "
+              "(velodyne/; labels/ found automatically), a rawlog or a Velodyne .pcap, "
+              "whichever this app reads (see above)",
+              repeatable_input, cmd),
+          output("o", "output", "Output file or folder (see above); folders are created", false, "",
+                 "PATH", cmd),
+          config(cmd, default_preset),
+          format("f", "format",
+                 std::string("Scan file format: ") + scanFormatNames() +
+                     " (auto: decided from the file name, folder and contents, never guessed)",
+                 false, "auto", "NAME", cmd),
+          quiet_arg("q", "quiet", "Print nothing but errors", cmd),
+          verbose_arg("v", "verbose", "Print more (per-frame details, library debug logs)", cmd),
+          repeatable_(repeatable_input) {}
+
+    /// Every -i, in order; `fallback` (when not empty) if none was given.
+    std::vector<std::string> inputs(const std::string& fallback = "") const {
+        if (input.getValue().empty() && fallback.empty())
+            throw usageError("missing -i/--input PATH");
+        if (input.getValue().size() > 1 && !repeatable_)
+            throw usageError("-i/--input given " + std::to_string(input.getValue().size()) +
+                             " times: this app reads one input");
+        return input.getValue().empty() ? std::vector<std::string>{fallback} : input.getValue();
+    }
+    /// The one -i (required unless `fallback` is given).
+    std::string inputPath(const std::string& fallback = "") const {
+        return inputs(fallback).front();
+    }
+    /// The -o (required unless `fallback` is given).
+    std::string outputPath(const std::string& fallback = "") const {
+        if (!output.isSet() && fallback.empty()) throw usageError("missing -o/--output PATH");
+        return output.isSet() ? output.getValue() : fallback;
+    }
+    /// -f as ScanFormat (ConfigError listing the names when unknown).
+    ScanFormat scanFormat() const { return scanFormatFromString(format.getValue()); }
+    /// For the apps whose inputs are not scan files (rawlogs, pcaps, worlds).
+    void requireAutoFormat(const std::string& what) const {
+        if (format.getValue() != "auto")
+            throw usageError("-f/--format " + format.getValue() + ": this app reads " + what +
+                             ", recognised by their contents; only -f auto");
+    }
+    bool quiet() const { return quiet_arg.getValue(); }
+    bool verbose() const { return verbose_arg.getValue(); }
+
+  private:
+    bool repeatable_;
+};
+
+/// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
+struct PictureFlags {
+    mutable TCLAP::ValueArg<double> mpp;  // TCLAP's getValue() is not const
+    mutable TCLAP::ValueArg<int> size;
+    explicit PictureFlags(TCLAP::CmdLine& cmd)
+        : mpp("", "mpp", "Picture scale: metres per pixel (default 0.075: +/-30 m in 800 px)",
+              false, 0.075, "M", cmd),
+          size("", "size", "Picture (panel) side in pixels, 64 to 8192", false, 800, "PX", cmd) {}
+    double metresPerPixel() const {
+        if (!(mpp.getValue() > 0) || !std::isfinite(mpp.getValue()))
+            throw usageError("--mpp must be > 0");
+        return mpp.getValue();
+    }
+    int sidePixels() const {
+        if (size.getValue() < 64 || size.getValue() > 8192)
+            throw usageError("--size must be in [64, 8192]");
+        return size.getValue();
+    }
+};
+
+/// --max-memory MIB, for the apps that read MRPT files (travel-map, travel-rawlog; see
+/// MemoryLimit.hpp for why).
+struct MemoryLimitFlag {
+    mutable TCLAP::ValueArg<long> arg;  // TCLAP's getValue() is not const
+    explicit MemoryLimitFlag(TCLAP::CmdLine& cmd)
+        : arg("", "max-memory",
+              "Address-space ceiling of this process in MiB (0 = none). A corrupt rawlog can "
+              "announce gigabyte-sized objects that MRPT's reader would allocate; above the "
+              "ceiling the record is reported as corrupt instead. Default " +
+                  std::to_string(kDefaultMemoryLimitMiB),
+              false, static_cast<long>(kDefaultMemoryLimitMiB), "MIB", cmd) {}
+    std::size_t mib() const {
+        if (arg.getValue() < 0 || (arg.getValue() > 0 && arg.getValue() < 256))
+            throw usageError("--max-memory must be 0 (no limit) or at least 256 MiB");
+        return static_cast<std::size_t>(arg.getValue());
+    }
+};
+
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
 /// or an uncaught exception).
@@ -160,7 +276,8 @@ int runMain(const char* name, Run&& run, int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const TCLAP::ArgException& e) {
-        std::cerr << name << ": " << e.error() << " (" << e.argId() << ")\n";
+        std::cerr << name << ": " << e.error() << "\nRun '" << name
+                  << " --help' for the flags and examples.\n";
     } catch (const ConfigError& e) {
         std::cerr << name << ": configuration error: " << oneLine(e.what()) << "\n";
     } catch (const std::exception& e) {

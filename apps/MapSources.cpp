@@ -121,10 +121,9 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
 
 void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
               std::optional<PoseFileSource> pose_file) {
-    const fs::path dir(o.input);
-    const fs::path scans = fs::exists(dir / "velodyne") ? dir / "velodyne" : dir;
-    std::vector<std::string> files = travel::listFiles(scans.string(), ".bin");
-    if (files.empty()) throw std::runtime_error(scans.string() + ": no .bin scans");
+    const travel::ScanList scans = travel::listScans(o.input, o.format);
+    const std::vector<std::string>& files = scans.files;
+    const fs::path dir(scans.sequence_dir.empty() ? o.input : scans.sequence_dir);
     std::string calib = o.calib;
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
     if (pose_file && !pose_file->trajectory.timed()) {
@@ -154,7 +153,7 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
                 continue;
             }
         }
-        travel::readScan(files[k], cloud);  // errors name the file
+        travel::readScan(files[k], cloud, o.format);  // errors name the file
         points->clear();
         points->reserve(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)

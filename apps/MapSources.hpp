@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
+#include "travel/io/ScanIO.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
@@ -22,7 +23,8 @@ struct Options {
     std::string extent;
     double resolution = 0;
     long max_frames = 0;
-    bool quiet = false;
+    travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
+    bool quiet = false, verbose = false;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 
@@ -41,7 +43,7 @@ struct PoseFileSource {
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
                const std::optional<PoseFileSource>& pose_file);
 
-/// Maps the KITTI sequence directory o.input (velodyne/*.bin or the .bin files directly).
+/// Maps the scans of o.input, a KITTI sequence folder or a folder of scans (travel::listScans).
 void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
               std::optional<PoseFileSource> pose_file);
 

@@ -15,6 +15,6 @@ target_link_libraries(travel_nav_sim_lib
 target_compile_options(travel_nav_sim_lib PRIVATE ${TRAVEL_APP_WARNINGS})
 
 add_executable(travel-nav-sim ${CMAKE_CURRENT_LIST_DIR}/travel_nav_sim.cpp)
-target_link_libraries(travel-nav-sim PRIVATE travel_nav_sim_lib mrpt::tclap)
+target_link_libraries(travel-nav-sim PRIVATE travel_nav_sim_lib travel::io mrpt::tclap)
 target_compile_options(travel-nav-sim PRIVATE ${TRAVEL_APP_WARNINGS})
 install(TARGETS travel-nav-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -2,10 +2,10 @@
 //
 // travel-eval: the paper-style evaluation of TRAVEL and its baselines on SemanticKITTI.
 //
-//   travel-eval report --scans DIR --labels DIR --out DIR [--methods a,b,...]
+//   travel-eval report -i DIR --labels DIR -o DIR [--methods a,b,...]
 //       every method over every labelled frame: report.md (ground tables for protocols A and B,
 //       an object table) and frames.csv (one row per method and frame).
-//   travel-eval sweep --scans DIR --labels DIR --out DIR --sweep KEY=v1,v2,... [--method NAME]
+//   travel-eval sweep -i DIR --labels DIR -o DIR --sweep KEY=v1,v2,... [--method NAME]
 //       one method, one parameter: sweep_KEY.csv and three PNG plots (ground F1, objects, time).
 //
 // Metrics and timings are those of travel-kitti (same libtravel APIs), aggregated differently.
@@ -262,33 +262,38 @@ void writeSweep(const fs::path& dir, const std::string& method, const travel::ev
 // ---------------------------------------------------------------------------------------------
 
 int run(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "Evaluation of TRAVEL and its baselines on SemanticKITTI (labelled frames only).\n"
+    travel::apps::CommandLine line(
+        "travel-eval",
+        "Evaluation of TRAVEL and its baselines on SemanticKITTI (labelled frames only). -i: a "
+        "KITTI sequence folder (labels/ beside velodyne/), or a folder of scans with --labels; "
+        "repeat -i (and --labels, paired by order) for several sequences. -o: the output "
+        "folder.\n"
         "  report: runs every --methods method (default: all) over the frames and writes "
-        "<out>/report.md (ground P, R, F1 and accuracy mu/sigma and median ms per method, one "
+        "<output>/report.md (ground P, R, F1 and accuracy mu/sigma and median ms per method, one "
         "table per protocol A and B; objects USE/OSE mu/sigma, coverage, purity, split, merged "
         "and median ms for the methods that cluster), printed to stdout as well, and "
-        "<out>/frames.csv (one row per method and frame, every per-frame value).\n"
+        "<output>/frames.csv (one row per method and frame, every per-frame value).\n"
         "  sweep: runs one --method (default travel) once per value of one parameter "
-        "(--sweep KEY=v1,v2,..., any key of travel-kitti --print-params) and writes "
-        "<out>/sweep_KEY.csv "
-        "(per value: B P/R/F1, A F1, coverage, purity, USE, OSE, median ground / objects ms) and "
-        "the plots sweep_KEY_ground.png (F1, protocols A and B), sweep_KEY_objects.png (coverage, "
-        "purity; USE, OSE) and sweep_KEY_time.png. Paper studies: tgf_resolution=2,4,6,8,10, "
-        "vertical_ring_span=1,2,3,4,5, vertical_column_extension=1,3,5,10,20.\n"
-        "Several sequences: repeat --scans and --labels (paired by order).",
-        ' ', "0.1");
+        "(--sweep KEY=v1,v2,..., any key of travel-kitti --print-config) and writes "
+        "<output>/sweep_KEY.csv (per value: B P/R/F1, A F1, coverage, purity, USE, OSE, median "
+        "ground / objects ms) and the plots sweep_KEY_ground.png (F1, protocols A and B), "
+        "sweep_KEY_objects.png (coverage, purity; USE, OSE) and sweep_KEY_time.png. Paper "
+        "studies: tgf_resolution=2,4,6,8,10, vertical_ring_span=1,2,3,4,5, "
+        "vertical_column_extension=1,3,5,10,20.",
+        {"travel-eval report -i data/sequences/00 -o eval",
+         "travel-eval report -i seq/00 -i seq/01 --methods travel,gpf+slr -o eval",
+         "travel-eval sweep -i data/sequences/00 --sweep tgf_resolution=2,4,6,8,10 -o sweep"});
+    TCLAP::CmdLine& cmd = line.cmd;
     std::vector<std::string> commands{"report", "sweep"};
     TCLAP::ValuesConstraint<std::string> command_values(commands);
     TCLAP::UnlabeledValueArg<std::string> command("command", "report or sweep", true, "",
                                                   &command_values, cmd);
-    TCLAP::MultiArg<std::string> scans("", "scans", "Directory of KITTI .bin scans (repeatable)",
-                                       false, "DIR", cmd);
+    const travel::apps::CommonFlags flags(line, true, "hdl64");
     TCLAP::MultiArg<std::string> labels(
-        "", "labels", "SemanticKITTI .label directory for the --scans of the same position", false,
-        "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Output directory (created); required", false, "",
-                                     "DIR", cmd);
+        "", "labels",
+        "SemanticKITTI .label folder for the -i of the same position (default: each sequence's "
+        "labels/)",
+        false, "DIR", cmd);
     TCLAP::ValueArg<std::string> methods("", "methods",
                                          "report: comma-separated methods (default: all of them)",
                                          false, "", "A,B,...", cmd);
@@ -297,27 +302,26 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> sweep("", "sweep",
                                        "sweep: KEY=v1,v2,... e.g. tgf_resolution=2,4,6,8,10", false,
                                        "", "KEY=VALUES", cmd);
-    const travel::apps::ConfigFlags flags(cmd, "hdl64");
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Use at most the first N labelled frames",
                                     false, -1, "N", cmd);
-    if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
-    const travel::Config configuration = flags.load();
-    if (flags.print(configuration)) return 0;
+    if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
+    const travel::Config configuration = flags.config.load();
+    if (flags.config.print(configuration)) return 0;
 
     const bool is_sweep = command.getValue() == "sweep";
     // Configuration errors first, before any file is read.
-    if (!out.isSet()) throw TCLAP::CmdLineParseException("--out DIR is required", "--out");
+    const std::string out = flags.outputPath();
+    const bool quiet = flags.quiet();
     if (max_frames.isSet() && max_frames.getValue() < 1)
-        throw TCLAP::CmdLineParseException("--max-frames must be at least 1", "--max-frames");
+        throw travel::apps::usageError("--max-frames must be at least 1");
     if (is_sweep && methods.isSet())
-        throw TCLAP::CmdLineParseException("sweep runs one --method, not --methods", "--methods");
+        throw travel::apps::usageError("sweep runs one --method, not --methods");
     if (!is_sweep && (sweep.isSet() || method.isSet()))
-        throw TCLAP::CmdLineParseException("report takes --methods; --sweep/--method are for sweep",
-                                           sweep.isSet() ? "--sweep" : "--method");
+        throw travel::apps::usageError("report takes --methods; --sweep/--method are for sweep");
     if (is_sweep && !sweep.isSet())
-        throw TCLAP::CmdLineParseException("sweep needs --sweep KEY=v1,v2,...", "--sweep");
+        throw travel::apps::usageError("sweep needs --sweep KEY=v1,v2,...");
     const travel::Params& params = configuration.travel;
-    const std::string setup = flags.describe();
+    const std::string setup = flags.config.describe();
 
     std::vector<std::string> names = methods.isSet()
                                          ? travel::eval::splitList(methods.getValue(), ',')
@@ -328,18 +332,10 @@ int run(int argc, char** argv) {
     const travel::eval::SweepSpec spec =
         is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
-    if (scans.getValue().empty() || labels.getValue().empty())
-        throw TCLAP::CmdLineParseException("--scans DIR and --labels DIR are required", "--scans");
-    if (scans.getValue().size() != labels.getValue().size())
-        throw TCLAP::CmdLineParseException(
-            "give one --labels DIR per --scans DIR (paired by order): " +
-                std::to_string(scans.getValue().size()) + " --scans, " +
-                std::to_string(labels.getValue().size()) + " --labels",
-            "--labels");
-    const std::vector<FrameRef> frames =
-        travel::eval::labelledFrames(scans.getValue(), labels.getValue(), max_frames.getValue());
-    createDir(out.getValue());
-    const fs::path dir(out.getValue());
+    const std::vector<FrameRef> frames = travel::eval::labelledFrames(
+        flags.inputs(), labels.getValue(), max_frames.getValue(), flags.scanFormat());
+    createDir(out);
+    const fs::path dir(out);
 
     if (!is_sweep) {
         std::vector<MethodRun> runs;
@@ -348,8 +344,9 @@ int run(int argc, char** argv) {
         openOut(dir / "report.md") << md;
         std::ofstream frames_csv = openOut(dir / "frames.csv");
         travel::eval::writeFramesCsv(frames_csv, runs);
-        std::cout << md << "\nWritten: " << (dir / "report.md").string() << ", "
-                  << (dir / "frames.csv").string() << "\n";
+        if (!quiet)
+            std::cout << md << "\nWritten: " << (dir / "report.md").string() << ", "
+                      << (dir / "frames.csv").string() << "\n";
         return 0;
     }
 
@@ -361,6 +358,7 @@ int run(int argc, char** argv) {
         const MethodRun run = runMethod(names[0], p, frames, spec.key + "=" + value);
         sums.push_back(run.summary);
         const EvaluationSummary& s = sums.back();
+        if (quiet) continue;
         std::printf("%s=%-8s B F1 %6.2f  A F1 %6.2f", spec.key.c_str(), value.c_str(), s.f1[1].mean,
                     s.f1[0].mean);
         if (s.clusters)
@@ -370,8 +368,9 @@ int run(int argc, char** argv) {
     }
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
-    std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png\n", stem.c_str(),
-                stem.c_str(), stem.c_str(), stem.c_str());
+    if (!quiet)
+        std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png\n", stem.c_str(),
+                    stem.c_str(), stem.c_str(), stem.c_str());
     return 0;
 }
 

@@ -1,9 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// travel-kitti: run TRAVEL over a directory of KITTI .bin scans, write one .label per scan
-// (class in the lower 16 bits, cluster id in the upper 16 bits), and, given SemanticKITTI labels,
-// print ground precision / recall / F1 / accuracy per frame and their mean and std under both
-// evaluation protocols, plus the median and max milliseconds of every stage.
+// travel-kitti: run TRAVEL over scans (one file, a folder, a KITTI sequence), write one .label per
+// scan (class in the lower 16 bits, cluster id in the upper 16 bits), and, given SemanticKITTI
+// labels, print ground precision / recall / F1 / accuracy per frame and their mean and std under
+// both evaluation protocols, plus the median and max milliseconds of every stage.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <unistd.h>
@@ -35,23 +35,27 @@ struct StageSeries {
 };
 
 int run(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "Traversable ground segmentation of KITTI-format scans (TRAVEL, Oh et al. RA-L 2022).\n"
-        "Writes <out>/<stem>.label for every <scans>/<stem>.bin: one little-endian uint32 per "
-        "input point, in input order; lower 16 bits = class (0 invalid, 1 ground, 2 non-ground, "
-        "3 outlier), upper 16 bits = cluster id (0 = none). With --labels, prints ground "
-        "P/R/F1/accuracy under protocol A (Patchwork benchmark: vegetation below -0.75 h counts "
-        "as ground, unlabeled points predicted ground count as TP) and protocol B (Patchwork++: "
-        "classes 0, 1, 70 not scored).",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> scans("", "scans",
-                                       "Directory of KITTI .bin scans (float32 x y z i); required",
-                                       false, "", "DIR", cmd);
-    TCLAP::ValueArg<std::string> out(
-        "", "out", "Output directory for .label files (created); required", false, "", "DIR", cmd);
+    travel::apps::CommandLine line(
+        "travel-kitti",
+        "Traversable ground segmentation of scans (TRAVEL, Oh et al. RA-L 2022).\n"
+        "-i: a scan (.bin KITTI or nuScenes, .pcd, .ply), a folder of scans or a KITTI sequence "
+        "folder (its velodyne/ scans; its labels/ enable the metrics). Writes "
+        "<output>/<stem>.label "
+        "for every scan <stem>: one little-endian uint32 per input point, in input order; lower "
+        "16 bits = class (0 invalid, 1 ground, 2 non-ground, 3 outlier), upper 16 bits = cluster "
+        "id (0 = none). With labels (found or --labels), prints ground P/R/F1/accuracy under "
+        "protocol A (Patchwork benchmark: vegetation below -0.75 h counts as ground, unlabeled "
+        "points predicted ground count as TP) and protocol B (Patchwork++: classes 0, 1, 70 not "
+        "scored).",
+        {"travel-kitti -i data/sequences/00 -o out/00",
+         "travel-kitti -i scan.pcd -o out -p vlp16 --set sensor_height=1.2",
+         "travel-kitti -i hdl32_000000.bin -f nuscenes -o out -p hdl32 -q"});
+    TCLAP::CmdLine& cmd = line.cmd;
+    const travel::apps::CommonFlags flags(line, false, "hdl64");
     TCLAP::ValueArg<std::string> labels(
-        "", "labels", "SemanticKITTI labels directory: enables the metrics", false, "", "DIR", cmd);
-    const travel::apps::ConfigFlags flags(cmd, "hdl64");
+        "", "labels",
+        "SemanticKITTI labels folder: enables the metrics (default: the sequence's labels/)", false,
+        "", "DIR", cmd);
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame metrics and timings to this CSV",
                                      false, "", "FILE", cmd);
     TCLAP::ValueArg<int> max_frames("", "max-frames", "Process at most this many scans", false, -1,
@@ -62,33 +66,26 @@ int run(int argc, char** argv) {
         "gpf+slr, tgs+slr, tgs+euclidean, gpf+euclidean (baselines written from their papers; "
         "see README)",
         false, "travel", "NAME", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "Only print the summary", cmd);
-    TCLAP::SwitchArg dump("", "print-params", "Print the effective parameters as YAML and exit",
-                          cmd);
-    if (const auto exit_code = travel::apps::parseCommandLine(cmd, argc, argv)) return *exit_code;
+    if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
 
-    const travel::Config configuration = flags.load();
-    if (flags.print(configuration)) return 0;
+    const travel::Config configuration = flags.config.load();
+    if (flags.config.print(configuration)) return 0;
     const travel::Params& params = configuration.travel;
-    if (dump.getValue()) {
-        std::cout << travel::paramsToYaml(params);
-        return 0;
-    }
-    if (!scans.isSet() || !out.isSet())
-        throw TCLAP::CmdLineParseException("--scans DIR and --out DIR are required", "--scans");
+    const bool quiet = flags.quiet();
+    const std::string out = flags.outputPath();
+    const travel::ScanFormat format = flags.scanFormat();
     // Configuration errors first, before any file is touched.
     const std::unique_ptr<travel::eval::Segmenter> segmenter =
         travel::eval::makeSegmenter(method.getValue(), params);
-    std::vector<std::string> files = travel::listFiles(scans.getValue(), ".bin");
-    if (files.empty()) throw travel::InputError("no .bin files in " + scans.getValue());
+    const travel::ScanList scans = travel::listScans(flags.inputPath(), format);
+    std::vector<std::string> files = scans.files;
+    const std::string labels_dir = labels.isSet() ? labels.getValue() : scans.labels_dir;
     if (max_frames.getValue() >= 0 &&
         files.size() > static_cast<std::size_t>(max_frames.getValue()))
         files.resize(max_frames.getValue());
     std::error_code ec;
-    fs::create_directories(out.getValue(), ec);
-    if (ec)
-        throw travel::InputError("cannot create output directory " + out.getValue() + ": " +
-                                 ec.message());
+    fs::create_directories(out, ec);
+    if (ec) throw travel::InputError("cannot create output directory " + out + ": " + ec.message());
 
     std::ofstream csv_out;
     if (csv.isSet()) {
@@ -114,7 +111,7 @@ int run(int argc, char** argv) {
     constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
     constexpr int kObjectsStage = 11;  // "objects_total"
     std::size_t unlabelled_frames = 0;
-    const bool verbose = !quiet.getValue();
+    const bool verbose = !quiet;
     const bool tty = isatty(fileno(stderr));
     if (verbose)
         std::printf("%-8s %7s %6s %5s %6s | %-23s | %-23s | %s\n", "frame", "points", "ground",
@@ -124,14 +121,15 @@ int run(int argc, char** argv) {
     for (std::size_t f = 0; f < files.size(); ++f) {
         const std::string stem = fs::path(files[f]).stem().string();
         std::string label_path;
-        if (labels.isSet()) {
-            label_path = (fs::path(labels.getValue()) / (stem + ".label")).string();
+        if (!labels_dir.empty()) {
+            label_path = (fs::path(labels_dir) / (stem + ".label")).string();
             if (!fs::exists(label_path)) {
                 label_path.clear();
                 ++unlabelled_frames;
             }
         }
-        travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame);
+        travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame,
+                                    format);
         totals.add(frame);
         if (const travel::MountNote& note = frame.segmentation.mount; note && verbose)
             std::cerr << "travel-kitti: " << (note.isWarning() ? "warning: " : "") << note.message
@@ -142,7 +140,7 @@ int run(int argc, char** argv) {
         encoded.resize(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)
             encoded[i] = travel::encodeLabel(result.labels[i], result.cluster_id[i]);
-        travel::writeLabelFile((fs::path(out.getValue()) / (stem + ".label")).string(), encoded);
+        travel::writeLabelFile((fs::path(out) / (stem + ".label")).string(), encoded);
 
         travel::StageTimings t = result.stages;  // per stage for TRAVEL's ground stage
         t.ground_total = result.ground_ms;
@@ -175,7 +173,7 @@ int run(int argc, char** argv) {
             if (scored)
                 std::printf(" | %6.2f %6.2f  %5.3f %5.3f", objects.entropy.ose_sum,
                             objects.entropy.use_sum, objects.mean_coverage, objects.mean_purity);
-            std::printf(labels.isSet() && !scored ? " | (no .label file)\n" : "\n");
+            std::printf(!labels_dir.empty() && !scored ? " | (no .label file)\n" : "\n");
         } else if (tty) {
             std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
         }
@@ -205,11 +203,12 @@ int run(int argc, char** argv) {
         }
     }
     if (!verbose && tty) std::fprintf(stderr, "\n");
+    if (quiet) return 0;  // -q: nothing on stdout
 
     std::printf("\n%zu scans processed (method %s, preset %s), labels written to %s\n",
-                files.size(), method.getValue().c_str(), flags.preset.getValue().c_str(),
-                out.getValue().c_str());
-    if (labels.isSet()) {
+                files.size(), method.getValue().c_str(), flags.config.preset.getValue().c_str(),
+                out.c_str());
+    if (!labels_dir.empty()) {
         if (unlabelled_frames)
             std::printf("%zu scans had no .label file and are not in the metrics\n",
                         unlabelled_frames);

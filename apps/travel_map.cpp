@@ -66,32 +66,32 @@ travel_mrpt::TraversabilityMapOptions mapOptions(const travel::Config& configura
 }
 
 int run(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
+    travel::apps::CommandLine line(
+        "travel-map",
         "Builds a traversability map (travel_mrpt::CTraversabilityMap) from 3-D LiDAR: every "
         "frame is segmented by TRAVEL and fused, at its robot pose, into a 2-D traversability "
         "grid (traversable / obstacle / unknown per cell, log-odds, ground height and spread, "
         "slope, step height) and an OctoMap of obstacle voxels with free space carved along the "
         "rays.\n"
-        "Inputs: (a) an MRPT rawlog: robot poses from SensoryFrame actions "
+        "-i: (a) an MRPT rawlog: robot poses from SensoryFrame actions "
         "(CActionRobotMovement2D, integrated) or CObservationOdometry records, or from --poses "
         "(TUM: by observation timestamp; KITTI: by LiDAR frame index); IMU records level the "
-        "frames; (b) a KITTI sequence directory (velodyne/*.bin, or the .bin files directly): "
-        "poses from --poses or DIR/poses.txt (cam0 poses, turned into LiDAR poses with the Tr "
-        "of --calib or DIR/calib.txt). Without any pose source every frame is mapped at the "
-        "identity pose, with a warning.\n"
-        "Outputs in OUT_DIR (NAME = input file name without extension): NAME.bt (OctoMap, for "
-        "octovis), NAME_grid.gridmap.gz (COccupancyGridMap2D: traversable free, obstacle "
-        "occupied, unknown 0.5), NAME_height.gridmap.gz (CHeightGridMap2D), "
+        "frames; (b) a KITTI sequence folder (velodyne/ scans) or a folder of scans (.bin, .pcd, "
+        ".ply; -f): poses from --poses or DIR/poses.txt (cam0 poses, turned into LiDAR poses "
+        "with the Tr of --calib or DIR/calib.txt). Without any pose source every frame is mapped "
+        "at the identity pose, with a warning.\n"
+        "-o: the output folder, with (NAME = input file name without extension): NAME.bt "
+        "(OctoMap, for octovis), NAME_grid.gridmap.gz (COccupancyGridMap2D: traversable free, "
+        "obstacle occupied, unknown 0.5), NAME_height.gridmap.gz (CHeightGridMap2D), "
         "NAME_traversability.png (green traversable, red obstacle, light grey observed but "
         "undecided, dark grey unseen; north up), NAME_occupancy.png, NAME_height.png (jet), "
         "NAME.3Dscene (SceneViewer3D), NAME.travelmap (the serialized map). Exit status 0 on "
         "success, 1 on any error.",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> input("i", "input", "Rawlog file or KITTI sequence directory",
-                                       true, "", "IN", cmd);
-    TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created)", true, "",
-                                        "OUT_DIR", cmd);
-    const travel::apps::ConfigFlags flags(cmd, "");
+        {"travel-map -i data/sequences/00 -o map00",
+         "travel-map -i drive.rawlog -o map -p vlp16 --resolution 0.25",
+         "travel-map -i drive.rawlog --poses gt.tum -o map --probe 2.5,0 -q"});
+    TCLAP::CmdLine& cmd = line.cmd;
+    const travel::apps::CommonFlags flags(line, false, "");
     TCLAP::ValueArg<std::string> extent(
         "", "extent", "Grid extent in metres, world frame (default -40,40,-40,40)", false, "",
         "MIN_X,MAX_X,MIN_Y,MAX_Y", cmd);
@@ -103,28 +103,22 @@ int run(int argc, char** argv) {
                                        "", "FILE", cmd);
     TCLAP::ValueArg<long> max_frames("", "max-frames", "Stop after this many frames (0 = all)",
                                      false, 0, "N", cmd);
-    TCLAP::ValueArg<long> max_memory(
-        "", "max-memory",
-        "Address-space ceiling in MiB (0 = none); a corrupt rawlog record that announces more "
-        "is reported instead of exhausting memory",
-        false, long(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
+    const travel::apps::MemoryLimitFlag max_memory(cmd);
     TCLAP::MultiArg<std::string> probe(
         "", "probe",
         "Print the state of the grid cell at world X,Y after mapping (repeatable; a line "
         "'probe X,Y: traversable|obstacle|unknown|outside', also with -q)",
         false, "X,Y", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary", cmd);
-    if (auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
+    if (auto code = line.parse(argc, argv)) return *code;
 
     Options o;
-    o.input = input.getValue();
-    o.output_dir = output.getValue();
     o.extent = extent.getValue();
     o.resolution = resolution.getValue();
     o.poses = poses.getValue();
     o.calib = calib.getValue();
     o.max_frames = max_frames.getValue();
-    o.quiet = quiet.getValue();
+    o.quiet = flags.quiet();
+    o.verbose = flags.verbose();
     std::vector<std::pair<double, double>> probes;
     for (const std::string& text : probe.getValue()) {
         double x = 0, y = 0;
@@ -133,31 +127,39 @@ int run(int argc, char** argv) {
             throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
         probes.emplace_back(x, y);
     }
-    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
-        throw std::runtime_error("--max-memory must be 0 (no limit) or at least 256 MiB");
     if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
-    const std::string note = travel::apps::applyMemoryLimit(std::size_t(max_memory.getValue()));
+    const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && !o.quiet) std::cerr << "travel-map: " << note << "\n";
 
     // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
     travel::Config defaults;
     defaults.map.min_x = defaults.map.min_y = -40;
     defaults.map.max_x = defaults.map.max_y = 40;
-    travel::Config configuration = flags.load(defaults);
+    travel::Config configuration = flags.config.load(defaults);
     try {
         applyGridFlags(o, configuration.map);
         configuration.validate();
     } catch (const travel::ConfigError& e) {
         throw std::runtime_error(std::string("--extent/--resolution: ") + e.what());
     }
-    if (flags.print(configuration)) return 0;
+    if (flags.config.print(configuration)) return 0;
+    o.input = flags.inputPath();
+    o.output_dir = flags.outputPath();
+    o.format = flags.scanFormat();
 
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    const bool kitti = fs::is_directory(o.input);
+    map.filter().setMinLoggingLevel(o.quiet     ? mrpt::system::LVL_ERROR  // -q: errors only
+                                    : o.verbose ? mrpt::system::LVL_DEBUG
+                                                : mrpt::system::LVL_INFO);
+    // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
+    const std::string extension = fs::path(o.input).extension().string();
+    const bool kitti = fs::is_directory(o.input) || extension == ".bin" || extension == ".pcd" ||
+                       extension == ".ply";
     std::string pose_path = o.poses;
-    if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))
+    if (pose_path.empty() && fs::is_directory(o.input) &&
+        fs::exists(fs::path(o.input) / "poses.txt"))
         pose_path = (fs::path(o.input) / "poses.txt").string();
     std::optional<PoseFileSource> pose_file;
     if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
@@ -187,8 +189,8 @@ int run(int argc, char** argv) {
             o.input + ": no LiDAR frame could be mapped" +
             (map.lastRejection().empty() ? "" : " (last: " + map.lastRejection() + ")"));
 
-    const std::string name =
-        kitti ? fs::path(o.input).filename().string() : fs::path(o.input).stem().string();
+    const std::string name = fs::is_directory(o.input) ? fs::path(o.input).filename().string()
+                                                       : fs::path(o.input).stem().string();
     const std::string prefix = (fs::path(o.output_dir) / name).string();
     const auto export_start = Clock::now();
     std::vector<std::string> written = travel_mrpt::exportAll(map, prefix);

@@ -44,65 +44,70 @@ std::string findShared(const std::string& name, const std::string& subdir) {
 }
 
 int run(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "travel-nav-sim: reactive navigation on TRAVEL obstacles, in closed-loop simulation", ' ',
-        "1.0");
-    TCLAP::ValueArg<std::string> world_arg("w", "world", "World file, or a name in share/worlds",
-                                           false, "ramp_kerb.world", "FILE", cmd);
+    travel::apps::CommandLine line(
+        "travel-nav-sim",
+        "travel-nav-sim: reactive navigation on TRAVEL obstacles, in closed-loop simulation. -i: "
+        "the world (a .world file, or a name in share/worlds; default ramp_kerb.world); -o: the "
+        "output folder (default: the current one) for <world>_<source>.reactivenavlog (the "
+        "navigator's log, navlog-viewer opens it), .csv (the trajectory) and .png (the world "
+        "from above with the path); --source all also writes <world>_sources.png. -p/-c/--set "
+        "configure TRAVEL (travel:) and its obstacle rule (nav:) on top of the simulation's "
+        "robot and LiDAR; --nav-config is MRPT's reactive navigator .ini.",
+        {"travel-nav-sim", "travel-nav-sim -i ramp_kerb.world --source all -o nav",
+         "travel-nav-sim -i my.world --set nav.max_step_height=0.1 --nav-config my_nav.ini -q"});
+    TCLAP::CmdLine& cmd = line.cmd;
+    const travel::apps::CommonFlags flags(line, false, "");
     TCLAP::ValueArg<std::string> source_arg("s", "source",
                                             "Obstacle source: travel, raw, threshold or all", false,
                                             "travel", "NAME", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "Reactive navigator .ini, or a name in share/configs/nav", false,
+    TCLAP::ValueArg<std::string> nav_config_arg(
+        "", "nav-config", "Reactive navigator .ini, or a name in share/configs/nav", false,
         "reactive3d_travel.ini", "FILE", cmd);
-    TCLAP::ValueArg<std::string> out_arg("o", "out", "Output directory", false, ".", "DIR", cmd);
     TCLAP::ValueArg<double> timeout_arg("t", "timeout", "Simulated seconds before giving up", false,
                                         60.0, "S", cmd);
     TCLAP::ValueArg<double> threshold_arg(
         "", "threshold", "Height-threshold source: min height [m]", false, 0.25, "M", cmd);
-    TCLAP::MultiArg<std::string> set_arg("", "set",
-                                         "Override KEY=VALUE or SECTION.KEY=VALUE (sections "
-                                         "travel and nav; see --print-config)",
-                                         false, "KEY=VALUE", cmd);
     TCLAP::ValueArg<unsigned> seed_arg(
         "", "seed",
         "Move the world's kerbs and boxes by a seeded random shift (up to +/-0.3 m; 0: as in "
         "the file)",
         false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
-    TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output", cmd);
-    const travel::apps::PrintConfigFlag print_config(cmd);
-    if (const auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
-    // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then each --set.
+    if (const auto code = line.parse(argc, argv)) return *code;
+    // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then --preset,
+    // --config, each --set.
     const SimOptions defaults;
-    travel::Config configuration;
-    configuration.travel = defaults.travel;
-    configuration.nav = defaults.nav;
-    travel::apps::applyConfigSources("", set_arg.getValue(), configuration);
-    if (print_config.print(configuration)) return 0;
+    travel::Config default_config;
+    default_config.travel = defaults.travel;
+    default_config.nav = defaults.nav;
+    const travel::Config configuration = flags.config.load(default_config);
+    if (flags.config.print(configuration)) return 0;
+    flags.requireAutoFormat("world files");
+    const bool quiet = flags.quiet();
 
-    const World world = shiftedObstacles(loadWorld(findShared(world_arg.getValue(), "worlds")),
-                                         seed_arg.getValue());
-    const std::string config = findShared(config_arg.getValue(), "configs/nav");
+    const World world = shiftedObstacles(
+        loadWorld(findShared(flags.inputPath("ramp_kerb.world"), "worlds")), seed_arg.getValue());
+    const std::string config = findShared(nav_config_arg.getValue(), "configs/nav");
     std::vector<SourceKind> sources;
     if (source_arg.getValue() == "all")
         sources = {SourceKind::Travel, SourceKind::Raw, SourceKind::Threshold};
     else
         sources = {parseSourceKind(source_arg.getValue())};
-    const fs::path out_dir = out_arg.getValue();
+    const fs::path out_dir = flags.outputPath(".");
     fs::create_directories(out_dir);
 
     SimOptions options;
     options.nav_config_file = config;
     options.timeout = timeout_arg.getValue();
     options.threshold_min_z = threshold_arg.getValue();
-    options.verbose = verbose_arg.getValue();
+    options.verbose = flags.verbose();
     options.travel = configuration.travel;
     options.nav = configuration.nav;
     const auto footprint = footprintFromConfig(config);
 
-    std::cout << "travel-nav-sim: world " << world.name << " (" << world.source << "), navigator "
-              << config << "\n";
+    if (!quiet)
+        std::cout << "travel-nav-sim: world " << world.name << " (" << world.source
+                  << "), navigator " << config << "\n";
     std::vector<mrpt::img::CImage> panels;
     std::vector<std::string> titles;
     for (const SourceKind kind : sources) {
@@ -116,6 +121,9 @@ int run(int argc, char** argv) {
         mrpt::img::CImage img;
         renderTopView(world, footprint, &r, view, img);
         travel_mrpt::savePicture(img, stem + ".png");
+        panels.push_back(std::move(img));
+        titles.push_back(toString(kind));
+        if (quiet) continue;
         std::printf(
             "  %-9s %-17s time %5.1f s  path %5.2f m  min clearance %.2f m (%s)  climbed %.2f m"
             "  %.1f ms/step%s%s\n",
@@ -124,8 +132,6 @@ int run(int argc, char** argv) {
             r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
         std::cout << "    outputs: " << stem << ".{csv,png"
                   << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}\n";
-        panels.push_back(std::move(img));
-        titles.push_back(toString(kind));
     }
     if (panels.size() > 1) {
         mrpt::img::CImage all = panels[0], tmp;
@@ -135,7 +141,7 @@ int run(int argc, char** argv) {
         }
         const std::string path = (out_dir / (world.name + "_sources.png")).string();
         travel_mrpt::savePicture(all, path);
-        std::cout << "  side by side: " << path << "\n";
+        if (!quiet) std::cout << "  side by side: " << path << "\n";
     }
     return 0;
 }

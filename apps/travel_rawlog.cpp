@@ -73,10 +73,15 @@ using travel::apps::RawlogSegmenter;
 // Command line.
 
 Options parseCommandLine(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
+    travel::apps::CommandLine line(
+        "travel-rawlog",
         "TRAVEL traversable-ground segmentation and object clustering of the 3-D LiDAR "
         "observations of an MRPT rawlog (CObservationVelodyneScan, CObservationRotatingScan, "
         "CObservationPointCloud, CObservation3DRangeScan).\n"
+        "-i: the input rawlog (.rawlog, gzip or plain) or Velodyne capture (.pcap, or a file "
+        "starting with the libpcap magic number; read through MRPT's CVelodyneScanner, one "
+        "CObservationVelodyneScan labelled VELODYNE per full rotation). -o: OUT.rawlog, "
+        "gzip-compressed, written to OUT.rawlog.part and renamed when complete.\n"
         "Outputs:\n"
         " (1) OUT.rawlog: every input record, unchanged, in the input's format; after each "
         "processed observation (in SensoryFrame rawlogs: inside its SensoryFrame) a "
@@ -90,7 +95,8 @@ Options parseCommandLine(int argc, char** argv) {
         "three.\n"
         " (2) --csv: one line per frame: index, timestamp, label, point counts per class, "
         "clusters, whether the frame was levelled / deskewed, and milliseconds per stage.\n"
-        " (3) --png: PREFIX_<frame>.png, a bird's-eye view centred on the sensor (up = forward; "
+        " (3) --png: PREFIX_<frame>.png (--mpp, --size), a bird's-eye view centred on the sensor "
+        "(up = forward; "
         "ground green, outliers blue, each cluster its own colour, unclustered non-ground grey, "
         "traversable tri-grid nodes shaded), and PREFIX_<frame>.ply, the valid points in the "
         "same colours (ASCII PLY: x y z red green blue, sensor-centred, levelled frame) for "
@@ -108,18 +114,11 @@ Options parseCommandLine(int argc, char** argv) {
         "and the filter keys), then each --set. The mount_{roll,pitch,yaw}_deg parameters are "
         "taken from each observation's sensorPose (unless --ignore-sensor-pose). Exit status: 0 "
         "on success, 1 on any error.",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> input(
-        "i", "input",
-        "Input rawlog (.rawlog, gzip or plain) or Velodyne capture (.pcap, or a file starting "
-        "with the libpcap magic number; read through MRPT's CVelodyneScanner, one "
-        "CObservationVelodyneScan labelled VELODYNE per full rotation)",
-        true, "", "IN.rawlog|IN.pcap", cmd);
-    TCLAP::ValueArg<std::string> output("o", "output",
-                                        "Output rawlog (gzip-compressed); written to OUT.part "
-                                        "and renamed when complete",
-                                        true, "", "OUT.rawlog", cmd);
-    const travel::apps::ConfigFlags flags(cmd, "");
+        {"travel-rawlog -i drive.rawlog -o drive_travel.rawlog -p vlp16",
+         "travel-rawlog -i capture.pcap -p hdl32 -o capture.rawlog --csv frames.csv",
+         "travel-rawlog -i drive.rawlog -o out.rawlog --png views/frame --mpp 0.05 -q"});
+    TCLAP::CmdLine& cmd = line.cmd;
+    const travel::apps::CommonFlags flags(line, false, "");
     TCLAP::ValueArg<std::string> label(
         "", "sensor-label",
         "Only process LiDAR observations whose whole sensorLabel matches this ECMAScript regex "
@@ -141,12 +140,7 @@ Options parseCommandLine(int argc, char** argv) {
                                      "Write PREFIX_<frame>.png and PREFIX_<frame>.ply per frame "
                                      "(directories are created)",
                                      false, "", "PREFIX", cmd);
-    TCLAP::ValueArg<double> png_mpp("", "png-mpp",
-                                    "Bird's-eye scale: metres per pixel (default 0.075: +/-30 m "
-                                    "in 800 px)",
-                                    false, 0.075, "M", cmd);
-    TCLAP::ValueArg<int> png_size("", "png-size", "Bird's-eye image side in pixels", false, 800,
-                                  "PIXELS", cmd);
+    const travel::apps::PictureFlags picture(cmd);
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame counts and timings to this CSV",
                                      false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> reference(
@@ -159,41 +153,33 @@ Options parseCommandLine(int argc, char** argv) {
                                  "Keep the mount_* parameters of the configuration instead of "
                                  "each observation's sensorPose",
                                  cmd);
-    TCLAP::ValueArg<long> max_memory(
-        "", "max-memory",
-        "Address-space ceiling of this process in MiB (0 = none). A corrupt rawlog can announce "
-        "gigabyte-sized objects that MRPT's reader would allocate; above the ceiling the record "
-        "is reported as corrupt instead. Default " +
-            std::to_string(travel::apps::kDefaultMemoryLimitMiB),
-        false, static_cast<long>(travel::apps::kDefaultMemoryLimitMiB), "MIB", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "No progress line and no summary (errors only)", cmd);
+    const travel::apps::MemoryLimitFlag max_memory(cmd);
     Options o;
-    o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
+    o.exit_code = line.parse(argc, argv);
     if (o.exit_code) return o;
-    o.print_config = flags.print_config.arg.getValue();
+    o.print_config = flags.config.print_config.arg.getValue();
 
-    o.input = input.getValue();
-    o.output = output.getValue();
-    o.config = flags.config.getValue();
-    o.preset = flags.preset.getValue();
-    o.overrides = flags.set.getValue();
+    o.config = flags.config.config.getValue();
+    o.preset = flags.config.preset.getValue();
+    o.overrides = flags.config.set.getValue();
+    if (!o.print_config) {
+        o.input = flags.inputPath();
+        o.output = flags.outputPath();
+    }
+    flags.requireAutoFormat("rawlogs and Velodyne captures");
     o.sensor_label_regex = label.getValue();
     o.pcap_model = pcap_model.getValue().empty() ? o.preset : pcap_model.getValue();
     o.pcap_calibration = pcap_calibration.getValue();
     o.png_prefix = png.getValue();
-    o.png_metres_per_pixel = png_mpp.getValue();
-    o.png_size = png_size.getValue();
+    o.png_metres_per_pixel = picture.metresPerPixel();
+    o.png_size = picture.sidePixels();
     o.csv = csv.getValue();
-    o.quiet = quiet.getValue();
+    o.quiet = flags.quiet();
+    o.verbose = flags.verbose();
     o.ignore_sensor_pose = ignore_pose.getValue();
     o.label_reference = reference.getValue();
     o.plain_clouds = !no_plain.getValue();
-    if (max_memory.getValue() < 0 || (max_memory.getValue() > 0 && max_memory.getValue() < 256))
-        throw AppError("--max-memory must be 0 (no limit) or at least 256 MiB");
-    o.max_memory_mib = static_cast<std::size_t>(max_memory.getValue());
-    if (!(o.png_metres_per_pixel > 0) || !std::isfinite(o.png_metres_per_pixel))
-        throw AppError("--png-mpp must be > 0");
-    if (o.png_size < 64 || o.png_size > 8192) throw AppError("--png-size must be in [64, 8192]");
+    o.max_memory_mib = max_memory.mib();
     return o;
 }
 

@@ -1,6 +1,6 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// travel-view: bird's-eye picture of one KITTI scan segmented by one or two methods (side by
+// travel-view: bird's-eye picture of one scan segmented by one or two methods (side by
 // side), for looking at what a method does and comparing two of them on the same frame.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/img/CImage.h>
@@ -38,55 +38,63 @@ struct AppError : std::runtime_error {
 struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
     std::string scan, out;
+    travel::ScanFormat format = travel::ScanFormat::Auto;
     std::vector<std::string> methods;
     travel::Params params;  // --preset, --config, --set
     double mpp = 0.075;
     int size = 800;
     bool nodes = true;
+    bool quiet = false;
 };
 
 Options parseCommandLine(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "Bird's-eye PNG of one KITTI .bin scan segmented by one or two methods (two: side by "
-        "side). Ground green, each cluster its own colour, non-ground without cluster grey, "
-        "outliers blue; for the TGS-based methods (travel, travel-no-ttmf, tgs, tgs+...) the "
-        "traversable tri-grid nodes of the terrain model are outlined underneath. Points are "
-        "drawn in the aligned (levelled) frame, centred on the sensor, up = forward. Parameters: "
-        "HDL-64E/KITTI defaults, then --preset, then --config, then each --set.",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> scan("", "scan", "KITTI scan (.bin: float32 x y z intensity)",
-                                      true, "", "FILE.bin", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Output picture (.png; directories are created)",
-                                     true, "", "FILE.png", cmd);
+    travel::apps::CommandLine line(
+        "travel-view",
+        "Bird's-eye PNG of one scan segmented by one or two methods (two: side by side). -i: a "
+        "scan (.bin KITTI or nuScenes, .pcd, .ply), or a folder of scans or a KITTI sequence "
+        "folder with --frame choosing the scan; -o: the picture (.png). Ground green, each "
+        "cluster its own colour, non-ground without cluster grey, outliers blue; for the "
+        "TGS-based methods (travel, travel-no-ttmf, tgs, tgs+...) the traversable tri-grid nodes "
+        "of the terrain model are outlined underneath. Points are drawn in the aligned "
+        "(levelled) frame, centred on the sensor, up = forward. Parameters: HDL-64E/KITTI "
+        "defaults, then --preset, then --config, then each --set.",
+        {"travel-view -i data/sequences/00/velodyne/000000.bin -o view.png",
+         "travel-view -i data/sequences/00 --frame 5 -o view.png --methods travel,gpf+slr",
+         "travel-view -i scan.pcd -p vlp16 --mpp 0.05 -o view.png"});
+    TCLAP::CmdLine& cmd = line.cmd;
+    const travel::apps::CommonFlags flags(line, false, "");
     TCLAP::ValueArg<std::string> methods(
         "", "methods", "One or two methods, comma-separated (see travel-kitti --help for names)",
         false, "travel", "M1[,M2]", cmd);
-    const travel::apps::ConfigFlags flags(cmd, "");
-    TCLAP::ValueArg<double> mpp("", "mpp", "Metres per pixel (default 0.075: +/-30 m in 800 px)",
-                                false, 0.075, "M", cmd);
-    TCLAP::ValueArg<int> size("", "size", "Side of each panel in pixels", false, 800, "PX", cmd);
+    TCLAP::ValueArg<int> frame("", "frame", "The scan of a folder or sequence -i (0: the first)",
+                               false, 0, "N", cmd);
+    const travel::apps::PictureFlags picture(cmd);
     TCLAP::SwitchArg no_nodes("", "no-nodes", "Do not draw the terrain model's nodes", cmd);
     Options o;
-    o.exit_code = travel::apps::parseCommandLine(cmd, argc, argv);
+    o.exit_code = line.parse(argc, argv);
     if (o.exit_code) return o;
-    const travel::Config configuration = flags.load();
-    if (flags.print(configuration)) {
+    const travel::Config configuration = flags.config.load();
+    if (flags.config.print(configuration)) {
         o.exit_code = 0;
         return o;
     }
     o.params = configuration.travel;
 
-    o.scan = scan.getValue();
-    o.out = out.getValue();
+    o.format = flags.scanFormat();
+    const travel::ScanList scans = travel::listScans(flags.inputPath(), o.format);
+    if (frame.getValue() < 0 || std::size_t(frame.getValue()) >= scans.files.size())
+        throw AppError("--frame " + std::to_string(frame.getValue()) + ": " + flags.inputPath() +
+                       " has " + std::to_string(scans.files.size()) + " scans");
+    o.scan = scans.files[frame.getValue()];
+    o.out = flags.outputPath();
+    o.quiet = flags.quiet();
     for (const std::string& m : travel::eval::splitList(methods.getValue(), ','))
         if (!m.empty()) o.methods.push_back(m);
-    o.mpp = mpp.getValue();
-    o.size = size.getValue();
+    o.mpp = picture.metresPerPixel();
+    o.size = picture.sidePixels();
     o.nodes = !no_nodes.getValue();
     if (o.methods.empty() || o.methods.size() > 2)
         throw AppError("--methods: give one or two method names, comma-separated");
-    if (!(o.mpp > 0) || !std::isfinite(o.mpp)) throw AppError("--mpp must be > 0");
-    if (o.size < 64 || o.size > 8192) throw AppError("--size must be in [64, 8192]");
     return o;
 }
 
@@ -146,11 +154,9 @@ int run(int argc, char** argv) {
     for (const auto& method : o.methods) travel::eval::makeSegmenter(method, params);
 
     std::error_code ec;
-    if (!fs::exists(o.scan, ec)) throw AppError(o.scan + ": no such file");
-    if (fs::is_directory(o.scan, ec)) throw AppError(o.scan + ": is a directory, not a scan");
     travel::PointCloud cloud;
     try {
-        travel::readScan(o.scan, cloud);
+        travel::readScan(o.scan, cloud, o.format);
     } catch (const std::exception& e) {
         const std::string what = e.what();
         // Name the file even if the reader's message does not.
@@ -174,8 +180,9 @@ int run(int argc, char** argv) {
                                 name + " - " + o.methods[1], both);
         travel_mrpt::savePicture(both, o.out);
     }
-    std::printf("travel-view: %s (%zu points) -> %s\n", o.scan.c_str(), cloud.size(),
-                o.out.c_str());
+    if (!o.quiet)
+        std::printf("travel-view: %s (%zu points) -> %s\n", o.scan.c_str(), cloud.size(),
+                    o.out.c_str());
     return 0;
 }
 

@@ -206,3 +206,34 @@ TEST(KittiIO, ListFiles) {
     EXPECT_CONTAINS(inputErrorOf([&] { travel::listFiles(dir.file("notes"), "bin"); }),
                     "not a directory");
 }
+
+TEST(ScanList, FileFolderAndSequence) {
+    TempDir dir;
+    fs::create_directories(dir.path / "seq" / "velodyne");
+    fs::create_directories(dir.path / "seq" / "labels");
+    fs::create_directories(dir.path / "pcds");
+    for (const char* name : {"seq/velodyne/000001.bin", "seq/velodyne/000000.bin", "pcds/b.ply",
+                             "pcds/a.pcd", "pcds/notes.txt"})
+        dir.writeBytes(name, {});
+    // A sequence folder: its velodyne/ scans, in order, and its labels/.
+    const travel::ScanList seq = travel::listScans(dir.file("seq"));
+    ASSERT_EQ(seq.files.size(), 2u);
+    EXPECT_EQ(seq.files[0], dir.file("seq/velodyne/000000.bin"));
+    EXPECT_EQ(seq.labels_dir, dir.file("seq/labels"));
+    EXPECT_EQ(seq.sequence_dir, dir.file("seq"));
+    // Its velodyne/ folder or one scan of it: the same labels.
+    EXPECT_EQ(travel::listScans(dir.file("seq/velodyne")).labels_dir, dir.file("seq/labels"));
+    const travel::ScanList one = travel::listScans(dir.file("seq/velodyne/000001.bin"));
+    ASSERT_EQ(one.files.size(), 1u);
+    EXPECT_EQ(one.labels_dir, dir.file("seq/labels"));
+    // A folder of PCD and PLY scans: both with auto, one kind with a format; no labels.
+    const travel::ScanList pcds = travel::listScans(dir.file("pcds"));
+    ASSERT_EQ(pcds.files.size(), 2u);
+    EXPECT_EQ(pcds.files[0], dir.file("pcds/a.pcd"));
+    EXPECT_TRUE(pcds.labels_dir.empty());
+    EXPECT_EQ(travel::listScans(dir.file("pcds"), travel::ScanFormat::Ply).files.size(), 1u);
+    // Nothing to read: the error names the folder or path.
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::listScans(dir.file("seq/labels")); }),
+                    "no scans (.bin, .pcd, .ply)");
+    EXPECT_CONTAINS(inputErrorOf([&] { travel::listScans(dir.file("nope")); }), dir.file("nope"));
+}

@@ -248,7 +248,7 @@ std::string rangeText(double lo, double hi, const char* unit) {
     return (unit && *unit) ? text + " " + unit : text;
 }
 
-std::string didYouMean(const std::string& key, const std::vector<std::string>& names) {
+std::string nearestName(const std::string& key, const std::vector<std::string>& names) {
     const std::string lower_key = toLower(key);
     std::string best;
     std::size_t best_distance = std::numeric_limits<std::size_t>::max();
@@ -268,6 +268,11 @@ std::string didYouMean(const std::string& key, const std::vector<std::string>& n
             }
         }
     }
+    return best;
+}
+
+std::string didYouMean(const std::string& key, const std::vector<std::string>& names) {
+    const std::string best = nearestName(key, names);
     return best.empty() ? std::string() : "; did you mean " + inQuotes(best) + "?";
 }
 

@@ -91,7 +91,7 @@ math(EXPR bin_size "${n_points} * 16")
 math(EXPR label_size "${n_points} * 4")
 
 # The generated scan runs (with labels), one uint32 per point written.
-expect_success(${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans --out ${WORK_DIR}/good/out
+expect_success(${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans -o ${WORK_DIR}/good/out
                --labels ${WORK_DIR}/good/labels -q)
 file(SIZE ${WORK_DIR}/good/out/000000.label size)
 if(NOT size EQUAL label_size)
@@ -103,13 +103,13 @@ foreach(cut 1 15 17 8007 15999)
   set(dir ${WORK_DIR}/bin_cut_${cut})
   file(MAKE_DIRECTORY ${dir}/scans)
   truncate_file(${WORK_DIR}/good/scans/000000.bin ${cut} ${dir}/scans/000000.bin)
-  expect_failure_mentioning("000000.bin" ${TRAVEL_KITTI} --scans ${dir}/scans --out ${dir}/out -q)
+  expect_failure_mentioning("000000.bin" ${TRAVEL_KITTI} -i ${dir}/scans -o ${dir}/out -q)
 endforeach()
 # Truncated to a multiple of 16 (a shorter scan): a valid scan, complete output for it.
 set(dir ${WORK_DIR}/bin_cut_800)
 file(MAKE_DIRECTORY ${dir}/scans)
 truncate_file(${WORK_DIR}/good/scans/000000.bin 800 ${dir}/scans/000000.bin)
-expect_success(${TRAVEL_KITTI} --scans ${dir}/scans --out ${dir}/out -q)
+expect_success(${TRAVEL_KITTI} -i ${dir}/scans -o ${dir}/out -q)
 file(SIZE ${dir}/out/000000.label size)
 if(NOT size EQUAL 200)
   message(FATAL_ERROR "50-point scan: ${size} bytes of labels, expected 200")
@@ -120,7 +120,7 @@ set(dir ${WORK_DIR}/bin_flip)
 file(MAKE_DIRECTORY ${dir}/scans)
 flip_bytes(${WORK_DIR}/good/scans/000000.bin ${dir}/scans/000000.bin 0xC0 3 7 11 1003 5555 15999)
 flip_bytes(${dir}/scans/000000.bin ${dir}/scans/000001.bin 0x7F 19 23 27 8003)
-expect_success(${TRAVEL_KITTI} --scans ${dir}/scans --out ${dir}/out -q)
+expect_success(${TRAVEL_KITTI} -i ${dir}/scans -o ${dir}/out -q)
 foreach(frame 000000 000001)
   file(SIZE ${dir}/out/${frame}.label size)
   if(NOT size EQUAL label_size)
@@ -146,7 +146,7 @@ foreach(kind empty garbage nan)
   else()
     file(WRITE ${dir}/scans/000000.bin "${nan_text}")
   endif()
-  expect_failure_mentioning("000000.bin" ${TRAVEL_KITTI} --scans ${dir}/scans --out ${dir}/out -q)
+  expect_failure_mentioning("000000.bin" ${TRAVEL_KITTI} -i ${dir}/scans -o ${dir}/out -q)
   if(EXISTS ${dir}/out/000000.label)
     message(FATAL_ERROR "${kind} .bin: a .label was written for a file that is no scan")
   endif()
@@ -157,8 +157,8 @@ foreach(cut 0 3 2001 3996)
   set(dir ${WORK_DIR}/label_cut_${cut})
   file(MAKE_DIRECTORY ${dir}/labels)
   truncate_file(${WORK_DIR}/good/labels/000000.label ${cut} ${dir}/labels/000000.label)
-  expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --labels ${dir}/labels -q)
+  expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --labels ${dir}/labels -q)
 endforeach()
 
 # ---------------------------------------------------------------------------------------------
@@ -170,7 +170,7 @@ foreach(kind yaml ini)
   set(dir ${WORK_DIR}/config_${kind})
   file(MAKE_DIRECTORY ${dir})
   file(WRITE ${dir}/good.${kind} "${${kind}}")
-  expect_success(${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans --out ${dir}/out
+  expect_success(${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans -o ${dir}/out
                  --config ${dir}/good.${kind} -q)
 
   # Truncated in the middle of line 4's key ("tgf_reso"): unknown key named with file:4.
@@ -178,35 +178,35 @@ foreach(kind yaml ini)
   math(EXPR cut "${cut} + 8")
   string(SUBSTRING "${${kind}}" 0 ${cut} text)
   file(WRITE ${dir}/cut_key.${kind} "${text}")
-  expect_failure_mentioning("cut_key.${kind}:4" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/cut_key.${kind} -q)
-  expect_failure_mentioning("tgf_reso" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/cut_key.${kind} -q)
+  expect_failure_mentioning("cut_key.${kind}:4" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/cut_key.${kind} -q)
+  expect_failure_mentioning("tgf_reso" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/cut_key.${kind} -q)
   # Truncated in the middle of line 5's value ("max_range: 8" / "max_range = 8"): still a valid
   # assignment of 8 m, so it parses; the run succeeds.
   string(FIND "${${kind}}" "80\n" cut)
   math(EXPR cut "${cut} + 1")
   string(SUBSTRING "${${kind}}" 0 ${cut} text)
   file(WRITE ${dir}/cut_value.${kind} "${text}")
-  expect_success(${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans --out ${dir}/out
+  expect_success(${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans -o ${dir}/out
                  --config ${dir}/cut_value.${kind} -q)
   # Truncated right after the key's separator: an empty value, error naming line and key.
   string(FIND "${${kind}}" "ring_source" cut)
   math(EXPR cut "${cut} + 13")
   string(SUBSTRING "${${kind}}" 0 ${cut} text)
   file(WRITE ${dir}/cut_sep.${kind} "${text}")
-  expect_failure_mentioning("cut_sep.${kind}:6" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/cut_sep.${kind} -q)
-  expect_failure_mentioning("ring_source" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/cut_sep.${kind} -q)
+  expect_failure_mentioning("cut_sep.${kind}:6" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/cut_sep.${kind} -q)
+  expect_failure_mentioning("ring_source" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/cut_sep.${kind} -q)
 
   # One bit flipped in a key: 'sensor_height' -> 'sensor_heighu' (t ^ 0x01).
   string(REPLACE "sensor_height" "sensor_heighu" text "${${kind}}")
   file(WRITE ${dir}/flip_key.${kind} "${text}")
-  expect_failure_mentioning("flip_key.${kind}:3" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/flip_key.${kind} -q)
-  expect_failure_mentioning("sensor_heighu" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/flip_key.${kind} -q)
+  expect_failure_mentioning("flip_key.${kind}:3" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/flip_key.${kind} -q)
+  expect_failure_mentioning("sensor_heighu" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/flip_key.${kind} -q)
   # One bit flipped in the separator (':' ^ 0x01 = ';', '=' ^ 0x01 = '<'): line 4 is no
   # assignment any more.
   if(kind STREQUAL "yaml")
@@ -215,18 +215,18 @@ foreach(kind yaml ini)
     string(REPLACE "tgf_resolution =" "tgf_resolution <" text "${${kind}}")
   endif()
   file(WRITE ${dir}/flip_sep.${kind} "${text}")
-  expect_failure_mentioning("flip_sep.${kind}:4" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/flip_sep.${kind} -q)
+  expect_failure_mentioning("flip_sep.${kind}:4" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/flip_sep.${kind} -q)
   # One bit flipped in a value digit ('4' ^ 0x40 = 't'): not a number, names the key.
   string(REPLACE "tgf_resolution: 4.0" "tgf_resolution: t.0" text "${${kind}}")
   string(REPLACE "tgf_resolution = 4.0" "tgf_resolution = t.0" text "${text}")
   file(WRITE ${dir}/flip_value.${kind} "${text}")
-  expect_failure_mentioning("tgf_resolution" ${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans
-                            --out ${dir}/out --config ${dir}/flip_value.${kind} -q)
+  expect_failure_mentioning("tgf_resolution" ${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans
+                            -o ${dir}/out --config ${dir}/flip_value.${kind} -q)
   # One bit flipped inside the comment ('t' ^ 0x20 = 'T'): still parses, exit 0.
   string(REPLACE "test config" "Test config" text "${${kind}}")
   file(WRITE ${dir}/flip_comment.${kind} "${text}")
-  expect_success(${TRAVEL_KITTI} --scans ${WORK_DIR}/good/scans --out ${dir}/out
+  expect_success(${TRAVEL_KITTI} -i ${WORK_DIR}/good/scans -o ${dir}/out
                  --config ${dir}/flip_comment.${kind} -q)
 endforeach()
 

@@ -23,7 +23,7 @@ function(expect_nonempty_file path)
   endif()
 endfunction()
 
-set(io --scans ${WORK_DIR}/scans --labels ${WORK_DIR}/labels --out ${WORK_DIR}/out)
+set(io -i ${WORK_DIR}/scans --labels ${WORK_DIR}/labels -o ${WORK_DIR}/out)
 # Configuration errors come before any file is read, so these need no data.
 # Unknown method: the message lists the valid ones
 expect_failure_mentioning("gpf+slr" ${TRAVEL_EVAL} report ${io} --methods travel,nope)
@@ -32,17 +32,17 @@ expect_failure_mentioning("foo" ${TRAVEL_EVAL} sweep ${io} --sweep foo)
 expect_failure_mentioning("tgf_resolution=" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=)
 expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolutoin=2,4)
 expect_failure_mentioning("tgf_resolution" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=2,-1)
-# Unknown subcommand; no labelled frame; missing directory
+# Unknown subcommand; no scan; missing directory
 expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
-expect_failure_mentioning("no labelled frames" ${TRAVEL_EVAL} report ${io})
-expect_failure_mentioning("no_such_dir" ${TRAVEL_EVAL} report --scans ${WORK_DIR}/no_such_dir
-                          --labels ${WORK_DIR}/labels --out ${WORK_DIR}/out)
+expect_failure_mentioning("no scans" ${TRAVEL_EVAL} report ${io})
+expect_failure_mentioning("no_such_dir" ${TRAVEL_EVAL} report -i ${WORK_DIR}/no_such_dir
+                          --labels ${WORK_DIR}/labels -o ${WORK_DIR}/out)
 
 set(seq ${DATA_DIR}/semantickitti/sequences/00)
 if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
-  set(real --scans ${seq}/velodyne --labels ${seq}/labels --max-frames 1)
+  set(real -i ${seq} --max-frames 1)  # labels/ found beside velodyne/
 
-  run_ok(${TRAVEL_EVAL} report ${real} --out ${WORK_DIR}/report --methods travel,gpf)
+  run_ok(${TRAVEL_EVAL} report ${real} -o ${WORK_DIR}/report --methods travel,gpf)
   file(READ ${WORK_DIR}/report/report.md md)
   foreach(needle "A (Patchwork benchmark)" "B (Patchwork++)" "| travel |" "| gpf |")
     string(FIND "${md}" "${needle}" pos)
@@ -57,7 +57,7 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
     message(FATAL_ERROR "frames.csv has ${n} lines, expected 3 (header + 2 rows)")
   endif()
 
-  run_ok(${TRAVEL_EVAL} sweep ${real} --out ${WORK_DIR}/sweep --sweep tgf_resolution=4,8)
+  run_ok(${TRAVEL_EVAL} sweep ${real} -o ${WORK_DIR}/sweep --sweep tgf_resolution=4,8)
   file(STRINGS ${WORK_DIR}/sweep/sweep_tgf_resolution.csv rows)
   list(LENGTH rows n)
   if(NOT n EQUAL 3)

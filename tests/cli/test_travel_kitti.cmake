@@ -6,25 +6,25 @@ file(MAKE_DIRECTORY ${WORK_DIR}/scans ${WORK_DIR}/bad ${WORK_DIR}/labels)
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 
 # Missing directory
-expect_failure_mentioning("no_such_dir" ${TRAVEL_KITTI} --scans ${WORK_DIR}/no_such_dir --out ${WORK_DIR}/out)
+expect_failure_mentioning("no_such_dir" ${TRAVEL_KITTI} -i ${WORK_DIR}/no_such_dir -o ${WORK_DIR}/out)
 # Unknown preset
-expect_failure_mentioning("nopreset" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --preset nopreset)
+expect_failure_mentioning("nopreset" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --preset nopreset)
 # Misspelt parameter
-expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --set tgf_resolutoin=4)
+expect_failure_mentioning("tgf_resolutoin" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --set tgf_resolutoin=4)
 # An unknown option stops with an error (MRPT's TCLAP would carry on without the check)
 expect_failure_mentioning("--bogus" ${TRAVEL_KITTI} --bogus)
 # Unknown method: the message lists the valid ones
-expect_failure_mentioning("gpf+slr" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --method nope)
+expect_failure_mentioning("gpf+slr" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --method nope)
 # A .bin whose size is not a multiple of 16
 file(WRITE ${WORK_DIR}/bad/broken.bin "0123456789")
-expect_failure_mentioning("broken.bin" ${TRAVEL_KITTI} --scans ${WORK_DIR}/bad --out ${WORK_DIR}/out)
+expect_failure_mentioning("broken.bin" ${TRAVEL_KITTI} -i ${WORK_DIR}/bad -o ${WORK_DIR}/out)
 
 # A real scan if available: labels are written, one uint32 per point; a label file with the wrong
 # count is an error naming it.
 set(seq ${DATA_DIR}/semantickitti/sequences/00)
 if(EXISTS ${seq}/velodyne/000000.bin)
   file(COPY ${seq}/velodyne/000000.bin DESTINATION ${WORK_DIR}/scans)
-  execute_process(COMMAND ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out -q
+  execute_process(COMMAND ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out -q
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "travel-kitti failed on a real scan:\n${out}${err}")
@@ -36,7 +36,7 @@ if(EXISTS ${seq}/velodyne/000000.bin)
     message(FATAL_ERROR "label file has ${label_size} bytes, expected ${expected}")
   endif()
   file(WRITE ${WORK_DIR}/labels/000000.label "12345678")
-  expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} --scans ${WORK_DIR}/scans --out ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
+  expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
 else()
   message(STATUS "SemanticKITTI scans not found in ${seq}: real-scan part skipped")
 endif()

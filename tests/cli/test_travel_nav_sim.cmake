@@ -6,7 +6,7 @@ file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
 # A few simulated seconds on the small flat world, outputs in the current directory.
-execute_process(COMMAND ${TRAVEL_NAV_SIM} --world flat_obstacles.world --timeout 4
+execute_process(COMMAND ${TRAVEL_NAV_SIM} -i flat_obstacles.world --timeout 4
   WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "travel-nav-sim failed:\n${out}${err}")
@@ -32,10 +32,10 @@ if(leftovers)
 endif()
 
 # Errors name what is wrong.
-expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} --world ${WORK_DIR}/nowhere.world)
+expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/nowhere.world)
 expect_failure_mentioning("unknown obstacle source 'lidar'" ${TRAVEL_NAV_SIM} --source lidar
-  --world flat_obstacles.world)
+  -i flat_obstacles.world)
 file(WRITE ${WORK_DIR}/bad.world "start 0 0 0\ngoal 5 0\npole 1 1 0.1\n")
-expect_failure_mentioning("bad.world:3" ${TRAVEL_NAV_SIM} --world ${WORK_DIR}/bad.world)
-expect_failure_mentioning("tgf_resolution" ${TRAVEL_NAV_SIM} --world flat_obstacles.world
+expect_failure_mentioning("bad.world:3" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/bad.world)
+expect_failure_mentioning("tgf_resolution" ${TRAVEL_NAV_SIM} -i flat_obstacles.world
   --set tgf_resolution=-1)

@@ -6,19 +6,19 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 
 # Missing scan
-expect_failure_mentioning("no_such_scan.bin" ${TRAVEL_VIEW} --scan ${WORK_DIR}/no_such_scan.bin --out ${WORK_DIR}/x.png)
+expect_failure_mentioning("no_such_scan.bin" ${TRAVEL_VIEW} -i ${WORK_DIR}/no_such_scan.bin -o ${WORK_DIR}/x.png)
 # A .bin whose size is not a multiple of 16
 file(WRITE ${WORK_DIR}/broken.bin "0123456789")
-expect_failure_mentioning("broken.bin" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png)
+expect_failure_mentioning("broken.bin" ${TRAVEL_VIEW} -i ${WORK_DIR}/broken.bin -o ${WORK_DIR}/x.png)
 # Unknown method: the message lists the valid ones
-expect_failure_mentioning("gpf+slr" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png --methods nope)
+expect_failure_mentioning("gpf+slr" ${TRAVEL_VIEW} -i ${WORK_DIR}/broken.bin -o ${WORK_DIR}/x.png --methods nope)
 # More than two methods
-expect_failure_mentioning("--methods" ${TRAVEL_VIEW} --scan ${WORK_DIR}/broken.bin --out ${WORK_DIR}/x.png --methods travel,gpf,tgs)
+expect_failure_mentioning("--methods" ${TRAVEL_VIEW} -i ${WORK_DIR}/broken.bin -o ${WORK_DIR}/x.png --methods travel,gpf,tgs)
 
 set(scan ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
 if(EXISTS ${scan})
   set(png ${WORK_DIR}/pics/000000_travel_vs_gpfslr.png)
-  execute_process(COMMAND ${TRAVEL_VIEW} --scan ${scan} --methods travel,gpf+slr --out ${png}
+  execute_process(COMMAND ${TRAVEL_VIEW} -i ${scan} --methods travel,gpf+slr -o ${png}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "travel-view failed on a real scan:\n${out}${err}")

@@ -10,11 +10,12 @@
 namespace travel::eval {
 
 void evaluateFrame(const std::string& scan_path, const std::string& label_path,
-                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame) {
+                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame,
+                   ScanFormat format) {
     const PointCloud& cloud = frame.cloud;
     const Segmentation& out = frame.segmentation;
     try {
-        readScan(scan_path, frame.cloud);
+        readScan(scan_path, frame.cloud, format);
         segmenter.segment(cloud, frame.segmentation);
         frame.class_counts = {};
         for (const PointClass c : out.labels) ++frame.class_counts[static_cast<int>(c) & 3];

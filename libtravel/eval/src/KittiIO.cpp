@@ -1,15 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/eval/KittiIO.hpp"
 
-#include <algorithm>
-#include <filesystem>
-
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
 
 namespace travel {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -48,29 +43,6 @@ void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels
     buffer.resize(labels.size() * 4);
     for (std::size_t i = 0; i < labels.size(); ++i) le::store(labels[i], buffer.data() + 4 * i);
     writeFileBytes(path, buffer.data(), buffer.size());
-}
-std::vector<std::string> listFiles(const std::string& dir, const std::string& extension) {
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) {
-        throw InputError("directory " + inQuotes(dir) +
-                         (fs::exists(dir, ec) ? " is not a directory" : " does not exist"));
-    }
-    const std::string wanted =
-        extension.empty() || extension.front() == '.' ? extension : "." + extension;
-    std::vector<std::string> files;
-    fs::directory_iterator it(dir, ec);
-    if (ec) throw InputError("cannot list " + inQuotes(dir) + ": " + ec.message());
-    // increment() turns `it` into the end iterator on error; ec is checked after the loop.
-    for (const fs::directory_iterator end; it != end; it.increment(ec)) {
-        std::error_code type_ec;
-        if (!it->is_regular_file(type_ec)) continue;  // follows symlinks, skips directories
-        if (wanted.empty() || it->path().extension() == wanted) {
-            files.push_back(it->path().string());
-        }
-    }
-    if (ec) throw InputError("cannot list " + inQuotes(dir) + ": " + ec.message());
-    std::sort(files.begin(), files.end());
-    return files;
 }
 
 }  // namespace travel

@@ -64,23 +64,37 @@ std::string sequenceName(const std::string& scans_dir) {
     return p.filename().string();
 }
 
-std::vector<FrameRef> labelledFrames(const std::vector<std::string>& scans,
-                                     const std::vector<std::string>& labels, int max_frames) {
+std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
+                                     const std::vector<std::string>& labels, int max_frames,
+                                     ScanFormat format) {
+    if (!labels.empty() && labels.size() != inputs.size())
+        throw InputError(
+            "give one labels folder per input (paired by order): " + std::to_string(inputs.size()) +
+            " inputs, " + std::to_string(labels.size()) + " labels folders");
     std::vector<FrameRef> frames;
-    for (std::size_t s = 0; s < scans.size(); ++s) {
-        if (!fs::is_directory(labels[s]))
-            throw InputError("labels directory " + labels[s] + " does not exist");
-        const std::string seq = sequenceName(scans[s]);
-        for (const std::string& bin : listFiles(scans[s], ".bin")) {
-            const std::string stem = fs::path(bin).stem().string();
-            const fs::path label = fs::path(labels[s]) / (stem + ".label");
-            if (fs::exists(label)) frames.push_back({bin, label.string(), seq + "/" + stem});
+    std::vector<std::string> labels_dirs;
+    for (std::size_t s = 0; s < inputs.size(); ++s) {
+        const ScanList scans = listScans(inputs[s], format);
+        const std::string labels_dir = labels.empty() ? scans.labels_dir : labels[s];
+        if (labels_dir.empty())
+            throw InputError(inputs[s] +
+                             ": no labels folder (a KITTI sequence folder has labels/ "
+                             "beside velodyne/; else give --labels DIR)");
+        if (!fs::is_directory(labels_dir))
+            throw InputError("labels directory " + labels_dir + " does not exist");
+        labels_dirs.push_back(labels_dir);
+        const std::string seq = sequenceName(scans.scans_dir);
+        for (const std::string& scan : scans.files) {
+            const std::string stem = fs::path(scan).stem().string();
+            const fs::path label = fs::path(labels_dir) / (stem + ".label");
+            if (fs::exists(label))
+                frames.push_back({scan, label.string(), seq + "/" + stem, format});
         }
     }
     if (frames.empty()) {
         std::string dirs;
-        for (std::size_t s = 0; s < scans.size(); ++s)
-            dirs += (s ? ", " : "") + scans[s] + " with " + labels[s];
+        for (std::size_t s = 0; s < inputs.size(); ++s)
+            dirs += (s ? ", " : "") + inputs[s] + " with " + labels_dirs[s];
         throw InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
     }
     if (max_frames > 0 && frames.size() > static_cast<std::size_t>(max_frames))
@@ -116,7 +130,8 @@ MethodRun runMethod(const std::string& method, const Params& params,
     EvaluationAccumulator totals;
     for (std::size_t f = 0; f < frames.size(); ++f) {
         if (before_frame) before_frame(f);
-        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, params.sensor_height, frame);
+        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, params.sensor_height, frame,
+                      frames[f].format);
         totals.add(frame);
         FrameRow row;
         row.frame = frames[f].name;

@@ -40,8 +40,10 @@ std::string choiceAt(const char* choices, int index);
 
 /// "[lo, hi] unit".
 std::string rangeText(double lo, double hi, const char* unit);
-/// "; did you mean 'x'?" for the nearest of `names` (edit distance, or a name containing
-/// `key`), or "" when none is near.
+/// The nearest of `names` to `key` (edit distance, or a name containing `key`), or "" when
+/// none is near. Also the apps' "did you mean" for command-line flags.
+std::string nearestName(const std::string& key, const std::vector<std::string>& names);
+/// "; did you mean 'x'?" for nearestName(), or "" when none is near.
 std::string didYouMean(const std::string& key, const std::vector<std::string>& names);
 /// "# text tail" comment lines of at most 100 columns, each prefixed by `indent`.
 std::string wrappedComment(const std::string& text, const std::string& tail,

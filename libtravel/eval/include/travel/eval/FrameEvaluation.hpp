@@ -23,6 +23,7 @@
 #include "travel/eval/Metrics.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
 #include "travel/eval/Segmenter.hpp"
+#include "travel/io/ScanIO.hpp"  // ScanFormat
 
 namespace travel::eval {
 
@@ -45,12 +46,13 @@ struct FrameEvaluation {
     std::size_t count(PointClass c) const { return class_counts[static_cast<int>(c)]; }
 };
 
-/// Reads the KITTI .bin `scan_path`, segments it with `segmenter` and, when `label_path` is not
-/// empty, reads its SemanticKITTI labels and scores ground under both protocols
+/// Reads the scan `scan_path` (readScan() in `format`), segments it with `segmenter` and, when
+/// `label_path` is not empty, reads its SemanticKITTI labels and scores ground under both protocols
 /// (`sensor_height`: protocol A's vegetation rule) and objects. `frame`'s buffers are reused.
 /// Every error names the scan (or the label file).
 void evaluateFrame(const std::string& scan_path, const std::string& label_path,
-                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame);
+                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame,
+                   ScanFormat format = ScanFormat::Auto);
 
 /// Over the scored frames: mean and std of each ground score per protocol; over the scored
 /// frames with an object stage: the per-frame entropy sums and the pooled object summary.

@@ -15,6 +15,7 @@
 
 #include "travel/PointCloud.hpp"
 #include "travel/io/ScanIO.hpp"
+#include "travel/io/ScanList.hpp"  // listFiles, listScans
 
 namespace travel {
 
@@ -46,10 +47,5 @@ inline uint32_t labelClassBits(uint32_t label) {
 inline uint32_t labelClusterId(uint32_t label) {
     return label >> 16;
 }
-
-/// Regular files in `dir` whose extension is `extension` ("bin" or ".bin"; empty = all), as
-/// full paths sorted by name (KITTI names are zero-padded, so this is frame order). Throws
-/// InputError if `dir` is not a directory.
-std::vector<std::string> listFiles(const std::string& dir, const std::string& extension);
 
 }  // namespace travel

@@ -21,16 +21,19 @@ std::vector<std::string> splitList(const std::string& text, char sep);
 
 struct FrameRef {
     std::string scan, label, name;  ///< name: "<sequence>/<stem>"
+    ScanFormat format = ScanFormat::Auto;
 };
 
 /// A sequence's name for the report: ".../sequences/00/velodyne" -> "00".
 std::string sequenceName(const std::string& scans_dir);
 
-/// The scans that have a label file, over all (scans[s], labels[s]) pairs, in order, at most
-/// max_frames of them (when > 0). Throws InputError for a missing labels directory or when no
-/// scan has a label. The two lists must have the same size.
-std::vector<FrameRef> labelledFrames(const std::vector<std::string>& scans,
-                                     const std::vector<std::string>& labels, int max_frames);
+/// The scans that have a label file, over all inputs in order (each as listScans() reads it: a
+/// scan, a folder of scans or a KITTI sequence folder), at most max_frames of them (when > 0).
+/// `labels` is empty (each input's own labels/ folder) or has one labels folder per input.
+/// Throws InputError for a missing labels folder or when no scan has a label.
+std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
+                                     const std::vector<std::string>& labels, int max_frames,
+                                     ScanFormat format = ScanFormat::Auto);
 
 /// "sequence 00, 000000-000002; sequence 01, ..." for the report header.
 std::string describeFrames(const std::vector<FrameRef>& frames);

@@ -1,0 +1,38 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Which scans an input path names, for every app that reads scans (-i/--input): a single scan
+// file, a folder of scans, or a KITTI / SemanticKITTI sequence folder (velodyne/ with the scans,
+// labels/ with the ground truth, calib.txt and poses.txt beside them). One rule, here, instead
+// of one per app.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "travel/io/ScanIO.hpp"
+
+namespace travel {
+
+/// Regular files in `dir` whose extension is `extension` ("bin" or ".bin"; empty = all), as
+/// full paths sorted by name (KITTI names are zero-padded, so this is frame order). Throws
+/// InputError if `dir` is not a directory.
+std::vector<std::string> listFiles(const std::string& dir, const std::string& extension);
+
+struct ScanList {
+    std::vector<std::string> files;  ///< the scans, in frame (name) order
+    std::string scans_dir;           ///< the folder holding them
+    std::string labels_dir;          ///< SemanticKITTI labels/ of the sequence, "" when none
+    std::string sequence_dir;        ///< the KITTI sequence folder (calib.txt, poses.txt), or ""
+};
+
+/// The scans `path` names, in order:
+///  - a scan file: that file alone;
+///  - a folder with a velodyne/ subfolder (a KITTI sequence): the scans in velodyne/;
+///  - any other folder: the scan files in it.
+/// Scan files are those `format` reads: .bin for kitti / nuscenes, .pcd, .ply, and all three
+/// for auto. When the scans are in a folder named velodyne whose parent has a labels/ folder,
+/// that is the labels folder. Throws InputError naming `path` when it does not exist or holds
+/// no scan.
+ScanList listScans(const std::string& path, ScanFormat format = ScanFormat::Auto);
+
+}  // namespace travel
