@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
+#include "Progress.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
@@ -22,7 +23,7 @@ struct Options {
     std::string extent;
     double resolution = 0;
     long max_frames = 0;
-    bool quiet = false;
+    Verbosity verbosity = Verbosity::Normal;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 

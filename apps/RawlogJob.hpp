@@ -92,7 +92,7 @@ struct Options {
     std::string pcap_model, pcap_calibration;  // .pcap inputs
     bool plain_clouds = true;
     std::vector<std::string> overrides;
-    bool quiet = false;
+    bool quiet = false, verbose = false;
     bool ignore_sensor_pose = false;
     int png_size = 800;
     double png_metres_per_pixel = 0.075;
@@ -107,9 +107,11 @@ class RawlogSegmenter {
           filter_(filter_options),
           csv_(options.csv),
           reference_(options.label_reference) {
-        // Notes from the filter (no motion data, ...) once each, in our own format.
-        filter_.setMinLoggingLevel(options.quiet ? mrpt::system::LVL_ERROR
-                                                 : mrpt::system::LVL_INFO);
+        // Notes from the filter (no motion data, ...) once each, in our own format. They are
+        // this app's notes (INFO), not MRPT's chatter: shown unless -q.
+        filter_.setMinLoggingLevel(options.quiet     ? mrpt::system::LVL_ERROR
+                                   : options.verbose ? mrpt::system::LVL_DEBUG
+                                                     : mrpt::system::LVL_INFO);
         filter_.logging_enable_console_output = false;
         filter_.logRegisterCallback(
             [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,

@@ -70,7 +70,8 @@ int run(int argc, char** argv) {
         "the file)",
         false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
-    TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output", cmd);
+    TCLAP::SwitchArg verbose_arg("v", "verbose", "Navigator console output, DEBUG included", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", "Print nothing but errors", cmd);
     const travel::apps::PrintConfigFlag print_config(cmd);
     if (const auto code = travel::apps::parseCommandLine(cmd, argc, argv)) return *code;
     // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then each --set.
@@ -96,13 +97,15 @@ int run(int argc, char** argv) {
     options.nav_config_file = config;
     options.timeout = timeout_arg.getValue();
     options.threshold_min_z = threshold_arg.getValue();
-    options.verbose = verbose_arg.getValue();
+    options.verbosity = travel::apps::verbosityFrom(quiet.getValue(), verbose_arg.getValue());
+    const bool print = options.verbosity != travel::apps::Verbosity::Quiet;
     options.travel = configuration.travel;
     options.nav = configuration.nav;
     const auto footprint = footprintFromConfig(config);
 
-    std::cout << "travel-nav-sim: world " << world.name << " (" << world.source << "), navigator "
-              << config << "\n";
+    if (print)
+        std::cout << "travel-nav-sim: world " << world.name << " (" << world.source
+                  << "), navigator " << config << "\n";
     std::vector<mrpt::img::CImage> panels;
     std::vector<std::string> titles;
     for (const SourceKind kind : sources) {
@@ -116,6 +119,9 @@ int run(int argc, char** argv) {
         mrpt::img::CImage img;
         renderTopView(world, footprint, &r, view, img);
         travel_mrpt::savePicture(img, stem + ".png");
+        panels.push_back(std::move(img));
+        titles.push_back(toString(kind));
+        if (!print) continue;
         std::printf(
             "  %-9s %-17s time %5.1f s  path %5.2f m  min clearance %.2f m (%s)  climbed %.2f m"
             "  %.1f ms/step%s%s\n",
@@ -124,8 +130,6 @@ int run(int argc, char** argv) {
             r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
         std::cout << "    outputs: " << stem << ".{csv,png"
                   << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}\n";
-        panels.push_back(std::move(img));
-        titles.push_back(toString(kind));
     }
     if (panels.size() > 1) {
         mrpt::img::CImage all = panels[0], tmp;
@@ -135,7 +139,7 @@ int run(int argc, char** argv) {
         }
         const std::string path = (out_dir / (world.name + "_sources.png")).string();
         travel_mrpt::savePicture(all, path);
-        std::cout << "  side by side: " << path << "\n";
+        if (print) std::cout << "  side by side: " << path << "\n";
     }
     return 0;
 }
