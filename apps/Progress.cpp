@@ -10,10 +10,12 @@
 
 namespace travel::apps {
 
-void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosity) {
+void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosity,
+                          MrptLogRole role) {
     using namespace mrpt::system;
     logger.setMinLoggingLevel(verbosity == Verbosity::Verbose ? LVL_DEBUG
                               : verbosity == Verbosity::Quiet ? LVL_ERROR
+                              : role == MrptLogRole::Notes    ? LVL_INFO
                                                               : LVL_WARN);
 }
 

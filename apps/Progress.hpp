@@ -23,11 +23,17 @@ inline Verbosity verbosityFrom(bool quiet, bool verbose) {
     return quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
 }
 
-/// The one rule for MRPT's console output (MRPT 2.5 has no global level: every
-/// mrpt::system::COutputLogger - filters, navigators, time loggers - is set one by one): DEBUG
-/// lines only with -v, nothing but errors with -q, else warnings and above (MRPT's INFO lines
-/// are its internal chatter, e.g. time-logger tables, not results).
-void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosity);
+/// Whose messages an mrpt::system::COutputLogger carries.
+enum class MrptLogRole {
+    Library,  ///< MRPT's own objects (navigator, time loggers): internal chatter at INFO
+    Notes     ///< our TravelFilter: its INFO lines are notes for the user ("not deskewed")
+};
+
+/// The one rule for MRPT's console output (MRPT 2.5 has no global level: every logger is set
+/// one by one): nothing but errors with -q, DEBUG lines only with -v, else warnings and above
+/// (INFO and above for our filter's notes).
+void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosity,
+                          MrptLogRole role = MrptLogRole::Library);
 
 /// Silences, while it lives, what a library writes straight to stderr with no logger to set:
 /// liboctomap 1.9.7 prints " done." on every binary tree write (.bt exports, the serialized

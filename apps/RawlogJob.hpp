@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
+#include "Progress.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/LabelledOutputs.hpp"
@@ -107,11 +108,10 @@ class RawlogSegmenter {
           filter_(filter_options),
           csv_(options.csv),
           reference_(options.label_reference) {
-        // Notes from the filter (no motion data, ...) once each, in our own format. They are
-        // this app's notes (INFO), not MRPT's chatter: shown unless -q.
-        filter_.setMinLoggingLevel(options.quiet     ? mrpt::system::LVL_ERROR
-                                   : options.verbose ? mrpt::system::LVL_DEBUG
-                                                     : mrpt::system::LVL_INFO);
+        // Notes from the filter (no motion data, ...) once each, in our own format.
+        travel::apps::configureMrptLogging(
+            filter_, travel::apps::verbosityFrom(options.quiet, options.verbose),
+            travel::apps::MrptLogRole::Notes);
         filter_.logging_enable_console_output = false;
         filter_.logRegisterCallback(
             [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,

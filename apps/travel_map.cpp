@@ -157,7 +157,7 @@ int run(int argc, char** argv) {
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    travel::apps::configureMrptLogging(map.filter(), o.verbosity);
+    travel::apps::configureMrptLogging(map.filter(), o.verbosity, travel::apps::MrptLogRole::Notes);
     const bool kitti = fs::is_directory(o.input);
     std::string pose_path = o.poses;
     if (pose_path.empty() && kitti && fs::exists(fs::path(o.input) / "poses.txt"))

@@ -3,9 +3,9 @@
 # - without a terminal (as here: pipes) the progress is plain lines, never a '\r' redraw;
 # - travel-nav-sim prints no MRPT DEBUG line without -v;
 # - Ctrl-C (SIGINT) during travel-nav-sim exits with 130 and leaves no temporary folder (its
-#   scratch lives under TMPDIR) and no partial output.
-# -DTRAVEL_KITTI -DTRAVEL_EVAL -DTRAVEL_RAWLOG -DTRAVEL_MAP -DTRAVEL_NAV_SIM -DSAMPLE -DDATA_DIR
-# -DWORK_DIR
+#   scratch lives under TMPDIR) and no partial output; travel-rawlog leaves no output either.
+# -DTRAVEL_KITTI -DTRAVEL_EVAL -DTRAVEL_RAWLOG -DTRAVEL_MAP -DTRAVEL_NAV_SIM -DMAKE_SYNTHETIC
+# -DSAMPLE -DDATA_DIR -DWORK_DIR
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -76,7 +76,7 @@ if(EXISTS ${SAMPLE})
   expect_silent(${TRAVEL_MAP} -i ${SAMPLE} -o ${WORK_DIR}/map -p vlp16 -q)
   # Without -q: the missing-pose warning comes first, and no "without pose: 0".
   expect_plain_output(COMMAND ${TRAVEL_MAP} -i ${SAMPLE} -o ${WORK_DIR}/map -p vlp16
-                      NOT " done." "without pose" "|INFO")
+                      NOT " done." "without pose")
   string(FIND "${last_output}" "identity pose" warning_pos)
   string(FIND "${last_output}" "LiDAR frames mapped" summary_pos)
   if(warning_pos EQUAL -1 OR summary_pos EQUAL -1)
@@ -122,6 +122,25 @@ if(TIMEOUT_PROGRAM)
   string(FIND "${err}" "interrupted" pos)
   if(pos EQUAL -1)
     message(FATAL_ERROR "travel-nav-sim after SIGINT does not say 'interrupted':\n${err}")
+  endif()
+  # travel-rawlog: an interrupted run leaves no output at all (no OUT.rawlog, no .part, no CSV).
+  if(MAKE_SYNTHETIC)
+    expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/long.rawlog 300)
+    execute_process(
+      COMMAND ${TIMEOUT_PROGRAM} --preserve-status -s INT 2
+              ${TRAVEL_RAWLOG} -i ${WORK_DIR}/long.rawlog -o ${WORK_DIR}/long/out.rawlog
+              --csv ${WORK_DIR}/long/frames.csv -p vlp16 -q
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 130)
+      file(GLOB leftovers ${WORK_DIR}/long/*)
+      if(leftovers)
+        message(FATAL_ERROR "travel-rawlog after SIGINT left: ${leftovers}")
+      endif()
+    elseif(rc EQUAL 0)
+      message(STATUS "travel-rawlog finished before the SIGINT: interrupt part not checked")
+    else()
+      message(FATAL_ERROR "travel-rawlog after SIGINT: exit code ${rc}, expected 130\n${out}${err}")
+    endif()
   endif()
 else()
   message(STATUS "no 'timeout' program: the SIGINT part skipped")
