@@ -19,6 +19,7 @@
 
 #include "CommandLineParser.hpp"
 #include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
+#include "Interrupt.hpp"
 #include "travel/Config.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
@@ -270,11 +271,19 @@ struct MemoryLimitFlag {
 
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
-/// or an uncaught exception).
+/// or an uncaught exception). Ctrl-C / SIGTERM: "<name>: interrupted" and exit code 130, after
+/// the stack unwound (temporary files and partial outputs removed).
 template <class Run>
 int runMain(const char* name, Run&& run, int argc, char** argv) {
+    installInterruptHandlers();
     try {
-        return run(argc, argv);
+        const int code = run(argc, argv);
+        if (!interrupted()) return code;
+        std::cerr << name << ": interrupted\n";  // after the outputs were completed
+        return kInterruptedExitCode;
+    } catch (const Interrupted&) {
+        std::cerr << name << ": interrupted\n";
+        return kInterruptedExitCode;
     } catch (const TCLAP::ArgException& e) {
         std::cerr << name << ": " << e.error() << "\nRun '" << name
                   << " --help' for the flags and examples.\n";

@@ -4,20 +4,20 @@
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <unistd.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
+#include "Interrupt.hpp"
+#include "Progress.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
 namespace fs = std::filesystem;
 using mrpt::poses::CPose3D;
-using Clock = std::chrono::steady_clock;
 
 namespace travel::apps {
 
@@ -29,25 +29,6 @@ CPose3D toPose(const Eigen::Isometry3d& T) {
         for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
     return CPose3D(m);
 }
-
-class Progress {
-  public:
-    explicit Progress(bool enabled) : tty_(enabled && isatty(STDERR_FILENO)) {}
-    void update(std::size_t frames, std::size_t total, double seconds) {
-        if (!tty_) return;
-        if (total)
-            std::fprintf(stderr, "\r  frame %zu/%zu  %.1f s   ", frames, total, seconds);
-        else
-            std::fprintf(stderr, "\r  frame %zu  %.1f s   ", frames, seconds);
-        std::fflush(stderr);
-    }
-    void done() {
-        if (tty_) std::fprintf(stderr, "\n");
-    }
-
-  private:
-    bool tty_;
-};
 
 }  // namespace
 
@@ -65,7 +46,7 @@ namespace {
 // ground), on the one frame that has it.
 void reportMount(const Options& o, const travel_mrpt::CTraversabilityMap& map) {
     const travel::MountNote& note = map.lastFrame().result.mount;
-    if (note && !o.quiet)
+    if (note && o.verbosity != Verbosity::Quiet)
         std::cerr << "travel-map: " << (note.isWarning() ? "warning: " : "") << note.message
                   << "\n";
 }
@@ -77,8 +58,8 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     // Pose sources, by priority: the pose file, then the rawlog's motion (SensoryFrame actions
     // composed from the identity, else the latest CObservationOdometry record).
     travel_mrpt::RawlogMotion motion(map.filter());
-    Progress progress(!o.quiet);
-    const auto start = Clock::now();
+    ProgressLine progress("travel-map", 0, o.verbosity);
+    bool warned_no_pose = false;
     // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
     // the robot pose, anything else is a LiDAR candidate.
     const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
@@ -89,6 +70,13 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
         if (pose_file && !pose) {
             ++stats.no_pose;
             return;
+        }
+        if (!pose && !warned_no_pose && o.verbosity != Verbosity::Quiet) {
+            warned_no_pose = true;  // once, when it happens, not after the progress line
+            progress.note("travel-map: warning: " + o.input + ": LiDAR frame " +
+                          std::to_string(stats.lidar + stats.rejected + 1) +
+                          " comes before any robot pose (no actions, odometry or pose file): "
+                          "frames without a pose are mapped at the identity pose");
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
             reportMount(o, map);
@@ -108,10 +96,10 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             observation(obs);
         else
             motion.process(*record);  // odometry actions
-        progress.update(stats.inserted, 0,
-                        std::chrono::duration<double>(Clock::now() - start).count());
+        progress.update(stats.inserted);
+        throwIfInterrupted();  // nothing is written before the map is complete
     }
-    progress.done();
+    progress.finish();
     stats.pose_source = pose_file          ? "pose file " + o.poses
                         : motion.actions() ? "odometry actions of the SensoryFrames (" +
                                                  std::to_string(motion.actions()) + " increments)"
@@ -126,17 +114,22 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
     const fs::path dir(scans.sequence_dir.empty() ? o.input : scans.sequence_dir);
     std::string calib = o.calib;
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
-    if (pose_file && !pose_file->trajectory.timed()) {
-        if (!calib.empty())
-            travel::kittiCameraToLidar(pose_file->trajectory, travel::readKittiCalibTr(calib));
-        else
+    if (pose_file && !pose_file->trajectory.timed() && o.verbosity != Verbosity::Quiet) {
+        if (calib.empty())
             std::cerr << "travel-map: warning: no calib.txt: the poses are used as LiDAR poses\n";
         if (pose_file->trajectory.size() < files.size())
             std::cerr << "travel-map: warning: " << pose_file->trajectory.size() << " poses for "
                       << files.size() << " scans: the scans without a pose are skipped\n";
     }
-    Progress progress(!o.quiet);
-    const auto start = Clock::now();
+    if (pose_file && !pose_file->trajectory.timed() && !calib.empty())
+        travel::kittiCameraToLidar(pose_file->trajectory, travel::readKittiCalibTr(calib));
+    if (!pose_file && o.verbosity != Verbosity::Quiet)
+        std::cerr << "travel-map: warning: " << o.input
+                  << " has no robot poses (no poses.txt or --poses): every frame is mapped at "
+                     "the identity pose\n";
+    const std::size_t count =
+        o.max_frames > 0 ? std::min(files.size(), std::size_t(o.max_frames)) : files.size();
+    ProgressLine progress("travel-map", count, o.verbosity);
     travel::PointCloud cloud;
     auto obs = mrpt::obs::CObservationPointCloud::Create();
     auto points = mrpt::maps::CPointsMapXYZI::Create();
@@ -166,10 +159,10 @@ void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& sta
             ++stats.inserted;
         } else
             ++stats.rejected;
-        progress.update(k + 1, files.size(),
-                        std::chrono::duration<double>(Clock::now() - start).count());
+        progress.update(k + 1);
+        throwIfInterrupted();  // nothing is written before the map is complete
     }
-    progress.done();
+    progress.finish();
     stats.pose_source = pose_file ? "pose file " + o.poses : "none (identity poses)";
 }
 

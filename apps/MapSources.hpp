@@ -13,6 +13,7 @@
 
 #include "MemoryLimit.hpp"
 #include "travel/io/ScanIO.hpp"
+#include "Progress.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
@@ -24,7 +25,7 @@ struct Options {
     double resolution = 0;
     long max_frames = 0;
     travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
-    bool quiet = false, verbose = false;
+    Verbosity verbosity = Verbosity::Normal;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 

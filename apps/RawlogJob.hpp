@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
+#include "Progress.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/LabelledOutputs.hpp"
@@ -92,8 +93,7 @@ struct Options {
     std::string pcap_model, pcap_calibration;  // .pcap inputs
     bool plain_clouds = true;
     std::vector<std::string> overrides;
-    bool quiet = false;
-    bool verbose = false;
+    bool quiet = false, verbose = false;
     bool ignore_sensor_pose = false;
     int png_size = 800;
     double png_metres_per_pixel = 0.075;
@@ -109,9 +109,9 @@ class RawlogSegmenter {
           csv_(options.csv),
           reference_(options.label_reference) {
         // Notes from the filter (no motion data, ...) once each, in our own format.
-        filter_.setMinLoggingLevel(options.quiet     ? mrpt::system::LVL_ERROR
-                                   : options.verbose ? mrpt::system::LVL_DEBUG
-                                                     : mrpt::system::LVL_INFO);
+        travel::apps::configureMrptLogging(
+            filter_, travel::apps::verbosityFrom(options.quiet, options.verbose),
+            travel::apps::MrptLogRole::Notes);
         filter_.logging_enable_console_output = false;
         filter_.logRegisterCallback(
             [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,

@@ -12,8 +12,6 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/img/CImage.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +26,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/eval/Report.hpp"
@@ -47,19 +46,20 @@ using travel::eval::MethodRun;
 // Running one method over the frames, with a progress display
 
 MethodRun runMethod(const std::string& method, const travel::Params& params,
-                    const std::vector<FrameRef>& frames, const std::string& progress_label) {
-    const bool tty = isatty(fileno(stderr));
-    MethodRun run = travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
-        // A terminal gets one updating line; a log every 100th frame (and the first and last).
-        if (tty)
-            std::fprintf(stderr, "\r%s: frame %zu/%zu %s   ", progress_label.c_str(), f + 1,
-                         frames.size(), frames[f].name.c_str());
-        else if (f == 0 || (f + 1) % 100 == 0 || f + 1 == frames.size())
+                    const std::vector<FrameRef>& frames, const std::string& progress_label,
+                    travel::apps::Verbosity verbosity) {
+    // -v: one line per frame (its name) instead of the progress line.
+    const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
+    travel::apps::ProgressLine progress(
+        progress_label, frames.size(),
+        per_frame_lines ? travel::apps::Verbosity::Quiet : verbosity);
+    return travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
+        travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
+        if (per_frame_lines)
             std::fprintf(stderr, "%s: frame %zu/%zu %s\n", progress_label.c_str(), f + 1,
                          frames.size(), frames[f].name.c_str());
+        progress.update(f + 1);
     });
-    if (tty) std::fprintf(stderr, "\n");
-    return run;
 }
 
 void createDir(const std::string& dir) {
@@ -312,6 +312,8 @@ int run(int argc, char** argv) {
     // Configuration errors first, before any file is read.
     const std::string out = flags.outputPath();
     const bool quiet = flags.quiet();
+    const travel::apps::Verbosity verbosity =
+        travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     if (max_frames.isSet() && max_frames.getValue() < 1)
         throw travel::apps::usageError("--max-frames must be at least 1");
     if (is_sweep && methods.isSet())
@@ -339,7 +341,8 @@ int run(int argc, char** argv) {
 
     if (!is_sweep) {
         std::vector<MethodRun> runs;
-        for (const std::string& name : names) runs.push_back(runMethod(name, params, frames, name));
+        for (const std::string& name : names)
+            runs.push_back(runMethod(name, params, frames, name, verbosity));
         const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
         openOut(dir / "report.md") << md;
         std::ofstream frames_csv = openOut(dir / "frames.csv");
@@ -355,7 +358,7 @@ int run(int argc, char** argv) {
         travel::Params p = params;
         travel::applyOverride(spec.key + "=" + value, p);
         p.validate();
-        const MethodRun run = runMethod(names[0], p, frames, spec.key + "=" + value);
+        const MethodRun run = runMethod(names[0], p, frames, spec.key + "=" + value, verbosity);
         sums.push_back(run.summary);
         const EvaluationSummary& s = sums.back();
         if (quiet) continue;

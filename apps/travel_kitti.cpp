@@ -6,8 +6,6 @@
 // both evaluation protocols, plus the median and max milliseconds of every stage.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +16,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
@@ -111,14 +110,20 @@ int run(int argc, char** argv) {
     constexpr int kNumStages = sizeof(stages) / sizeof(stages[0]);
     constexpr int kObjectsStage = 11;  // "objects_total"
     std::size_t unlabelled_frames = 0;
-    const bool verbose = !quiet;
-    const bool tty = isatty(fileno(stderr));
-    if (verbose)
+    const travel::apps::Verbosity verbosity =
+        travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
+    const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
+    // The per-frame lines replace the progress line.
+    travel::apps::ProgressLine progress(
+        "travel-kitti", files.size(), per_frame_lines ? travel::apps::Verbosity::Quiet : verbosity,
+        "scans");
+    if (per_frame_lines)
         std::printf("%-8s %7s %6s %5s %6s | %-23s | %-23s | %s\n", "frame", "points", "ground",
                     "clust", "ms", "ground A: P R F1 Acc", "ground B: P R F1 Acc",
                     "objects: OSE USE (sums) coverage purity");
 
     for (std::size_t f = 0; f < files.size(); ++f) {
+        travel::apps::throwIfInterrupted();  // the .label files written so far are complete
         const std::string stem = fs::path(files[f]).stem().string();
         std::string label_path;
         if (!labels_dir.empty()) {
@@ -131,9 +136,9 @@ int run(int argc, char** argv) {
         travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame,
                                     format);
         totals.add(frame);
-        if (const travel::MountNote& note = frame.segmentation.mount; note && verbose)
-            std::cerr << "travel-kitti: " << (note.isWarning() ? "warning: " : "") << note.message
-                      << "\n";
+        if (const travel::MountNote& note = frame.segmentation.mount; note && !quiet)
+            progress.note(std::string("travel-kitti: ") + (note.isWarning() ? "warning: " : "") +
+                          note.message);
         const travel::PointCloud& cloud = frame.cloud;
         const travel::eval::Segmentation& result = frame.segmentation;
 
@@ -163,7 +168,7 @@ int run(int argc, char** argv) {
         const bool scored = frame.scored;
         const travel::GroundScores* scores = frame.ground;
         const travel::ObjectScores& objects = frame.objects;
-        if (verbose) {
+        if (per_frame_lines) {
             std::printf("%-8s %7zu %6zu %5zu %6.2f", stem.c_str(), cloud.size(),
                         frame.count(travel::PointClass::Ground), std::size_t{frame.clusters},
                         t.ground_total + t.objects_total);
@@ -174,8 +179,6 @@ int run(int argc, char** argv) {
                 std::printf(" | %6.2f %6.2f  %5.3f %5.3f", objects.entropy.ose_sum,
                             objects.entropy.use_sum, objects.mean_coverage, objects.mean_purity);
             std::printf(!labels_dir.empty() && !scored ? " | (no .label file)\n" : "\n");
-        } else if (tty) {
-            std::fprintf(stderr, "\r[%zu/%zu] %s  ", f + 1, files.size(), stem.c_str());
         }
         if (csv_out) {
             csv_out << stem << ',' << cloud.size() << ','
@@ -201,9 +204,10 @@ int run(int argc, char** argv) {
             for (int s = 0; s < kNumStages; ++s) csv_out << ',' << stage_ms[s];
             csv_out << '\n';
         }
+        progress.update(f + 1);
     }
-    if (!verbose && tty) std::fprintf(stderr, "\n");
-    if (quiet) return 0;  // -q: nothing on stdout
+    progress.finish();
+    if (verbosity == travel::apps::Verbosity::Quiet) return 0;
 
     std::printf("\n%zu scans processed (method %s, preset %s), labels written to %s\n",
                 files.size(), method.getValue().c_str(), flags.config.preset.getValue().c_str(),

@@ -117,8 +117,8 @@ int run(int argc, char** argv) {
     o.poses = poses.getValue();
     o.calib = calib.getValue();
     o.max_frames = max_frames.getValue();
-    o.quiet = flags.quiet();
-    o.verbose = flags.verbose();
+    o.verbosity = travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
+    const bool print = o.verbosity != travel::apps::Verbosity::Quiet;
     std::vector<std::pair<double, double>> probes;
     for (const std::string& text : probe.getValue()) {
         double x = 0, y = 0;
@@ -129,7 +129,7 @@ int run(int argc, char** argv) {
     }
     if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
     const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
-    if (!note.empty() && !o.quiet) std::cerr << "travel-map: " << note << "\n";
+    if (!note.empty() && print) std::cerr << "travel-map: " << note << "\n";
 
     // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
     travel::Config defaults;
@@ -150,9 +150,7 @@ int run(int argc, char** argv) {
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    map.filter().setMinLoggingLevel(o.quiet     ? mrpt::system::LVL_ERROR  // -q: errors only
-                                    : o.verbose ? mrpt::system::LVL_DEBUG
-                                                : mrpt::system::LVL_INFO);
+    travel::apps::configureMrptLogging(map.filter(), o.verbosity, travel::apps::MrptLogRole::Notes);
     // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
     const std::string extension = fs::path(o.input).extension().string();
     const bool kitti = fs::is_directory(o.input) || extension == ".bin" || extension == ".pcd" ||
@@ -175,10 +173,6 @@ int run(int argc, char** argv) {
     else
         travel::apps::mapRawlog(o, map, stats, pose_file);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (stats.pose_source.rfind("none", 0) == 0 && !o.quiet)
-        std::cerr << "travel-map: warning: " << o.input
-                  << " has no robot poses (no actions, odometry or pose file): every frame is "
-                     "mapped at the identity pose\n";
     if (stats.inserted == 0 && stats.no_pose > 0)
         throw std::runtime_error(o.poses + ": no pose for any of the " +
                                  std::to_string(stats.no_pose) +
@@ -193,8 +187,10 @@ int run(int argc, char** argv) {
                                                        : fs::path(o.input).stem().string();
     const std::string prefix = (fs::path(o.output_dir) / name).string();
     const auto export_start = Clock::now();
-    std::vector<std::string> written = travel_mrpt::exportAll(map, prefix);
+    std::vector<std::string> written;
     {
+        const travel::apps::MuteLibraryStderr mute;  // liboctomap's " done." per tree write
+        written = travel_mrpt::exportAll(map, prefix);
         mrpt::io::CFileGZOutputStream out;
         const std::string path = prefix + ".travelmap";
         if (!out.open(path + ".part")) throw std::runtime_error(path + ": cannot write");
@@ -206,15 +202,17 @@ int run(int argc, char** argv) {
     const double export_seconds =
         std::chrono::duration<double>(Clock::now() - export_start).count();
 
-    if (!o.quiet) {
+    if (print) {
         std::size_t traversable = 0, obstacle = 0;
         for (std::size_t c = 0; c < map.grid().cellCount(); ++c) {
             traversable += map.state(long(c)) == travel::CellState::Traversable;
             obstacle += map.state(long(c)) == travel::CellState::Obstacle;
         }
         std::printf("travel-map: %s -> %s\n", o.input.c_str(), o.output_dir.c_str());
-        std::printf("  records: %zu, LiDAR frames mapped: %zu, rejected: %zu, without pose: %zu\n",
-                    stats.records, stats.inserted, stats.rejected, stats.no_pose);
+        std::printf("  records: %zu, LiDAR frames mapped: %zu, rejected: %zu", stats.records,
+                    stats.inserted, stats.rejected);
+        if (stats.no_pose) std::printf(", without pose: %zu", stats.no_pose);
+        std::printf("\n");
         std::printf("  poses: %s\n", stats.pose_source.c_str());
         std::printf(
             "  grid: %d x %d cells of %.3g m, observed %zu: traversable %zu, obstacle %zu\n",

@@ -100,7 +100,7 @@ int run(int argc, char** argv) {
     options.nav_config_file = config;
     options.timeout = timeout_arg.getValue();
     options.threshold_min_z = threshold_arg.getValue();
-    options.verbose = flags.verbose();
+    options.verbosity = travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     options.travel = configuration.travel;
     options.nav = configuration.nav;
     const auto footprint = footprintFromConfig(config);

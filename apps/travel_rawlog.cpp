@@ -36,7 +36,9 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "Interrupt.hpp"
 #include "MemoryLimit.hpp"
+#include "Progress.hpp"
 #include "RawlogJob.hpp"
 #include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
@@ -240,6 +242,9 @@ int run(int argc, char** argv) {
     auto reader = openInput(options);
     RawlogSegmenter segmenter(options, filter_options);
 
+    // The CSV and the label reference are written in place: an interrupted or failed run
+    // removes them, as it removes the partial rawlog (OUT.rawlog.part).
+    travel::apps::PartialOutput csv_guard(options.csv), reference_guard(options.label_reference);
     createParentDirectory(options.output);
     const std::string partial = options.output + ".part";
     mrpt::io::CFileGZOutputStream out_file;
@@ -247,11 +252,12 @@ int run(int argc, char** argv) {
     auto out = mrpt::serialization::archiveFrom(out_file);
 
     const auto start = Clock::now();
-    auto last_progress = start;
-    bool progress_shown = false;
+    travel::apps::ProgressLine progress(
+        "travel-rawlog", 0, travel::apps::verbosityFrom(options.quiet, options.verbose));
     std::vector<CObservation::Ptr> added;
     try {
         while (auto record = reader.next()) {
+            travel::apps::throwIfInterrupted();
             const long index = reader.index() - 1;
             segmenter.startRecord();
             added.clear();
@@ -273,17 +279,12 @@ int run(int argc, char** argv) {
                 out << *record;                    // copied unchanged
             }
 
-            if (!options.quiet && Clock::now() - last_progress > std::chrono::milliseconds(500)) {
-                last_progress = Clock::now();
-                const double s = std::chrono::duration<double>(last_progress - start).count();
-                std::fprintf(stderr, "\rtravel-rawlog: record %ld, %zu frames, %.1f frames/s   ",
-                             index + 1, segmenter.totals().frames, segmenter.totals().frames / s);
-                progress_shown = true;
-            }
+            progress.update(segmenter.totals().frames);
         }
         segmenter.finish();
+        progress.finish();
     } catch (...) {
-        if (progress_shown) std::fputc('\n', stderr);
+        progress.finish();
         out_file.close();
         std::error_code ec;
         fs::remove(partial, ec);  // never leave a half-written rawlog behind
@@ -296,12 +297,13 @@ int run(int argc, char** argv) {
         throw AppError(options.output + ": cannot rename from " + partial + ": " + ec.message());
 
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (progress_shown) std::fprintf(stderr, "\n");
     if (!options.quiet) printSummary(options, segmenter.totals(), reader.index(), seconds);
     if (segmenter.totals().frames == 0)
         throw AppError(options.input +
                        ": no LiDAR observation processed (check --sensor-label; "
                        "the output rawlog is a plain copy)");
+    csv_guard.commit();
+    reference_guard.commit();
     return 0;
 }
 

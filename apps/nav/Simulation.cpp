@@ -20,6 +20,7 @@
 
 #include <unistd.h>
 
+#include "Interrupt.hpp"
 #include "nav/Collision.hpp"
 #include "travel/EnumNames.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
@@ -162,31 +163,19 @@ std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
     return s;
 }
 
-/// The navigator, with its delay-statistics logger reachable: MRPT's CAbstractNavigator dumps
-/// that CTimeLogger's table at INFO level when it is destroyed.
+/// The navigator, with its loggers reachable: MRPT's CAbstractNavigator dumps its delay
+/// CTimeLogger's table at INFO level when it is destroyed.
 class Navigator : public mrpt::nav::CReactiveNavigationSystem3D {
   public:
     using CReactiveNavigationSystem3D::CReactiveNavigationSystem3D;
-    /// Only errors on the console (navigator, its time loggers, the robot interface).
-    void quiet(mrpt::system::COutputLogger& robot) {
-        setMinLoggingLevel(mrpt::system::LVL_ERROR);
-        m_timlog_delays.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-        m_navProfiler.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-        m_timelogger.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-        robot.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-    }
-};
-
-/// A scratch directory for the navigator's own files (PTG caches, its log), removed on exit.
-struct ScratchDir {
-    fs::path path;
-    explicit ScratchDir(const fs::path& p) : path(p) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
+    /// The apps' -q/-v rule for the navigator, its time loggers and the robot interface.
+    void setVerbosity(travel::apps::Verbosity verbosity, mrpt::system::COutputLogger& robot) {
+        for (mrpt::system::COutputLogger* logger :
+             {static_cast<mrpt::system::COutputLogger*>(this),
+              static_cast<mrpt::system::COutputLogger*>(&m_timlog_delays),
+              static_cast<mrpt::system::COutputLogger*>(&m_navProfiler),
+              static_cast<mrpt::system::COutputLogger*>(&m_timelogger), &robot})
+            travel::apps::configureMrptLogging(*logger, verbosity);
     }
 };
 
@@ -226,25 +215,28 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
     SimTravel segmenter(o.travel);  // validates (throws travel::ConfigError)
     auto source = makeSource(o);
 
-    // The navigator writes PTG caches and its log into a directory of its own.
+    // The navigator writes PTG caches and its log into a directory of its own, under TMPDIR
+    // (else /tmp), removed at the end, on errors and on Ctrl-C (travel::apps::TempDir).
     static int run_counter = 0;
-    const fs::path scratch_base = o.navlog_file.empty() ? fs::temp_directory_path()
-                                                        : fs::absolute(o.navlog_file).parent_path();
-    ScratchDir scratch(scratch_base / (".travel-nav-sim-" + std::to_string(::getpid()) + "-" +
-                                       std::to_string(run_counter++)));
+    const travel::apps::TempDir scratch(
+        fs::temp_directory_path() /
+        (".travel-nav-sim-" + std::to_string(::getpid()) + "-" + std::to_string(run_counter++)));
 
     mrpt::kinematics::CVehicleSimul_DiffDriven sim;
     sim.setCurrentGTPose(mrpt::math::TPose2D(world.start.x(), world.start.y(), world.start.z()));
     SimRobot robot(sim, *source);
     RunReport report;
     {
-        Navigator nav(robot, o.verbose, !o.navlog_file.empty(), (scratch.path / "log").string());
-        if (!o.verbose) nav.quiet(robot);
+        // The log file is enabled after the loggers are set: enabling it logs DEBUG lines.
+        Navigator nav(robot, o.verbosity == travel::apps::Verbosity::Verbose, false,
+                      (scratch.path() / "log").string());
+        nav.setVerbosity(o.verbosity, robot);
+        if (!o.navlog_file.empty()) nav.enableLogFile(true);
         {
             mrpt::config::CConfigFile cfg(o.nav_config_file);
             nav.loadConfigFile(cfg);
         }
-        nav.params_abstract_ptg_navigator.ptg_cache_files_directory = scratch.path.string();
+        nav.params_abstract_ptg_navigator.ptg_cache_files_directory = scratch.path().string();
         nav.initialize();
 
         mrpt::nav::CAbstractNavigator::TNavigationParams request;
@@ -264,8 +256,12 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         int steps = 0;
         const int max_steps = static_cast<int>(std::ceil(o.timeout / o.dt));
         Eigen::Vector2d last_xy = world.start.head<2>();
+        travel::apps::ProgressLine progress(std::string("travel-nav-sim: ") + toString(o.source), 0,
+                                            o.verbosity, "steps");
         for (;; ++steps) {
             const double t = sim.getTime();
+            progress.updateSimTime(std::size_t(steps), t, o.timeout);
+            travel::apps::throwIfInterrupted();  // unwinds: the scratch directory goes
             const mrpt::math::TPose2D p = sim.getCurrentGTPose();
             double z = 0.0;
             const Eigen::Matrix3d R =
@@ -343,7 +339,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
     }  // the navigator closes its log here
 
     if (!o.navlog_file.empty()) {
-        const fs::path produced = scratch.path / "log" / "log_000.reactivenavlog";
+        const fs::path produced = scratch.path() / "log" / "log_000.reactivenavlog";
         if (!fs::is_regular_file(produced))
             throw std::runtime_error("the navigator wrote no log (expected " + produced.string() +
                                      ")");

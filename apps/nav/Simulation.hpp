@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <memory>
+#include "Progress.hpp"
 #include "nav/World.hpp"
 
 #include "travel/Config.hpp"
@@ -56,7 +57,9 @@ struct SimOptions {
     double raw_min_z = 0.03;        ///< [m] raw source: noise margin above the robot's base
     double threshold_min_z = 0.25;  ///< [m] height-threshold source
     std::string navlog_file;        ///< write the navigator's .reactivenavlog here (empty: no)
-    bool verbose = false;           ///< navigator console output
+    /// Console: MRPT's navigator messages (travel::apps::configureMrptLogging) and the progress
+    /// line (simulated time). Quiet by default (tests, library use).
+    travel::apps::Verbosity verbosity = travel::apps::Verbosity::Quiet;
 
     static sim::LidarModel defaultLidar();
     static travel::NavSection defaultNav() {

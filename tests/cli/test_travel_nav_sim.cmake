@@ -6,7 +6,10 @@ file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
 # A few simulated seconds on the small flat world, outputs in the current directory.
-execute_process(COMMAND ${TRAVEL_NAV_SIM} -i flat_obstacles.world --timeout 4
+# Its scratch folder goes under TMPDIR (checked below).
+file(MAKE_DIRECTORY ${WORK_DIR}/tmp)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env TMPDIR=${WORK_DIR}/tmp
+  ${TRAVEL_NAV_SIM} -i flat_obstacles.world --timeout 4
   WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "travel-nav-sim failed:\n${out}${err}")
@@ -26,7 +29,8 @@ string(FIND "${out}" "travel    timeout" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "no per-run summary line:\n${out}")
 endif()
-file(GLOB leftovers ${WORK_DIR}/.travel-nav-sim-* ${WORK_DIR}/*.part)
+file(GLOB leftovers ${WORK_DIR}/.travel-nav-sim-* ${WORK_DIR}/tmp/.travel-nav-sim-*
+     ${WORK_DIR}/*.part)
 if(leftovers)
   message(FATAL_ERROR "scratch files left behind: ${leftovers}")
 endif()

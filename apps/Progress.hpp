@@ -1,0 +1,101 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// The apps' one progress line and their console rules: -q prints nothing but errors, -v adds
+// details (and MRPT's DEBUG lines); on a terminal (stderr is a tty) the progress is one line
+// redrawn with '\r', elsewhere (pipe, CI log) a plain line every ~10 % or ~5 s.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace mrpt::system {
+class COutputLogger;
+}
+
+namespace travel::apps {
+
+/// -q / (nothing) / -v.
+enum class Verbosity { Quiet, Normal, Verbose };
+
+/// -q wins over -v (a script asked for silence).
+inline Verbosity verbosityFrom(bool quiet, bool verbose) {
+    return quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
+}
+
+/// Whose messages an mrpt::system::COutputLogger carries.
+enum class MrptLogRole {
+    Library,  ///< MRPT's own objects (navigator, time loggers): internal chatter at INFO
+    Notes     ///< our TravelFilter: its INFO lines are notes for the user ("not deskewed")
+};
+
+/// The one rule for MRPT's console output (MRPT 2.5 has no global level: every logger is set
+/// one by one): nothing but errors with -q, DEBUG lines only with -v, else warnings and above
+/// (INFO and above for our filter's notes).
+void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosity,
+                          MrptLogRole role = MrptLogRole::Library);
+
+/// Silences, while it lives, what a library writes straight to stderr with no logger to set:
+/// liboctomap 1.9.7 prints " done." on every binary tree write (.bt exports, the serialized
+/// map). Our own errors travel as exceptions, so nothing of ours is lost.
+class MuteLibraryStderr {
+  public:
+    MuteLibraryStderr();
+    ~MuteLibraryStderr();
+    MuteLibraryStderr(const MuteLibraryStderr&) = delete;
+    MuteLibraryStderr& operator=(const MuteLibraryStderr&) = delete;
+
+  private:
+    int saved_fd_ = -1;
+};
+
+/// What the progress line shows at one moment.
+struct ProgressState {
+    std::size_t done = 0;   ///< frames (or records) finished
+    std::size_t total = 0;  ///< 0: unknown
+    double elapsed = 0;     ///< [s] wall time since the start
+    /// Simulated time (travel-nav-sim): shown instead of frames when sim_total > 0.
+    double sim_time = 0, sim_total = 0;
+};
+
+/// "12/100 frames, 8.3 frames/s, ETA 10.6 s" (k/N, rate, remaining time when N is known), or
+/// "t = 12.3 / 60 s, 2.1x real time" with a simulated time. `unit` names what is counted.
+std::string formatProgress(const ProgressState& state, const std::string& unit = "frames");
+
+/// "42 s", "3 min 05 s", "1 h 02 min".
+std::string formatDuration(double seconds);
+
+/// One progress display on stderr. update() is cheap when nothing is due (one clock read).
+/// Nothing at all with Verbosity::Quiet. finish() (or the destructor) ends the line.
+class ProgressLine {
+  public:
+    ProgressLine(std::string label, std::size_t total, Verbosity verbosity,
+                 std::string unit = "frames");
+    ~ProgressLine();
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    void update(std::size_t done);
+    /// travel-nav-sim: `done` steps, simulated time `t` of `t_total` seconds.
+    void updateSimTime(std::size_t done, double t, double t_total);
+    void setTotal(std::size_t total) { state_.total = total; }
+    /// Prints `line` (a warning) on stderr on a line of its own, even with -q, the progress line
+    /// going on below it.
+    void note(const std::string& line);
+    /// Draws the last state (a terminal) and ends the line; idempotent.
+    void finish();
+
+  private:
+    enum class Mode { Off, Terminal, Log };
+    void maybeDraw(bool force);
+    void draw();
+
+    std::string label_, unit_;
+    Mode mode_;
+    ProgressState state_;
+    std::chrono::steady_clock::time_point start_, last_draw_;
+    bool printed_ = false;  ///< at least one line was written
+    double next_fraction_ = 0.1;
+};
+
+}  // namespace travel::apps
