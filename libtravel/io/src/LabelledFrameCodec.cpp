@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <type_traits>
 
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
@@ -86,34 +87,52 @@ Eigen::Vector3f readVec3(ByteSource& in, const char* what) {
     return v;
 }
 
-void writeCluster(ByteSink& out, const ClusterSummary& c) {
-    writePod(out, c.id);
-    writePod(out, c.num_points);
-    writePod(out, c.first_point);
-    writeVec3(out, c.centroid);
-    writeVec3(out, c.aabb_min);
-    writeVec3(out, c.aabb_max);
-    writePod(out, c.obb_yaw);
-    writeVec3(out, c.obb_center);
-    writeVec3(out, c.obb_extent);
-    writePod(out, c.ground_z);
-    writePod(out, c.height_above_ground);
+// The two directions of one wire layout: each record's fields are listed once (clusterFields,
+// nodePlaneFields) and visited by a FieldIo, which writes the fields of a const record to `out`
+// and reads those of a mutable one from `in`, so writing and reading cannot drift apart.
+struct FieldIo {
+    ByteSink* out = nullptr;
+    ByteSource* in = nullptr;
+    template <typename T>
+    void operator()(T& value, const char* what) {
+        using Value = std::remove_const_t<T>;
+        constexpr bool kVector = std::is_same_v<Value, Eigen::Vector3f>;
+        if constexpr (std::is_const_v<T>) {
+            if constexpr (kVector)
+                writeVec3(*out, value);
+            else
+                writePod(*out, value);
+        } else {
+            if constexpr (kVector)
+                value = readVec3(*in, what);
+            else
+                value = readPod<Value>(*in, what);
+        }
+    }
+};
+
+template <class Cluster>  // const ClusterSummary: written, ClusterSummary: read
+void clusterFields(FieldIo io, Cluster& c) {
+    io(c.id, "cluster id");
+    io(c.num_points, "cluster size");
+    io(c.first_point, "cluster first point");
+    io(c.centroid, "cluster centroid");
+    io(c.aabb_min, "cluster box");
+    io(c.aabb_max, "cluster box");
+    io(c.obb_yaw, "cluster yaw");
+    io(c.obb_center, "cluster oriented box");
+    io(c.obb_extent, "cluster oriented box");
+    io(c.ground_z, "cluster ground height");
+    io(c.height_above_ground, "cluster height");
 }
 
-ClusterSummary readCluster(ByteSource& in) {
-    ClusterSummary c;
-    c.id = readPod<uint32_t>(in, "cluster id");
-    c.num_points = readPod<uint32_t>(in, "cluster size");
-    c.first_point = readPod<uint32_t>(in, "cluster first point");
-    c.centroid = readVec3(in, "cluster centroid");
-    c.aabb_min = readVec3(in, "cluster box");
-    c.aabb_max = readVec3(in, "cluster box");
-    c.obb_yaw = readPod<float>(in, "cluster yaw");
-    c.obb_center = readVec3(in, "cluster oriented box");
-    c.obb_extent = readVec3(in, "cluster oriented box");
-    c.ground_z = readPod<float>(in, "cluster ground height");
-    c.height_above_ground = readPod<float>(in, "cluster height");
-    return c;
+// A node: index, class and flags (checked on reading), then these plane fields.
+template <class Node>  // const TerrainNodeRecord: written, TerrainNodeRecord: read
+void nodePlaneFields(FieldIo io, Node& n) {
+    io(n.normal, "node normal");
+    io(n.d, "node plane");
+    io(n.corner_z, "node corners");
+    io(n.mean, "node mean");
 }
 
 void writeNode(ByteSink& out, const TerrainNodeRecord& n) {
@@ -121,10 +140,7 @@ void writeNode(ByteSink& out, const TerrainNodeRecord& n) {
     writePod(out, static_cast<uint8_t>(n.node_class));
     writePod(out,
              uint8_t((n.traversable ? kTraversableFlag : 0) | (n.refitted ? kRefittedFlag : 0)));
-    writeVec3(out, n.normal);
-    writePod(out, n.d);
-    writeVec3(out, n.corner_z);
-    writeVec3(out, n.mean);
+    nodePlaneFields(FieldIo{&out, nullptr}, n);
 }
 
 TerrainNodeRecord readNode(ByteSource& in) {
@@ -139,10 +155,7 @@ TerrainNodeRecord readNode(ByteSource& in) {
     if (flags & ~(kTraversableFlag | kRefittedFlag)) corrupt("node flags " + std::to_string(flags));
     n.traversable = flags & kTraversableFlag;
     n.refitted = flags & kRefittedFlag;
-    n.normal = readVec3(in, "node normal");
-    n.d = readPod<float>(in, "node plane");
-    n.corner_z = readVec3(in, "node corners");
-    n.mean = readVec3(in, "node mean");
+    nodePlaneFields(FieldIo{nullptr, &in}, n);
     return n;
 }
 
@@ -169,7 +182,7 @@ void readFrame(ByteSource& in, LabelledFrame& f, std::size_t max_points) {
     f.clusters.clear();
     f.clusters.reserve(std::min<std::size_t>(num_clusters, kReadSlice));
     for (uint32_t k = 0; k < num_clusters; ++k) {
-        f.clusters.push_back(readCluster(in));
+        clusterFields(FieldIo{nullptr, &in}, f.clusters.emplace_back());
         if (f.clusters.back().id != k + 1)
             corrupt("cluster " + std::to_string(k) + " has id " +
                     std::to_string(f.clusters.back().id) + " (expected " + std::to_string(k + 1) +
@@ -249,7 +262,7 @@ void writeLabelledFrame(ByteSink& out, const LabelledFrame& f) {
     writePodArray(out, f.clusterId);
 
     writePod(out, static_cast<uint32_t>(f.clusters.size()));
-    for (const ClusterSummary& c : f.clusters) writeCluster(out, c);
+    for (const ClusterSummary& c : f.clusters) clusterFields(FieldIo{&out, nullptr}, c);
 
     writePod(out, f.terrain.resolution);
     writePod(out, f.terrain.cells_per_side);
