@@ -6,7 +6,7 @@
 #      MRPT itself is not instrumented, and MRPT's own apps cannot load a sanitized plugin, so
 #      the rawlog-edit / RawLogViewer checks run in step 2 only), and the multi-threaded test
 #      under ThreadSanitizer (./build-tsan)
-#   4. libFuzzer targets, 60 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
+#   4. libFuzzer targets, 30 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
 # Tests that need the real scans (SemanticKITTI etc., TRAVEL_DATA_DIR) skip with a message when absent.
 set -euo pipefail
@@ -43,8 +43,8 @@ TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_robustness --gtest_filter='*T
 
 # Bounded fuzzing of every reader and the segmentation entry point (scripts/run-fuzzers.sh;
 # longer runs: scripts/run-fuzzers.sh 3600).
-log "fuzzing: ${TRAVEL_FUZZ_SECONDS:-60} s per target"
-bash "$ROOT_DIR/scripts/run-fuzzers.sh" "${TRAVEL_FUZZ_SECONDS:-60}"
+log "fuzzing: ${TRAVEL_FUZZ_SECONDS:-30} s per target"
+bash "$ROOT_DIR/scripts/run-fuzzers.sh" "${TRAVEL_FUZZ_SECONDS:-30}"
 
 if command -v clang-format >/dev/null 2>&1; then
   log "clang-format check"
