@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "CommandLineParser.hpp"
-#include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
 #include "Interrupt.hpp"
+#include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
 #include "travel/Config.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"

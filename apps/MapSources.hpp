@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
-#include "travel/io/ScanIO.hpp"
 #include "Progress.hpp"
+#include "travel/io/ScanIO.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
