@@ -107,11 +107,14 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
                                                : "none (identity poses)";
 }
 
-void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-              std::optional<PoseFileSource> pose_file) {
-    const travel::ScanList scans = travel::listScans(o.input, o.format);
+fs::path sequenceFolder(const travel::ScanList& scans, const std::string& input) {
+    return scans.sequence_dir.empty() ? input : scans.sequence_dir;
+}
+
+void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTraversabilityMap& map,
+              Stats& stats, std::optional<PoseFileSource> pose_file) {
     const std::vector<std::string>& files = scans.files;
-    const fs::path dir(scans.sequence_dir.empty() ? o.input : scans.sequence_dir);
+    const fs::path dir = sequenceFolder(scans, o.input);
     std::string calib = o.calib;
     if (calib.empty() && fs::exists(dir / "calib.txt")) calib = (dir / "calib.txt").string();
     if (pose_file && !pose_file->trajectory.timed() && o.verbosity != Verbosity::Quiet) {

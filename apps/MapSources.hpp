@@ -7,6 +7,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "MemoryLimit.hpp"
 #include "Progress.hpp"
 #include "travel/io/ScanIO.hpp"
+#include "travel/io/ScanList.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
@@ -44,8 +46,12 @@ struct PoseFileSource {
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
                const std::optional<PoseFileSource>& pose_file);
 
-/// Maps the scans of o.input, a KITTI sequence folder or a folder of scans (travel::listScans).
-void mapKitti(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-              std::optional<PoseFileSource> pose_file);
+/// The folder whose poses.txt and calib.txt go with `scans` (travel::listScans(input)): the
+/// KITTI sequence folder, also when `input` is its velodyne/ folder, else `input` itself.
+std::filesystem::path sequenceFolder(const travel::ScanList& scans, const std::string& input);
+
+/// Maps `scans`, those of o.input (a KITTI sequence folder or a folder of scans).
+void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTraversabilityMap& map,
+              Stats& stats, std::optional<PoseFileSource> pose_file);
 
 }  // namespace travel::apps

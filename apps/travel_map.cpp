@@ -155,10 +155,13 @@ int run(int argc, char** argv) {
     const std::string extension = fs::path(o.input).extension().string();
     const bool kitti = fs::is_directory(o.input) || extension == ".bin" || extension == ".pcd" ||
                        extension == ".ply";
+    std::optional<travel::ScanList> scans;
+    if (kitti) scans = travel::listScans(o.input, o.format);
     std::string pose_path = o.poses;
-    if (pose_path.empty() && fs::is_directory(o.input) &&
-        fs::exists(fs::path(o.input) / "poses.txt"))
-        pose_path = (fs::path(o.input) / "poses.txt").string();
+    // A folder's poses.txt (not a single scan's: KITTI poses go by frame index).
+    const fs::path sequence = kitti ? travel::apps::sequenceFolder(*scans, o.input) : fs::path();
+    if (pose_path.empty() && fs::is_directory(o.input) && fs::exists(sequence / "poses.txt"))
+        pose_path = (sequence / "poses.txt").string();
     std::optional<PoseFileSource> pose_file;
     if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
     o.poses = pose_path;
@@ -169,7 +172,7 @@ int run(int argc, char** argv) {
 
     Stats stats;
     if (kitti)
-        travel::apps::mapKitti(o, map, stats, pose_file);
+        travel::apps::mapKitti(o, *scans, map, stats, pose_file);
     else
         travel::apps::mapRawlog(o, map, stats, pose_file);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();

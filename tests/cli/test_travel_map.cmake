@@ -103,6 +103,15 @@ if(EXISTS ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
     message(FATAL_ERROR "KITTI with poses: summary mentions 'without pose':\n${last_output}")
   endif()
   expect_exports(${WORK_DIR}/kitti_posed_out kitti_posed)
+  # -i naming the sequence's velodyne/ folder finds the same poses.txt and calib.txt.
+  expect_success(${TRAVEL_MAP} -i ${seq}/velodyne -o ${WORK_DIR}/kitti_posed_velodyne
+                 --extent " -40,50,-40,40" --resolution 0.5)
+  foreach(needle "poses: pose file ${seq}/poses.txt" "LiDAR frames mapped: 2, rejected: 0")
+    string(FIND "${last_output}" "${needle}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "KITTI velodyne/ folder: '${needle}' not in the summary:\n${last_output}")
+    endif()
+  endforeach()
   # poses.txt with a wrong column count is an error naming the file and line.
   file(WRITE ${seq}/poses.txt "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n")
   expect_failure_mentioning("poses.txt:2" ${TRAVEL_MAP} -i ${seq} -o ${WORK_DIR}/kitti_posed_bad)
