@@ -96,7 +96,9 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             observation(obs);
         else
             motion.process(*record);  // odometry actions
-        progress.update(stats.inserted);
+        // With --max-frames, the end may come before the end of the file.
+        const double frames = o.max_frames > 0 ? double(stats.inserted) / double(o.max_frames) : 0;
+        progress.update(stats.inserted, std::max(reader.fractionRead(), frames));
         throwIfInterrupted();  // nothing is written before the map is complete
     }
     progress.finish();

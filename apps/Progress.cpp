@@ -5,6 +5,7 @@
 #include <mrpt/system/COutputLogger.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -61,10 +62,19 @@ std::string formatProgress(const ProgressState& p, const std::string& unit) {
     std::string s =
         p.total ? std::to_string(p.done) + "/" + std::to_string(p.total) : std::to_string(p.done);
     s += " " + unit;
+    const bool by_fraction = !p.total && p.fraction >= 0;
+    const double fraction = std::min(p.fraction, 1.0);
+    if (by_fraction) {
+        std::snprintf(text, sizeof text, ", %d %%", int(fraction * 100));  // 100 % only at the end
+        s += text;
+    }
     if (p.elapsed > 0 && p.done > 0) {
         std::snprintf(text, sizeof text, ", %.1f %s/s", rate, unit.c_str());
         s += text;
         if (p.total > p.done) s += ", ETA " + formatDuration(double(p.total - p.done) / rate);
+        // The rest of the input at the pace of the part read.
+        if (by_fraction && fraction > 0 && fraction < 1)
+            s += ", ETA " + formatDuration(p.elapsed * (1 - fraction) / fraction);
     }
     return s;
 }
@@ -90,6 +100,11 @@ void ProgressLine::update(std::size_t done) {
     maybeDraw(false);
 }
 
+void ProgressLine::update(std::size_t done, double fraction) {
+    state_.fraction = fraction;
+    update(done);
+}
+
 void ProgressLine::updateSimTime(std::size_t done, double t, double t_total) {
     state_.done = done;
     state_.sim_time = t;
@@ -108,7 +123,7 @@ void ProgressLine::maybeDraw(bool force) {
         // A log: every ~10 % of a known total, else every ~5 s.
         const double fraction = state_.sim_total > 0 ? state_.sim_time / state_.sim_total
                                 : state_.total       ? double(state_.done) / double(state_.total)
-                                                     : -1.0;
+                                                     : state_.fraction;
         const bool step = fraction >= next_fraction_;
         if (!force && !step && since_draw < 5.0) return;
         while (fraction >= next_fraction_) next_fraction_ += 0.1;

@@ -53,13 +53,16 @@ class MuteLibraryStderr {
 struct ProgressState {
     std::size_t done = 0;   ///< frames (or records) finished
     std::size_t total = 0;  ///< 0: unknown
-    double elapsed = 0;     ///< [s] wall time since the start
+    /// Of the input read (bytes of a rawlog or capture) when `total` is unknown; < 0: unknown.
+    double fraction = -1;
+    double elapsed = 0;  ///< [s] wall time since the start
     /// Simulated time (travel-nav-sim): shown instead of frames when sim_total > 0.
     double sim_time = 0, sim_total = 0;
 };
 
-/// "12/100 frames, 8.3 frames/s, ETA 10.6 s" (k/N, rate, remaining time when N is known), or
-/// "t = 12.3 / 60 s, 2.1x real time" with a simulated time. `unit` names what is counted.
+/// "12/100 frames, 8.3 frames/s, ETA 10.6 s" (k/N, rate, remaining time when N is known),
+/// "12 frames, 37 %, 8.3 frames/s, ETA 6.8 s" (the fraction of the input read, when N is not),
+/// or "t = 12.3 / 60 s, 2.1x real time" with a simulated time. `unit` names what is counted.
 std::string formatProgress(const ProgressState& state, const std::string& unit = "frames");
 
 /// "42 s", "3 min 05 s", "1 h 02 min".
@@ -76,6 +79,9 @@ class ProgressLine {
     ProgressLine& operator=(const ProgressLine&) = delete;
 
     void update(std::size_t done);
+    /// The number of frames unknown: `fraction` of the input read (RawlogReader::fractionRead;
+    /// < 0: unknown) gives the percentage and the ETA.
+    void update(std::size_t done, double fraction);
     /// travel-nav-sim: `done` steps, simulated time `t` of `t_total` seconds.
     void updateSimTime(std::size_t done, double t, double t_total);
     void setTotal(std::size_t total) { state_.total = total; }

@@ -279,7 +279,7 @@ int run(int argc, char** argv) {
                 out << *record;                    // copied unchanged
             }
 
-            progress.update(segmenter.totals().frames);
+            progress.update(segmenter.totals().frames, reader.fractionRead());
         }
         segmenter.finish();
         progress.finish();

@@ -57,3 +57,27 @@ TEST(Progress, QuietWinsOverVerbose) {
     EXPECT_EQ(verbosityFrom(false, true), Verbosity::Verbose);
     EXPECT_EQ(verbosityFrom(false, false), Verbosity::Normal);
 }
+
+TEST(Progress, FractionOfTheInputGivesPercentAndEta) {
+    ProgressState s;
+    s.done = 10, s.fraction = 0.25, s.elapsed = 2.0;  // a quarter in 2 s: 6 s to go
+    EXPECT_EQ(formatProgress(s), "10 frames, 25 %, 5.0 frames/s, ETA 6.0 s");
+    s.fraction = 0.999;  // 100 % only at the end
+    EXPECT_EQ(formatProgress(s), "10 frames, 99 %, 5.0 frames/s, ETA 0.0 s");
+    s.fraction = 1.0;
+    EXPECT_EQ(formatProgress(s), "10 frames, 100 %, 5.0 frames/s");
+}
+
+TEST(Progress, FractionBeforeTheFirstFrameHasNoRate) {
+    ProgressState s;
+    s.fraction = 0.05, s.elapsed = 1.0;
+    EXPECT_EQ(formatProgress(s), "0 frames, 5 %");
+}
+
+TEST(Progress, UnknownFractionOrKnownTotalShowsNoPercent) {
+    ProgressState s;
+    s.done = 12, s.elapsed = 4.0, s.fraction = -1;  // a gzip rawlog without /proc
+    EXPECT_EQ(formatProgress(s), "12 frames, 3.0 frames/s");
+    s.total = 24, s.fraction = 0.9;  // the count wins
+    EXPECT_EQ(formatProgress(s), "12/24 frames, 3.0 frames/s, ETA 4.0 s");
+}

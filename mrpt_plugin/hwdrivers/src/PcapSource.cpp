@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "travel/Errors.hpp"
+#include "travel/io/OpenFileOffset.hpp"
 #include "travel/io/PcapFile.hpp"
 #include "travel/io/VelodyneModels.hpp"
 
@@ -53,7 +54,8 @@ bool isPcapFile(const std::string& path) {
 struct PcapSource::Driver {
     mrpt::hwdrivers::CVelodyneScanner scanner;
     std::optional<mrpt::system::TTimeStamp> capture_start;
-    std::optional<uint32_t> first_gps_us;  // the sensor clock at capture_start
+    std::optional<uint32_t> first_gps_us;              // the sensor clock at capture_start
+    std::optional<travel::io::OpenFileOffset> offset;  // libpcap's, once it opened the file
 };
 
 PcapSource::PcapSource(const std::string& path, const PcapSourceOptions& options)
@@ -128,6 +130,11 @@ PcapSource::PcapSource(const std::string& path, const PcapSourceOptions& options
         throw travel::InputError(path + ": cannot open as a pcap capture: " +
                                  (eol == std::string::npos ? what : what.substr(0, eol)));
     }
+    driver_->offset.emplace(path);
+}
+
+double PcapSource::fractionRead() const {
+    return driver_->offset->fraction();
 }
 
 PcapSource::~PcapSource() = default;

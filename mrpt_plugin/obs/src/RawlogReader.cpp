@@ -5,10 +5,13 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
+#include <fstream>
 #include <new>
+#include <optional>
 #include <sstream>
 
 #include "travel/Errors.hpp"
+#include "travel/io/OpenFileOffset.hpp"
 
 namespace fs = std::filesystem;
 
@@ -35,6 +38,7 @@ std::string mrptMessage(const std::string& text) {
 struct RawlogReader::Stream {
     mrpt::io::CFileGZInputStream file;
     mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive{file};
+    std::optional<travel::io::OpenFileOffset> gzip_offset;
 };
 
 RawlogReader::RawlogReader(const std::string& path) : path_(path), stream_(new Stream) {
@@ -43,6 +47,17 @@ RawlogReader::RawlogReader(const std::string& path) : path_(path), stream_(new S
     if (fs::is_directory(path, ec))
         throw travel::InputError(path + ": is a directory, not a rawlog");
     if (!stream_->file.open(path)) throw travel::InputError(path + ": cannot open for reading");
+    char magic[2] = {};
+    std::ifstream(path, std::ios::binary).read(magic, 2);
+    if (magic[0] == '\x1f' && magic[1] == '\x8b') stream_->gzip_offset.emplace(path);
+}
+
+double RawlogReader::fractionRead() const {
+    // MRPT 2.5.8: a gzip stream's getPosition() is the uncompressed offset (zlib's gztell),
+    // its getTotalBytesCount() the compressed size: the descriptor's offset instead.
+    if (stream_->gzip_offset) return stream_->gzip_offset->fraction();
+    const auto size = stream_->file.getTotalBytesCount();
+    return size ? double(stream_->file.getPosition()) / double(size) : -1.0;
 }
 
 RawlogReader::~RawlogReader() = default;

@@ -57,6 +57,8 @@ class PcapSource {
     /// capture time of the first packet plus the sensor's own microsecond clock.
     mrpt::obs::CObservationVelodyneScan::Ptr next();
 
+    /// Bytes of the capture read so far over its size, in [0, 1]; -1 when unknown.
+    double fractionRead() const;
     /// Frames returned so far, and partial rotations dropped.
     std::size_t frames() const { return frames_; }
     std::size_t droppedPartialFrames() const { return dropped_; }

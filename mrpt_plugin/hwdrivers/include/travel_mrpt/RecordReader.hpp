@@ -29,6 +29,8 @@ class RecordReader {
     /// The next record (rawlog) or rotation (capture), or null at the end.
     std::shared_ptr<mrpt::serialization::CSerializable> next();
 
+    /// Bytes read over the input's size, in [0, 1]; -1 when unknown.
+    double fractionRead() const { return pcap_ ? pcap_->fractionRead() : rawlog_->fractionRead(); }
     /// Records read so far.
     long index() const { return pcap_ ? static_cast<long>(pcap_->frames()) : rawlog_->index(); }
     bool isPcap() const { return pcap_ != nullptr; }

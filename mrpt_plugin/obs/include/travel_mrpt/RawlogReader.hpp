@@ -47,6 +47,9 @@ class RawlogReader {
     /// MRPT rawlog, or a corrupt gzip stream)".
     std::shared_ptr<mrpt::serialization::CSerializable> next();
 
+    /// Bytes read over the file size, in [0, 1] (of the compressed bytes for a gzip rawlog);
+    /// -1 when unknown. For a progress fraction and ETA.
+    double fractionRead() const;
     /// Records read so far (the index of the next record).
     long index() const { return index_; }
     const std::string& path() const { return path_; }
