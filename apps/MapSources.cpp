@@ -13,6 +13,7 @@
 #include "Interrupt.hpp"
 #include "Progress.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -60,12 +61,17 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     travel_mrpt::RawlogMotion motion(map.filter());
     ProgressLine progress("travel-map", 0, o.verbosity);
     bool warned_no_pose = false;
+    std::size_t lidar_seen = 0;
     // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
     // the robot pose, anything else is a LiDAR candidate.
     const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
         if (!obs || motion.process(*obs)) return;
+        // An untimed (KITTI) pose file is indexed by LiDAR frame: count every LiDAR observation,
+        // also those without a pose or rejected, so one bad frame does not shift the rest.
+        const std::size_t frame = lidar_seen;
+        if (travel_mrpt::isLidarObservation(*obs)) ++lidar_seen;
         const std::optional<CPose3D> pose =
-            pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), stats.lidar)
+            pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), frame)
                       : motion.robotPose();
         if (pose_file && !pose) {
             ++stats.no_pose;
