@@ -2,9 +2,9 @@
 //
 // Shared by the apps: the one command-line dialect (docs/cli.md), declared here once:
 // CommonFlags (-i/-o/-f/-q/-v and the configuration flags), PictureFlags (--mpp, --size),
-// MemoryLimitFlag, the parameter sources in their documented order, and main()'s one-line error
-// reporting. The parser itself (CommandLine: version, examples, "did you mean") is in
-// CommandLineParser.hpp.
+// MaxFramesFlag, MemoryLimitFlag (createFolder and AppError: OutputFolder.hpp), the parameter
+// sources in their documented order, and main()'s one-line error reporting. The parser itself
+// (CommandLine: version, examples, "did you mean") is in CommandLineParser.hpp.
 #pragma once
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -20,6 +20,7 @@
 #include "CommandLineParser.hpp"
 #include "Interrupt.hpp"
 #include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
+#include "OutputFolder.hpp"
 #include "travel/Config.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
@@ -56,24 +57,6 @@ inline void applyConfigSources(const std::string& config_file,
     if (!config_file.empty()) applyConfigFile(config_file, config);
     for (const std::string& kv : overrides) applyConfigOverride(kv, config);  // errors quote kv
     config.validate();
-}
-
-/// The whole configuration of an app: --preset (none: defaults), --config, each --set.
-inline Config loadAppConfig(const std::string& preset, const std::string& config_file,
-                            const std::vector<std::string>& overrides) {
-    Config config = preset.empty() ? Config() : loadPresetConfig(preset);
-    applyConfigSources(config_file, overrides, config);
-    return config;
-}
-
-/// The same for the apps that run the ground segmentation only: the other sections of the file
-/// are checked and ignored.
-inline void applyParamSources(const std::string& config_file,
-                              const std::vector<std::string>& overrides, Params& params) {
-    Config config;
-    config.travel = params;
-    applyConfigSources(config_file, overrides, config);
-    params = config.travel;
 }
 
 /// Every app's --print-config switch: every section with its documentation, as YAML that
@@ -248,6 +231,27 @@ struct PictureFlags {
         if (size.getValue() < 64 || size.getValue() > 8192)
             throw usageError("--size must be in [64, 8192]");
         return size.getValue();
+    }
+};
+
+/// --max-frames N, for the apps that read a sequence: the first N frames, 0 (the default) = all;
+/// a negative N is a usage error.
+struct MaxFramesFlag {
+    mutable TCLAP::ValueArg<long> arg;  // TCLAP's getValue() is not const
+    /// `what`: the frames as the app's --help names them ("scans", "labelled frames").
+    MaxFramesFlag(CommandLine& line, const std::string& what)
+        : arg("", "max-frames", "Process at most the first N " + what + " (0 = all, the default)",
+              false, 0, "N", line.cmd) {
+        line.checks.push_back([this] {
+            if (arg.getValue() < 0) throw usageError("--max-frames must be >= 0 (0 = all)");
+        });
+    }
+    /// N, 0 = all.
+    long count() const { return arg.getValue(); }
+    /// Keeps the first N of `items` (all when N is 0).
+    template <class T>
+    void keepFirst(std::vector<T>& items) const {
+        if (count() > 0 && items.size() > static_cast<std::size_t>(count())) items.resize(count());
     }
 };
 

@@ -18,7 +18,8 @@ namespace travel::apps {
 /// -q / (nothing) / -v.
 enum class Verbosity { Quiet, Normal, Verbose };
 
-/// -q wins over -v (a script asked for silence).
+/// CommonFlags rejects -q with -v as a usage error; should both still arrive (a caller that
+/// skips that check), -q wins: a script asked for silence.
 inline Verbosity verbosityFrom(bool quiet, bool verbose) {
     return quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
 }

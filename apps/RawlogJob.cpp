@@ -19,13 +19,6 @@ using travel::PointClass;
 
 namespace travel::apps {
 
-void createParentDirectory(const std::string& path) {
-    const fs::path parent = fs::path(path).parent_path();
-    std::error_code ec;
-    if (!parent.empty()) fs::create_directories(parent, ec);
-    if (ec) throw AppError(parent.string() + ": cannot create directory: " + ec.message());
-}
-
 namespace {
 
 /// The colour of point i (0xRRGGBB) as in the bird's-eye pictures and RawLogViewer, or
@@ -78,7 +71,7 @@ void writePly(const std::string& path, const travel::AlignedCloud& aligned,
 
 CsvLog::CsvLog(const std::string& path) : path_(path) {
     if (path.empty()) return;
-    createParentDirectory(path);
+    createParentFolder(path);
     file_.open(path);
     if (!file_) throw AppError(path + ": cannot open for writing");
     file_ << "frame,timestamp,sensor_label,points,invalid,ground,nonground,outlier,clusters,"
@@ -108,7 +101,7 @@ void CsvLog::add(std::size_t frame, const mrpt::obs::CObservation& obs,
 
 ReferenceLog::ReferenceLog(const std::string& path) : path_(path) {
     if (path.empty()) return;
-    createParentDirectory(path);
+    createParentFolder(path);
     file_.open(path);
     if (!file_) throw AppError(path + ": cannot open for writing");
     travel::label_reference::writeHeader(file_);

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "MemoryLimit.hpp"
+#include "OutputFolder.hpp"
 #include "Progress.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
@@ -37,17 +38,9 @@ namespace travel::apps {
 using mrpt::obs::CObservation;
 using travel::PointClass;
 
-/// A failure with the file (and record) it concerns; main() prints it on one line.
-struct AppError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
 inline std::string where(const std::string& file, long record = -1) {
     return record < 0 ? file : file + ": record " + std::to_string(record);
 }
-
-/// Creates the directory that will hold `path`.
-void createParentDirectory(const std::string& path);
 
 /// The valid points of a frame as an ASCII PLY (x y z red green blue), in the aligned frame, in
 /// the bird's-eye colours.
@@ -88,11 +81,9 @@ class ReferenceLog {
 
 struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
-    bool print_config = false;
-    std::string input, output, config, preset, sensor_label_regex, png_prefix, csv, label_reference;
+    std::string input, output, sensor_label_regex, png_prefix, csv, label_reference;
     std::string pcap_model, pcap_calibration;  // .pcap inputs
     bool plain_clouds = true;
-    std::vector<std::string> overrides;
     bool quiet = false, verbose = false;
     bool ignore_sensor_pose = false;
     int png_size = 800;
@@ -117,7 +108,7 @@ class RawlogSegmenter {
             [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,
                    const mrpt::Clock::time_point&) { noteOnce(std::string(msg)); });
         if (!options.png_prefix.empty()) {
-            createParentDirectory(options.png_prefix + "_x");
+            createParentFolder(options.png_prefix + "_x");
             birds_eye_.size_px = options.png_size;
             birds_eye_.metres_per_pixel = options.png_metres_per_pixel;
         }

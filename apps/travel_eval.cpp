@@ -62,12 +62,6 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     });
 }
 
-void createDir(const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw travel::InputError("cannot create output directory " + dir + ": " + ec.message());
-}
-
 std::ofstream openOut(const fs::path& path) {
     std::ofstream out(path);
     if (!out) throw travel::InputError("cannot write " + path.string());
@@ -302,8 +296,7 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> sweep("", "sweep",
                                        "sweep: KEY=v1,v2,... e.g. tgf_resolution=2,4,6,8,10", false,
                                        "", "KEY=VALUES", cmd);
-    TCLAP::ValueArg<int> max_frames("", "max-frames", "Use at most the first N labelled frames",
-                                    false, -1, "N", cmd);
+    const travel::apps::MaxFramesFlag max_frames(line, "labelled frames");
     if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
     const travel::Config configuration = flags.config.load();
     if (flags.config.print(configuration)) return 0;
@@ -314,8 +307,6 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const travel::apps::Verbosity verbosity =
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
-    if (max_frames.isSet() && max_frames.getValue() < 1)
-        throw travel::apps::usageError("--max-frames must be at least 1");
     if (is_sweep && methods.isSet())
         throw travel::apps::usageError("sweep runs one --method, not --methods");
     if (!is_sweep && (sweep.isSet() || method.isSet()))
@@ -335,8 +326,8 @@ int run(int argc, char** argv) {
         is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
-        flags.inputs(), labels.getValue(), max_frames.getValue(), flags.scanFormat());
-    createDir(out);
+        flags.inputs(), labels.getValue(), max_frames.count(), flags.scanFormat());
+    travel::apps::createFolder(out);
     const fs::path dir(out);
 
     if (!is_sweep) {

@@ -57,8 +57,7 @@ int run(int argc, char** argv) {
         "", "DIR", cmd);
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame metrics and timings to this CSV",
                                      false, "", "FILE", cmd);
-    TCLAP::ValueArg<int> max_frames("", "max-frames", "Process at most this many scans", false, -1,
-                                    "N", cmd);
+    const travel::apps::MaxFramesFlag max_frames(line, "scans");
     TCLAP::ValueArg<std::string> method(
         "", "method",
         "Segmentation method: travel (default), travel-no-ttmf, tgs (ground only), ransac, gpf, "
@@ -79,12 +78,8 @@ int run(int argc, char** argv) {
     const travel::ScanList scans = travel::listScans(flags.inputPath(), format);
     std::vector<std::string> files = scans.files;
     const std::string labels_dir = labels.isSet() ? labels.getValue() : scans.labels_dir;
-    if (max_frames.getValue() >= 0 &&
-        files.size() > static_cast<std::size_t>(max_frames.getValue()))
-        files.resize(max_frames.getValue());
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw travel::InputError("cannot create output directory " + out + ": " + ec.message());
+    max_frames.keepFirst(files);
+    travel::apps::createFolder(out);
 
     std::ofstream csv_out;
     if (csv.isSet()) {

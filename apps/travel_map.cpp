@@ -24,6 +24,7 @@
 #include "MapSources.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel/io/ScanList.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
@@ -101,8 +102,7 @@ int run(int argc, char** argv) {
                                        "FILE", cmd);
     TCLAP::ValueArg<std::string> calib("", "calib", "KITTI calib.txt (Tr: velodyne -> cam0)", false,
                                        "", "FILE", cmd);
-    TCLAP::ValueArg<long> max_frames("", "max-frames", "Stop after this many frames (0 = all)",
-                                     false, 0, "N", cmd);
+    const travel::apps::MaxFramesFlag max_frames(line, "LiDAR frames");
     const travel::apps::MemoryLimitFlag max_memory(cmd);
     TCLAP::MultiArg<std::string> probe(
         "", "probe",
@@ -116,7 +116,7 @@ int run(int argc, char** argv) {
     o.resolution = resolution.getValue();
     o.poses = poses.getValue();
     o.calib = calib.getValue();
-    o.max_frames = max_frames.getValue();
+    o.max_frames = max_frames.count();
     o.verbosity = travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     const bool print = o.verbosity != travel::apps::Verbosity::Quiet;
     std::vector<std::pair<double, double>> probes;
@@ -127,7 +127,6 @@ int run(int argc, char** argv) {
             throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
         probes.emplace_back(x, y);
     }
-    if (o.max_frames < 0) throw std::runtime_error("--max-frames must be >= 0");
     const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && print) std::cerr << "travel-map: " << note << "\n";
 
@@ -152,9 +151,8 @@ int run(int argc, char** argv) {
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
     travel::apps::configureMrptLogging(map.filter(), o.verbosity, travel::apps::MrptLogRole::Notes);
     // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
-    const std::string extension = fs::path(o.input).extension().string();
-    const bool kitti = fs::is_directory(o.input) || extension == ".bin" || extension == ".pcd" ||
-                       extension == ".ply";
+    const bool kitti = fs::is_directory(o.input) || travel::isScanPath(o.input);
+    if (!kitti) flags.requireAutoFormat("rawlogs (-f is for scan inputs)");
     std::optional<travel::ScanList> scans;
     if (kitti) scans = travel::listScans(o.input, o.format);
     std::string pose_path = o.poses;
@@ -166,9 +164,7 @@ int run(int argc, char** argv) {
     if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
     o.poses = pose_path;
 
-    std::error_code ec;
-    fs::create_directories(o.output_dir, ec);
-    if (ec) throw std::runtime_error(o.output_dir + ": cannot create directory: " + ec.message());
+    travel::apps::createFolder(o.output_dir);
 
     Stats stats;
     if (kitti)

@@ -94,7 +94,7 @@ int run(int argc, char** argv) {
     else
         sources = {parseSourceKind(source_arg.getValue())};
     const fs::path out_dir = flags.outputPath(".");
-    fs::create_directories(out_dir);
+    travel::apps::createFolder(out_dir.string());
 
     SimOptions options;
     options.nav_config_file = config;

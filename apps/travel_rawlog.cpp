@@ -67,14 +67,15 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 using travel::apps::AppError;
-using travel::apps::createParentDirectory;
 using travel::apps::Options;
 using travel::apps::RawlogSegmenter;
 
 // ------------------------------------------------------------------------------------------
 // Command line.
 
-Options parseCommandLine(int argc, char** argv) {
+/// The options, and in `configuration` the parameters: -p, -c, each --set, then --sensor-label
+/// and --ignore-sensor-pose.
+Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     travel::apps::CommandLine line(
         "travel-rawlog",
         "TRAVEL traversable-ground segmentation and object clustering of the 3-D LiDAR "
@@ -159,18 +160,14 @@ Options parseCommandLine(int argc, char** argv) {
     Options o;
     o.exit_code = line.parse(argc, argv);
     if (o.exit_code) return o;
-    o.print_config = flags.config.print_config.arg.getValue();
-
-    o.config = flags.config.config.getValue();
-    o.preset = flags.config.preset.getValue();
-    o.overrides = flags.config.set.getValue();
-    if (!o.print_config) {
+    if (!flags.config.print_config.arg.getValue()) {  // --print-config needs no -i / -o
         o.input = flags.inputPath();
         o.output = flags.outputPath();
     }
     flags.requireAutoFormat("rawlogs and Velodyne captures");
     o.sensor_label_regex = label.getValue();
-    o.pcap_model = pcap_model.getValue().empty() ? o.preset : pcap_model.getValue();
+    const std::string preset = flags.config.preset.getValue();
+    o.pcap_model = pcap_model.getValue().empty() ? preset : pcap_model.getValue();
     o.pcap_calibration = pcap_calibration.getValue();
     o.png_prefix = png.getValue();
     o.png_metres_per_pixel = picture.metresPerPixel();
@@ -182,6 +179,12 @@ Options parseCommandLine(int argc, char** argv) {
     o.label_reference = reference.getValue();
     o.plain_clouds = !no_plain.getValue();
     o.max_memory_mib = max_memory.mib();
+
+    configuration = flags.config.load();
+    if (!o.sensor_label_regex.empty()) configuration.filter.sensor_label = o.sensor_label_regex;
+    if (o.ignore_sensor_pose) configuration.filter.use_sensor_pose = false;
+    configuration.validate();
+    if (flags.config.print(configuration)) o.exit_code = 0;
     return o;
 }
 
@@ -206,14 +209,6 @@ travel_mrpt::RawlogReader openInput(const Options& o) {
 }
 #endif
 
-travel::Config loadConfiguration(const Options& o) {
-    travel::Config config = travel::apps::loadAppConfig(o.preset, o.config, o.overrides);
-    if (!o.sensor_label_regex.empty()) config.filter.sensor_label = o.sensor_label_regex;
-    if (o.ignore_sensor_pose) config.filter.use_sensor_pose = false;
-    config.validate();
-    return config;
-}
-
 travel_mrpt::TravelFilterOptions loadFilterOptions(const travel::Config& config) {
     travel_mrpt::TravelFilterOptions options;
     options.params = config.travel;
@@ -222,30 +217,26 @@ travel_mrpt::TravelFilterOptions loadFilterOptions(const travel::Config& config)
 }
 
 int run(int argc, char** argv) {
-    const Options options = parseCommandLine(argc, argv);
+    travel::Config configuration;
+    const Options options = parseCommandLine(argc, argv, configuration);
     if (options.exit_code) return *options.exit_code;
     const std::string limit_note = travel::apps::applyMemoryLimit(options.max_memory_mib);
     if (!limit_note.empty() && !options.quiet)
         std::cerr << "travel-rawlog: note: " << limit_note << "\n";
     // Our own classes (CObservationTravelLabels) must be readable: inputs may be earlier outputs.
     travel_mrpt::registerClasses();
-    const travel::Config configuration = loadConfiguration(options);
-    if (options.print_config) {
-        std::cout << travel::configToYaml(configuration);
-        return 0;
-    }
     const travel_mrpt::TravelFilterOptions filter_options = loadFilterOptions(configuration);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");
 
     auto reader = openInput(options);
-    RawlogSegmenter segmenter(options, filter_options);
-
-    // The CSV and the label reference are written in place: an interrupted or failed run
-    // removes them, as it removes the partial rawlog (OUT.rawlog.part).
+    // The CSV and the label reference are written in place (RawlogSegmenter's constructor
+    // creates them): an interrupted or failed run, the constructor's included, removes them, as
+    // it removes the partial rawlog (OUT.rawlog.part).
     travel::apps::PartialOutput csv_guard(options.csv), reference_guard(options.label_reference);
-    createParentDirectory(options.output);
+    RawlogSegmenter segmenter(options, filter_options);
+    travel::apps::createParentFolder(options.output);
     const std::string partial = options.output + ".part";
     mrpt::io::CFileGZOutputStream out_file;
     if (!out_file.open(partial)) throw AppError(partial + ": cannot open for writing");

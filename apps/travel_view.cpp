@@ -31,9 +31,7 @@ using travel::PointClass;
 
 namespace {
 
-struct AppError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+using travel::apps::AppError;
 
 struct Options {
     std::optional<int> exit_code;  // set when the command line says stop (--help, error)
@@ -153,7 +151,6 @@ int run(int argc, char** argv) {
     // Unknown method names fail before any file is read (the message lists the valid ones).
     for (const auto& method : o.methods) travel::eval::makeSegmenter(method, params);
 
-    std::error_code ec;
     travel::PointCloud cloud;
     try {
         travel::readScan(o.scan, cloud, o.format);
@@ -168,9 +165,7 @@ int run(int argc, char** argv) {
     for (std::size_t k = 0; k < o.methods.size(); ++k)
         renderMethod(o.methods[k], params, cloud, o, panels[k]);
 
-    const fs::path parent = fs::path(o.out).parent_path();
-    if (!parent.empty()) fs::create_directories(parent, ec);
-    if (ec) throw AppError(parent.string() + ": cannot create directory: " + ec.message());
+    travel::apps::createParentFolder(o.out);
     const std::string name = fs::path(o.scan).filename().string();
     if (panels.size() == 1) {
         travel_mrpt::savePicture(panels[0], o.out);

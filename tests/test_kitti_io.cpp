@@ -237,3 +237,33 @@ TEST(ScanList, FileFolderAndSequence) {
                     "no scans (.bin, .pcd, .ply)");
     EXPECT_CONTAINS(inputErrorOf([&] { travel::listScans(dir.file("nope")); }), dir.file("nope"));
 }
+
+TEST(ScanList, ExtensionRuleIsCaseInsensitive) {
+    EXPECT_TRUE(travel::isScanPath("a/000000.bin"));
+    EXPECT_TRUE(travel::isScanPath("a/000000.BIN"));
+    EXPECT_TRUE(travel::isScanPath("scan.Pcd"));
+    EXPECT_TRUE(travel::isScanPath("scan.ply", travel::ScanFormat::Ply));
+    EXPECT_FALSE(travel::isScanPath("scan.ply", travel::ScanFormat::KittiBin));
+    EXPECT_FALSE(travel::isScanPath("drive.rawlog"));
+    EXPECT_FALSE(travel::isScanPath("sequences/00"));
+    TempDir dir;
+    fs::create_directories(dir.path / "upper");
+    dir.writeBytes("upper/000000.BIN", {});
+    dir.writeBytes("upper/000001.bin", {});
+    EXPECT_EQ(travel::listScans(dir.file("upper")).files.size(), 2u);
+}
+
+// Outputs are named by stem: 000000.bin and 000000.pcd in one folder would both write
+// 000000.label; auto stops and suggests --format, a format picks one kind.
+TEST(ScanList, DuplicateStemIsAnError) {
+    TempDir dir;
+    fs::create_directories(dir.path / "mixed");
+    for (const char* name : {"mixed/000000.bin", "mixed/000000.pcd", "mixed/000001.bin"})
+        dir.writeBytes(name, {});
+    const std::string error = inputErrorOf([&] { travel::listScans(dir.file("mixed")); });
+    EXPECT_CONTAINS(error, "000000.bin and 000000.pcd");
+    EXPECT_CONTAINS(error, "--format");
+    EXPECT_CONTAINS(error, dir.file("mixed"));
+    EXPECT_EQ(travel::listScans(dir.file("mixed"), travel::ScanFormat::KittiBin).files.size(), 2u);
+    EXPECT_EQ(travel::listScans(dir.file("mixed"), travel::ScanFormat::Pcd).files.size(), 1u);
+}

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "travel/Text.hpp"
+
 // Floating-point <charconv> is exact and locale-independent, but some standard libraries
 // (older libc++) lack it; streams imbued with the classic locale are the fallback.
 #if defined(__cpp_lib_to_chars) && !defined(TRAVEL_NO_FP_CHARCONV)
@@ -23,16 +25,6 @@ namespace {
 
 bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
-}
-
-std::string toLower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return out;
-}
-
-std::string inQuotes(const std::string& text) {
-    return "'" + text + "'";
 }
 
 std::vector<std::string> splitChoices(const char* choices) {

@@ -70,6 +70,11 @@ if(EXISTS ${seq}/velodyne/000000.bin)
   file(COPY ${seq}/velodyne/000000.bin DESTINATION ${WORK_DIR}/scans)
 endif()
 set(common -p hdl64 --set sensor_height=1.73 -q)
+# An output folder that cannot be created (below a regular file): one message in every app.
+file(WRITE ${WORK_DIR}/afile "not a folder")
+set(no_folder "cannot create folder ${WORK_DIR}/afile")
+# --max-frames N: 0 = all (the default), a negative N is a usage error, in every app that has it.
+set(bad_max_frames "--max-frames must be >= 0")
 
 if(APP STREQUAL "travel-kitti")
   expect_failure_mentioning("missing -o/--output" ${EXE} -i ${WORK_DIR}/scans)
@@ -83,19 +88,34 @@ if(APP STREQUAL "travel-kitti")
     if(pos EQUAL -1 OR NOT EXISTS ${WORK_DIR}/seq/000000.label OR NOT EXISTS ${WORK_DIR}/one/000000.label)
       message(FATAL_ERROR "a sequence folder's labels/ were not found:\n${last_output}")
     endif()
+    expect_quiet_success(${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/all --max-frames 0 ${common})
+    expect_file(${WORK_DIR}/all/000000.label)
+    expect_failure_mentioning("${no_folder}/out" ${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/afile/out)
+    # Two scans with one stem would write one .label twice: auto stops and suggests --format.
+    file(COPY ${WORK_DIR}/scans/000000.bin DESTINATION ${WORK_DIR}/mixed)
+    file(WRITE ${WORK_DIR}/mixed/000000.pcd "")
+    expect_failure_mentioning("--format" ${EXE} -i ${WORK_DIR}/mixed -o ${WORK_DIR}/mixed_out)
+    expect_quiet_success(${EXE} -i ${WORK_DIR}/mixed -o ${WORK_DIR}/mixed_out -f kitti ${common})
   endif()
+  expect_failure_mentioning("${bad_max_frames}" ${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/o
+                            --max-frames -1)
 elseif(APP STREQUAL "travel-eval")
   expect_failure_mentioning("missing -o/--output" ${EXE} report -i ${seq})
   if(have_kitti)
     expect_quiet_success(${EXE} report -i ${seq} -o ${WORK_DIR}/eval --methods gpf -f kitti
                          --max-frames 1 ${common})
     expect_file(${WORK_DIR}/eval/report.md)
+    expect_failure_mentioning("${no_folder}/eval" ${EXE} report -i ${seq} -o ${WORK_DIR}/afile/eval
+                              --methods gpf --max-frames 1)
   endif()
+  expect_failure_mentioning("${bad_max_frames}" ${EXE} report -i ${seq} -o ${WORK_DIR}/o
+                            --max-frames -1)
 elseif(APP STREQUAL "travel-view")
   expect_failure_mentioning("missing -o/--output" ${EXE} -i ${WORK_DIR}/scans)
   if(have_kitti)
     expect_quiet_success(${EXE} -i ${seq} --frame 0 -o ${WORK_DIR}/v.png -f kitti --mpp 0.1 ${common})
     expect_file(${WORK_DIR}/v.png)
+    expect_failure_mentioning("${no_folder}" ${EXE} -i ${seq} --frame 0 -o ${WORK_DIR}/afile/v.png)
   endif()
 elseif(APP STREQUAL "travel-map")
   expect_failure_mentioning("missing -o/--output" ${EXE} -i ${WORK_DIR}/scans)
@@ -103,7 +123,13 @@ elseif(APP STREQUAL "travel-map")
     expect_quiet_success(${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/map -f kitti ${common}
                          --set map.resolution=0.5)
     expect_file(${WORK_DIR}/map/scans_traversability.png)
+    expect_failure_mentioning("${no_folder}/map" ${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/afile/map)
   endif()
+  expect_failure_mentioning("${bad_max_frames}" ${EXE} -i ${WORK_DIR}/scans -o ${WORK_DIR}/o
+                            --max-frames -1)
+  # -f names a scan format: a rawlog input takes only auto.
+  expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street.rawlog)
+  expect_failure_mentioning("only -f auto" ${EXE} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/o -f kitti)
 elseif(APP STREQUAL "travel-rawlog")
   expect_failure_mentioning("missing -o/--output" ${EXE} -i ${WORK_DIR}/x.rawlog)
   expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street.rawlog)
@@ -111,11 +137,21 @@ elseif(APP STREQUAL "travel-rawlog")
   expect_quiet_success(${EXE} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/out.rawlog -f auto
                        ${common} --png ${WORK_DIR}/png/f --mpp 0.1 --size 200)
   expect_file(${WORK_DIR}/out.rawlog)
+  expect_failure_mentioning("${no_folder}" ${EXE} -i ${WORK_DIR}/street.rawlog
+                            -o ${WORK_DIR}/afile/out.rawlog)
+  # A failure while the outputs are being set up leaves no header-only CSV behind.
+  expect_failure_mentioning("${no_folder}" ${EXE} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/o2.rawlog
+                            --csv ${WORK_DIR}/frames.csv --png ${WORK_DIR}/afile/png/f)
+  if(EXISTS ${WORK_DIR}/frames.csv)
+    message(FATAL_ERROR "a failed run left ${WORK_DIR}/frames.csv behind")
+  endif()
 elseif(APP STREQUAL "travel-nav-sim")
   expect_failure_mentioning("unknown flag -w; did you mean -i/--input?" ${EXE} -w flat_obstacles.world)
   expect_quiet_success(${EXE} -i flat_obstacles.world -o ${WORK_DIR}/nav --timeout 1 --no-navlog
                        -p hdl64 --set nav.max_step_height=0.1 -q)
   expect_file(${WORK_DIR}/nav/flat_obstacles_travel.csv)
+  expect_failure_mentioning("${no_folder}/nav" ${EXE} -i flat_obstacles.world -o ${WORK_DIR}/afile/nav
+                            --timeout 1 --no-navlog -q)
 else()
   message(FATAL_ERROR "unknown APP '${APP}'")
 endif()

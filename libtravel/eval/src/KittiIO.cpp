@@ -2,15 +2,12 @@
 #include "travel/eval/KittiIO.hpp"
 
 #include "travel/Errors.hpp"
+#include "travel/Text.hpp"
 #include "travel/io/BinaryFile.hpp"
 
 namespace travel {
 
 namespace {
-
-std::string inQuotes(const std::string& path) {
-    return "'" + path + "'";
-}
 
 // One buffer per thread: a sequence of frames re-uses the same allocation.
 std::vector<unsigned char>& scratchBuffer() {

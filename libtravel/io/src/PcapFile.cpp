@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/io/PcapFile.hpp"
 
+#include "travel/io/ScanList.hpp"  // lowerCaseExtension
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -76,9 +78,7 @@ PcapSummary summarisePcap(const std::string& path, bool count_packets) {
 }
 
 bool isPcapFile(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = travel::lowerCaseExtension(path);
     if (ext == ".pcap" || ext == ".pcapng") return true;
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) return false;

@@ -10,6 +10,7 @@
 #include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
+#include "travel/io/ScanList.hpp"  // lowerCaseExtension
 
 namespace travel {
 
@@ -120,7 +121,7 @@ ScanFormat binFormatFromContents(const std::string& path, const std::vector<unsi
 ScanFormat detectFormat(const std::string& path, const std::vector<unsigned char>& bytes) {
     if (bytes.empty()) fail(path, "0 bytes, not a scan");
     const fs::path p(path);
-    const std::string ext = p.extension().string();
+    const std::string ext = lowerCaseExtension(path);
     if (ext == ".pcd") return ScanFormat::Pcd;
     if (ext == ".ply") return ScanFormat::Ply;
     const ScanFormat by_contents = formatFromContents(bytes);

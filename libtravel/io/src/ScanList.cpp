@@ -5,16 +5,13 @@
 #include <filesystem>
 
 #include "travel/Errors.hpp"
+#include "travel/Text.hpp"
 
 namespace travel {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string inQuotes(const std::string& path) {
-    return "'" + path + "'";
-}
 
 /// The extensions of the scan files `format` reads.
 std::vector<std::string> scanExtensions(ScanFormat format) {
@@ -30,6 +27,14 @@ std::vector<std::string> scanExtensions(ScanFormat format) {
             break;
     }
     return {".bin", ".pcd", ".ply"};
+}
+
+/// The extensions of `format` as ".bin, .pcd, .ply".
+std::string extensionList(ScanFormat format) {
+    std::string names;
+    for (const std::string& extension : scanExtensions(format))
+        names += (names.empty() ? "" : ", ") + extension;
+    return names;
 }
 
 bool isDirectory(const fs::path& path) {
@@ -63,6 +68,16 @@ std::vector<std::string> listFiles(const std::string& dir, const std::string& ex
     return files;
 }
 
+std::string lowerCaseExtension(const std::string& path) {
+    return toLower(fs::path(path).extension().string());
+}
+
+bool isScanPath(const std::string& path, ScanFormat format) {
+    const std::vector<std::string> extensions = scanExtensions(format);
+    return std::find(extensions.begin(), extensions.end(), lowerCaseExtension(path)) !=
+           extensions.end();
+}
+
 ScanList listScans(const std::string& path, ScanFormat format) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(inQuotes(path) + " does not exist");
@@ -84,17 +99,22 @@ ScanList listScans(const std::string& path, ScanFormat format) {
         if (isDirectory(sequence / "labels")) list.labels_dir = (sequence / "labels").string();
     }
     if (!list.files.empty()) return list;
-    for (const std::string& extension : scanExtensions(format)) {
-        const auto files = listFiles(list.scans_dir, extension);
-        list.files.insert(list.files.end(), files.begin(), files.end());
-    }
-    std::sort(list.files.begin(), list.files.end());
-    if (list.files.empty()) {
-        std::string names;
-        for (const std::string& extension : scanExtensions(format))
-            names += (names.empty() ? "" : ", ") + extension;
-        throw InputError("no scans (" + names + ") in " + inQuotes(list.scans_dir));
-    }
+    for (const std::string& file : listFiles(list.scans_dir, ""))  // sorted by name
+        if (isScanPath(file, format)) list.files.push_back(file);
+    if (list.files.empty())
+        throw InputError("no scans (" + extensionList(format) + ") in " + inQuotes(list.scans_dir));
+    // Every output (a .label, a map frame) is named by the scan's stem: two scans with one stem
+    // would silently overwrite each other's.
+    std::vector<std::pair<std::string, std::string>> stems;  // (stem, file name)
+    for (const std::string& file : list.files)
+        stems.emplace_back(fs::path(file).stem().string(), fs::path(file).filename().string());
+    std::sort(stems.begin(), stems.end());
+    for (std::size_t i = 1; i < stems.size(); ++i)
+        if (stems[i].first == stems[i - 1].first)
+            throw InputError(inQuotes(list.scans_dir) + ": " + stems[i - 1].second + " and " +
+                             stems[i].second + " are both scan " + inQuotes(stems[i].first) +
+                             " (outputs are named by stem); choose one kind with --format (" +
+                             scanFormatNames() + ") or move one away");
     return list;
 }
 
