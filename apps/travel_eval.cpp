@@ -53,13 +53,17 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     travel::apps::ProgressLine progress(
         progress_label, frames.size(),
         per_frame_lines ? travel::apps::Verbosity::Quiet : verbosity);
-    return travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
+    MethodRun run = travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
         travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
         if (per_frame_lines)
             std::fprintf(stderr, "%s: frame %zu/%zu %s\n", progress_label.c_str(), f + 1,
                          frames.size(), frames[f].name.c_str());
         progress.update(f + 1);
     });
+    if (run.mount && verbosity != travel::apps::Verbosity::Quiet)
+        progress.note("travel-eval: " + method + ": " + (run.mount.isWarning() ? "warning: " : "") +
+                      run.mount.message);
+    return run;
 }
 
 std::ofstream openOut(const fs::path& path) {

@@ -128,8 +128,7 @@ int run(int argc, char** argv) {
                 ++unlabelled_frames;
             }
         }
-        travel::eval::evaluateFrame(files[f], label_path, *segmenter, params.sensor_height, frame,
-                                    format);
+        travel::eval::evaluateFrame(files[f], label_path, *segmenter, frame, format);
         totals.add(frame);
         if (const travel::MountNote& note = frame.segmentation.mount; note && !quiet)
             progress.note(std::string("travel-kitti: ") + (note.isWarning() ? "warning: " : "") +

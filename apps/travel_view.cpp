@@ -110,17 +110,24 @@ void renderMethod(const std::string& method, const travel::Params& params,
     travel::eval::Segmentation seg;
     segmenter->segment(cloud, seg);
 
-    travel::AlignedCloud aligned;
-    travel::preprocess(cloud, params, travel::FrameInput{}, aligned);
+    if (seg.mount && !o.quiet)
+        std::cerr << "travel-view: " << method << ": " << (seg.mount.isWarning() ? "warning: " : "")
+                  << seg.mount.message << "\n";
+
     travel::Result result;
     std::unique_ptr<travel::Pipeline> pipeline;
-    if (usesTriGrid(method) && o.nodes) {
+    // Tri-grid methods: the points as the pipeline aligned them (with its `auto` mount
+    // estimates), so that they and the terrain nodes agree; baselines take the mount as set.
+    if (usesTriGrid(method)) {
         travel::Params p = params;
         p.ttmf = method != "travel-no-ttmf";
         p.cluster_objects = false;  // only the terrain is needed
         pipeline = std::make_unique<travel::Pipeline>(p);
         pipeline->process(cloud, travel::FrameInput{}, result);
     }
+    travel::AlignedCloud preprocessed;
+    if (!pipeline) travel::preprocess(cloud, params, travel::FrameInput{}, preprocessed);
+    const travel::AlignedCloud& aligned = pipeline ? pipeline->aligned() : preprocessed;
 
     std::size_t valid = 0, ground = 0, outliers = 0;
     uint32_t clusters = 0;
@@ -141,7 +148,7 @@ void renderMethod(const std::string& method, const travel::Params& params,
     opt.title = title;
     opt.draw_nodes = o.nodes;
     travel_mrpt::renderBirdsEye(aligned, seg.labels, seg.cluster_id,
-                                pipeline ? &result.terrain : nullptr, opt, panel);
+                                pipeline && o.nodes ? &result.terrain : nullptr, opt, panel);
 }
 
 int run(int argc, char** argv) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "travel/Errors.hpp"
 #include "travel/eval/FrameEvaluation.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/sim/Scenes.hpp"
@@ -58,7 +59,7 @@ TEST(EvaluateFrame, ScoresAreTheMetricsOfTheSegmentation) {
     const Params params;
     const auto segmenter = makeSegmenter("travel", params);
     FrameEvaluation frame;
-    evaluateFrame(f.scan, f.label, *segmenter, params.sensor_height, frame);
+    evaluateFrame(f.scan, f.label, *segmenter, frame);
 
     // The same scan segmented independently, scored with the metric functions directly.
     PointCloud cloud;
@@ -73,7 +74,7 @@ TEST(EvaluateFrame, ScoresAreTheMetricsOfTheSegmentation) {
     EXPECT_EQ(frame.ground_truth, gt);
     for (int p = 0; p < 2; ++p) {
         const GroundScores s = scoresFrom(
-            countGround(expected.labels, gt, cloud.z, params.sensor_height, kGroundProtocols[p]));
+            countGround(expected.labels, gt, cloud.z, expected.sensor_height, kGroundProtocols[p]));
         EXPECT_DOUBLE_EQ(frame.ground[p].f1, s.f1) << p;
         EXPECT_DOUBLE_EQ(frame.ground[p].precision, s.precision) << p;
         EXPECT_DOUBLE_EQ(frame.ground[p].recall, s.recall) << p;
@@ -97,7 +98,7 @@ TEST(EvaluateFrame, WithoutLabelsNothingIsScored) {
     const Params params;
     const auto segmenter = makeSegmenter("travel", params);
     FrameEvaluation frame;
-    evaluateFrame(urbanFrame().scan, "", *segmenter, params.sensor_height, frame);
+    evaluateFrame(urbanFrame().scan, "", *segmenter, frame);
     EXPECT_FALSE(frame.scored);
     EXPECT_TRUE(frame.ground_truth.empty());
     EXPECT_EQ(frame.segmentation.labels.size(), frame.cloud.size());
@@ -114,8 +115,7 @@ TEST(EvaluateFrame, GroundOnlyMethodsHaveNoObjectStage) {
     FrameEvaluation frame;
     EvaluationAccumulator totals;
     for (int k = 0; k < 2; ++k) {
-        evaluateFrame(urbanFrame().scan, urbanFrame().label, *segmenter, params.sensor_height,
-                      frame);
+        evaluateFrame(urbanFrame().scan, urbanFrame().label, *segmenter, frame);
         totals.add(frame);
     }
     EXPECT_FALSE(frame.clustered);
@@ -129,13 +129,64 @@ TEST(EvaluateFrame, GroundOnlyMethodsHaveNoObjectStage) {
     EXPECT_EQ(s.use.n, 0u);
 }
 
+// Protocol A's vegetation rule uses the height the segmenter used: under `auto` the estimate,
+// not the fallback (here 0.5 m, the sensor being 1.73 m above the street).
+TEST(EvaluateFrame, AutoHeightIsScoredWithTheEstimate) {
+    const Files& f = urbanFrame();
+    PointCloud cloud;
+    readScan(f.scan, cloud);
+    std::vector<uint32_t> gt = readLabelFile(f.label, cloud.size());
+    // Object points 0.4-1.2 m below the sensor become vegetation: ground under protocol A with
+    // h = 0.5 (z < -0.375), not with h = 1.73 (z < -1.30).
+    std::size_t relabelled = 0;
+    for (std::size_t i = 0; i < gt.size(); ++i)
+        if ((gt[i] & 0xffffu) == 10u && cloud.z[i] < -0.4f && cloud.z[i] > -1.2f)
+            gt[i] = 70, ++relabelled;
+    ASSERT_GT(relabelled, 100u);
+    const std::string label = (testDir() / "vegetation.label").string();
+    writeLabelFile(label, gt);
+
+    Params params;
+    params.sensor_height = AutoReal::makeAuto(0.5);
+    const auto segmenter = makeSegmenter("travel", params);
+    FrameEvaluation frame;
+    evaluateFrame(f.scan, label, *segmenter, frame);
+    const Segmentation& seg = frame.segmentation;
+    EXPECT_NEAR(seg.sensor_height, sim::kSensorHeight, 0.1);
+    const GroundScores used =
+        scoresFrom(countGround(seg.labels, gt, cloud.z, seg.sensor_height, GroundProtocol::A));
+    const GroundScores fallback =
+        scoresFrom(countGround(seg.labels, gt, cloud.z, 0.5, GroundProtocol::A));
+    EXPECT_DOUBLE_EQ(frame.ground[0].f1, used.f1);
+    EXPECT_NE(frame.ground[0].f1, fallback.f1);
+}
+
+// The baselines do not estimate the mount: `auto` is refused, naming the key and the method.
+TEST(EvaluateFrame, BaselinesRejectAutoMount) {
+    for (const char* method : {"gpf", "ransac", "gpf+slr"}) {
+        Params params;
+        params.mount_pitch_deg = AutoReal::makeAuto(0.0);
+        try {
+            makeSegmenter(method, params);
+            FAIL() << method << " accepted auto";
+        } catch (const ConfigError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("mount_pitch_deg"), std::string::npos) << what;
+            EXPECT_NE(what.find(method), std::string::npos) << what;
+        }
+    }
+    Params params;
+    params.sensor_height = AutoReal::makeAuto(1.73);
+    EXPECT_NO_THROW(makeSegmenter("tgs+slr", params));
+}
+
 TEST(EvaluateFrame, ErrorsNameTheFile) {
     const Params params;
     const auto segmenter = makeSegmenter("travel", params);
     FrameEvaluation frame;
     const std::string missing = (testDir() / "missing.bin").string();
     try {
-        evaluateFrame(missing, "", *segmenter, params.sensor_height, frame);
+        evaluateFrame(missing, "", *segmenter, frame);
         FAIL() << "no error for a missing scan";
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
@@ -144,7 +195,7 @@ TEST(EvaluateFrame, ErrorsNameTheFile) {
     const std::string short_label = (testDir() / "short.label").string();
     writeLabelFile(short_label, {40, 40, 40});
     try {
-        evaluateFrame(urbanFrame().scan, short_label, *segmenter, params.sensor_height, frame);
+        evaluateFrame(urbanFrame().scan, short_label, *segmenter, frame);
         FAIL() << "no error for a short label file";
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find(short_label), std::string::npos) << e.what();

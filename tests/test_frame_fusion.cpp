@@ -18,6 +18,7 @@ namespace {
 struct TinyFrame {
     travel::AlignedCloud aligned;
     travel::Result result;
+    TinyFrame() { result.sensor_height = 2.0; }  // as the pipeline that segmented it used
 
     void add(float x, float y, float z, PointClass label, uint32_t cluster = 0) {
         aligned.x.push_back(x), aligned.y.push_back(y), aligned.z.push_back(z);
@@ -46,7 +47,7 @@ TEST(FrameFusion, GroundObstaclesAndRayEnds) {
     f.add(35.f, 0.f, -2.0f, PointClass::Ground);        // beyond max_ray_length
     f.add(2.f, 2.f, -2.0f, PointClass::Invalid);        // ignored
     travel::RayEnds ends;
-    travel::fuseFrame(f.placed(), map, 2.0f, grid, ends);
+    travel::fuseFrame(f.placed(), map, grid, ends);
 
     ASSERT_EQ(ends.ground.size(), 1u);
     EXPECT_TRUE(ends.ground[0].isApprox(Eigen::Vector3f(1.01f, 0.01f, 0.f)));
@@ -78,8 +79,26 @@ TEST(FrameFusion, ClusterGroundIsTheFallbackWithoutGridGround) {
     f.add(3.f, 3.f, -1.2f, PointClass::NonGround, 1);  // 0.3 above its cluster ground: skipped
     f.add(3.f, 3.f, -0.9f, PointClass::NonGround, 1);  // 0.6: obstacle
     travel::RayEnds ends;
-    travel::fuseFrame(f.placed(), map, 2.0f, grid, ends);
+    travel::fuseFrame(f.placed(), map, grid, ends);
     EXPECT_EQ(ends.obstacle.size(), 1u);
+}
+
+// The last fallback (aligned z + h_s) takes h_s from the result, i.e. the height the pipeline
+// segmented with (its estimate under `auto`), never a configured fallback passed separately.
+TEST(FrameFusion, LastFallbackUsesTheResultsSensorHeight) {
+    travel::MapSection map;
+    map.min_obstacle_points = 1;
+    for (const double h : {2.0, 0.5}) {
+        travel::TraversabilityGrid grid;
+        grid.reset(map);
+        TinyFrame f;
+        f.result.sensor_height = h;
+        f.add(5.01f, 5.01f, -1.0f, PointClass::NonGround);  // no ground anywhere: z + h_s
+        travel::RayEnds ends;
+        travel::fuseFrame(f.placed(), map, grid, ends);
+        // h_s 2 m: 1 m above the ground, an obstacle; h_s 0.5 m: below the ground, no ray.
+        EXPECT_EQ(ends.obstacle.size(), h > 1.0 ? 1u : 0u) << "h_s " << h;
+    }
 }
 
 TEST(FrameFusion, VoxelUpdateTouchesEachVoxelOnce) {

@@ -99,6 +99,9 @@ TEST_P(EveryMount, AutoLabelsLikeTheTrueValues) {
     EXPECT_NE(with_auto.mount.message.find("(from frame 0, "), std::string::npos);
     EXPECT_FALSE(pipeline.params().sensor_height.isAuto());
     EXPECT_NEAR(pipeline.params().sensor_height, m.height, kHeightTolerance);
+    // The result carries the height used (the estimate), for FrameFusion and the evaluation.
+    EXPECT_EQ(with_auto.sensor_height, double(pipeline.params().sensor_height));
+    EXPECT_EQ(with_truth.sensor_height, m.height);
     EXPECT_EQ(with_truth.mount.kind, MountNote::Kind::None) << with_truth.mount.message;
 
     std::size_t differ = 0;

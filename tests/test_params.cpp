@@ -463,14 +463,33 @@ TEST(ParamsAuto, PrintedBackAndReadAgain) {
     travel::applyOverride("sensor_height=auto", p);
     travel::applyOverride("mount_pitch_deg=auto", p);
     const std::string yaml = travel::paramsToYaml(p);
-    EXPECT_CONTAINS(yaml, "\nsensor_height: auto\n");
-    EXPECT_CONTAINS(yaml, "\nmount_pitch_deg: auto\n");
+    EXPECT_CONTAINS(yaml, "\nsensor_height: auto(1.73)\n");  // the fallback is kept
+    EXPECT_CONTAINS(yaml, "\nmount_pitch_deg: auto(0.0)\n");
     EXPECT_CONTAINS(yaml, "\nmount_roll_deg: 0.0\n");
     const Params back = fromText(yaml);
     EXPECT_TRUE(back.sensor_height.isAuto());
     EXPECT_TRUE(back.mount_pitch_deg.isAuto());
     EXPECT_FALSE(back.mount_roll_deg.isAuto());
     EXPECT_EQ(travel::paramsToYaml(back), yaml);
+}
+
+// --print-config of a preset with `auto` reads back, without the preset, with the preset's
+// fallback (vlp16: 0.5 m, not the default 1.73 m).
+TEST(ParamsAuto, PrintedConfigKeepsThePresetsFallback) {
+    const Params preset = fromText("preset: vlp16\nsensor_height: auto\n");
+    ASSERT_EQ(preset.sensor_height.value, 0.5);
+    const std::string yaml = travel::paramsToYaml(preset);
+    EXPECT_EQ(yaml.find("\npreset:"), std::string::npos);  // no preset line to rely on
+    const Params back = fromText(yaml);
+    EXPECT_TRUE(back.sensor_height.isAuto());
+    EXPECT_EQ(back.sensor_height.value, 0.5);
+    EXPECT_EQ(travel::paramsToYaml(back), yaml);
+    // auto(FALLBACK) is also accepted by hand, range-checked like the number.
+    const Params hand = fromText("[travel]\nsensor_height = Auto(2.5)\n");
+    EXPECT_TRUE(hand.sensor_height.isAuto());
+    EXPECT_EQ(hand.sensor_height.value, 2.5);
+    EXPECT_CONTAINS(configErrorOf([] { fromText("sensor_height: auto(-1)\n"); }), "sensor_height");
+    EXPECT_CONTAINS(configErrorOf([] { fromText("sensor_height: auto(x)\n"); }), "auto(FALLBACK)");
 }
 
 TEST(ParamsAuto, OnlyMountValuesAcceptAuto) {

@@ -400,6 +400,35 @@ TEST(TravelFilter, SelectsSensorsByLabelRegex) {
     EXPECT_FALSE(filter.filter(*scan, frame, &why));
 }
 
+// A level sensor 1.73 m over flat ground whose sensorPose claims an 8 deg pitch: the mount
+// angles come from that sensorPose, so the mismatch note must point there, not to
+// mount_roll_deg / mount_pitch_deg (which the sensorPose overrides).
+TEST(TravelFilter, TiltMismatchNamesTheSensorPose) {
+    travel::PointCloud ground;
+    for (float x = -30.f; x <= 30.f; x += 0.25f)
+        for (float y = -30.f; y <= 30.f; y += 0.25f)
+            ground.x.push_back(x), ground.y.push_back(y), ground.z.push_back(-1.73f);
+    const auto noteFor = [&](bool use_sensor_pose) {
+        TravelFilterOptions o;
+        o.use_sensor_pose = use_sensor_pose;
+        o.params.sensor_height = travel::AutoReal::makeAuto(0.5);  // fallback far off
+        TravelFilter filter(o);
+        filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+        travel_mrpt::TravelFrame frame;
+        filter.filter(ground, mrpt::poses::CPose3D(0, 0, 0, 0, 8 * kDeg, 0), mrpt::Clock::now(),
+                      "VELO", frame);
+        // The result carries the estimated height (what the map fuses with), not 0.5.
+        EXPECT_NEAR(frame.result.sensor_height, 1.73, 0.05);
+        return frame.result.mount;
+    };
+    const travel::MountNote note = noteFor(true);
+    EXPECT_NE(note.message.find("the sensorPose of 'VELO'"), std::string::npos) << note.message;
+    EXPECT_NE(note.message.find("--ignore-sensor-pose"), std::string::npos) << note.message;
+    EXPECT_EQ(note.message.find("set mount_roll_deg:"), std::string::npos) << note.message;
+    // Ignoring the sensorPose: the level configured angles fit, nothing to say about them.
+    EXPECT_EQ(noteFor(false).message.find("tilted"), std::string::npos);
+}
+
 TEST(TravelFilter, RefusesNonLidarAndEmptyObservations) {
     TravelFilter filter;
     filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);

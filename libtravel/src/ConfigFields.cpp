@@ -159,8 +159,17 @@ std::string parse(const std::string& text, bool& out) {
 }
 
 std::string parse(const std::string& text, AutoReal& out) {
-    if (toLower(text) == "auto") {
+    const std::string lower = toLower(text);
+    if (lower == "auto") {
         out.automatic = true;
+        return {};
+    }
+    // auto(FALLBACK): what format() writes, so that a printed configuration keeps its fallback.
+    if (lower.size() > 6 && lower.compare(0, 5, "auto(") == 0 && lower.back() == ')') {
+        double fallback = 0;
+        const std::string error = parse(text.substr(5, text.size() - 6), fallback);
+        if (!error.empty()) return "auto(FALLBACK): " + error;
+        out = AutoReal::makeAuto(fallback);
         return {};
     }
     double value = 0;
@@ -206,7 +215,7 @@ std::string format(bool value) {
     return value ? "true" : "false";
 }
 std::string format(const AutoReal& value) {
-    return value.isAuto() ? "auto" : formatReal(value.value);
+    return value.isAuto() ? "auto(" + formatReal(value.value) + ")" : formatReal(value.value);
 }
 
 // A bare word when it reads back as the same string, otherwise quoted.

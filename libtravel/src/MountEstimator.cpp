@@ -97,7 +97,8 @@ MountNote notFoundMountNote(const Params& configured, std::size_t frame) {
 }
 
 MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
-                           const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame) {
+                           const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame,
+                           const MountAnglesSource& angles) {
     MountNote note;
     if (!ground.found) return note;
     std::string what;
@@ -114,9 +115,15 @@ MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& 
     if ((!roll.isAuto() || !pitch.isAuto()) && tilt_deg > kMountTiltToleranceDeg) {
         what += std::string(what.empty() ? "" : "; ") + "the ground is tilted by " +
                 fixed2(tilt_deg) + " deg with mount_roll_deg " + fixed2(roll.value) +
-                ", mount_pitch_deg " + fixed2(pitch.value) +
-                ": set mount_roll_deg: " + fixed2(ground.roll_deg) +
-                ", mount_pitch_deg: " + fixed2(ground.pitch_deg) + " or auto";
+                ", mount_pitch_deg " + fixed2(pitch.value);
+        if (angles.name.empty()) {
+            what += ": set mount_roll_deg: " + fixed2(ground.roll_deg) +
+                    ", mount_pitch_deg: " + fixed2(ground.pitch_deg) + " or auto";
+        } else {
+            what += " from " + angles.name + ": correct it to roll " + fixed2(ground.roll_deg) +
+                    " deg, pitch " + fixed2(ground.pitch_deg) + " deg" +
+                    (angles.remedy.empty() ? "" : ", or " + angles.remedy);
+        }
     }
     if (what.empty()) return note;
     note.kind = MountNote::Kind::Mismatch;

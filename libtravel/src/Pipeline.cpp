@@ -67,8 +67,8 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
         applyFirstGroundRing();
         note = estimatedMountNote(configured_, ground, frame);
     }
-    const MountNote check =
-        checkedMountNote(configured_, ground, alignmentRotation(params_, input), frame);
+    const MountNote check = checkedMountNote(configured_, ground, alignmentRotation(params_, input),
+                                             frame, angles_source_);
     if (!check) return;
     if (note) {
         note.message += "; " + check.message;
@@ -88,6 +88,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     result.mount.kind = MountNote::Kind::None;
     result.mount.message.clear();
     updateMount(cloud, input, result.mount);
+    result.sensor_height = params_.sensor_height;
     preprocess(cloud, params_, input, aligned_);
     t.preprocess = msSince(clock);
     field_.embed(aligned_, result.terrain);

@@ -34,6 +34,22 @@ if(EXISTS ${scan})
   if(NOT magic STREQUAL "89504e47")
     message(FATAL_ERROR "${png} is not a PNG (starts with ${magic})")
   endif()
+  # sensor_height auto: the pipeline's note once on stderr (not with -q); the baselines refuse it.
+  execute_process(COMMAND ${TRAVEL_VIEW} -i ${scan} --methods travel --set sensor_height=auto
+                  -o ${WORK_DIR}/auto.png RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REGEX MATCHALL "sensor_height auto: [0-9.]+ m" notes "${err}")
+  list(LENGTH notes count)
+  if(NOT rc EQUAL 0 OR NOT count EQUAL 1)
+    message(FATAL_ERROR "no single 'sensor_height auto' note (${rc}):\n${out}${err}")
+  endif()
+  execute_process(COMMAND ${TRAVEL_VIEW} -q -i ${scan} --methods travel --set sensor_height=auto
+                  -o ${WORK_DIR}/auto.png RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT err STREQUAL "")
+    message(FATAL_ERROR "-q printed (${rc}):\n${out}${err}")
+  endif()
+  expect_failure_mentioning("sensor_height: auto is not supported by method 'gpf'"
+                            ${TRAVEL_VIEW} -i ${scan} --methods gpf
+                            --set sensor_height=auto -o ${WORK_DIR}/auto.png)
 else()
   message(STATUS "SemanticKITTI scan not found at ${scan}: real-scan part skipped")
 endif()

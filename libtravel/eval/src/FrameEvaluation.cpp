@@ -10,8 +10,7 @@
 namespace travel::eval {
 
 void evaluateFrame(const std::string& scan_path, const std::string& label_path,
-                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame,
-                   ScanFormat format) {
+                   Segmenter& segmenter, FrameEvaluation& frame, ScanFormat format) {
     const PointCloud& cloud = frame.cloud;
     const Segmentation& out = frame.segmentation;
     try {
@@ -29,7 +28,7 @@ void evaluateFrame(const std::string& scan_path, const std::string& label_path,
         frame.ground_truth = readLabelFile(label_path, cloud.size());
         for (int p = 0; p < 2; ++p)
             frame.ground[p] = scoresFrom(countGround(out.labels, frame.ground_truth, cloud.z,
-                                                     sensor_height, kGroundProtocols[p]));
+                                                     out.sensor_height, kGroundProtocols[p]));
         frame.objects = evaluateObjects(out.cluster_id, out.labels, frame.ground_truth, cloud);
     } catch (const std::exception& e) {
         // Name the scan in every error (the pipeline's own messages do not know it).

@@ -130,8 +130,8 @@ MethodRun runMethod(const std::string& method, const Params& params,
     EvaluationAccumulator totals;
     for (std::size_t f = 0; f < frames.size(); ++f) {
         if (before_frame) before_frame(f);
-        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, params.sensor_height, frame,
-                      frames[f].format);
+        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, frame, frames[f].format);
+        if (frame.segmentation.mount && !run.mount) run.mount = frame.segmentation.mount;
         totals.add(frame);
         FrameRow row;
         row.frame = frames[f].name;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 
 #include "travel/Errors.hpp"
 #include "travel/Pipeline.hpp"
@@ -57,6 +58,18 @@ constexpr Method kMethods[] = {
     {"gpf+euclidean", Ground::Gpf, Objects::Euclidean, true},
 };
 
+// The baselines take the mount as configured; estimating it is TRAVEL's Pipeline's job.
+void rejectAutoMount(const Params& params, const char* method) {
+    const std::pair<const char*, const AutoReal*> mount[] = {
+        {"sensor_height", &params.sensor_height},
+        {"mount_roll_deg", &params.mount_roll_deg},
+        {"mount_pitch_deg", &params.mount_pitch_deg}};
+    for (const auto& [key, value] : mount)
+        if (value->isAuto())
+            throw ConfigError(std::string(key) + ": auto is not supported by method '" + method +
+                              "' (it does not estimate the mount): give a number");
+}
+
 using Clock = std::chrono::steady_clock;
 double msBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
@@ -69,7 +82,11 @@ class MethodSegmenter final : public Segmenter {
         params_.ttmf = method.ttmf;
         params_.cluster_objects = method.objects == Objects::TravelAos;
         params_.validate();
-        if (method.ground == Ground::Tgs) pipeline_ = std::make_unique<Pipeline>(params_);
+        if (method.ground == Ground::Tgs) {
+            pipeline_ = std::make_unique<Pipeline>(params_);
+        } else {
+            rejectAutoMount(params_, method.name);
+        }
     }
 
     const char* name() const override { return method_.name; }
@@ -80,6 +97,8 @@ class MethodSegmenter final : public Segmenter {
                                         ": x, y and z differ in size");
         const Clock::time_point t0 = Clock::now();
         const AlignedCloud* aligned = &aligned_;
+        // The values in use: the pipeline's (estimated `auto` mount) for the tri-grid methods.
+        const Params& params = pipeline_ ? pipeline_->params() : params_;
         if (pipeline_) {
             pipeline_->process(cloud, FrameInput{}, result_);
             out.labels = result_.labels;
@@ -100,16 +119,17 @@ class MethodSegmenter final : public Segmenter {
                 out.cluster_id = result_.cluster_id;
                 break;
             case Objects::Slr:
-                range_image_.build(cloud, aligned->valid, params_);
-                slr_.cluster(cloud, *aligned, range_image_, out.labels, params_, out.cluster_id);
+                range_image_.build(cloud, aligned->valid, params);
+                slr_.cluster(cloud, *aligned, range_image_, out.labels, params, out.cluster_id);
                 break;
             case Objects::Euclidean:
-                euclidean_.cluster(*aligned, out.labels, params_, out.cluster_id);
+                euclidean_.cluster(*aligned, out.labels, params, out.cluster_id);
                 break;
         }
         const Clock::time_point t2 = Clock::now();
         out.stages = pipeline_ ? result_.timings : StageTimings{};
         out.mount = pipeline_ ? result_.mount : MountNote{};
+        out.sensor_height = params.sensor_height;
         if (method_.objects == Objects::TravelAos) {
             // The pipeline times its own stages; the copies above are not part of them.
             out.ground_ms = result_.timings.ground_total;

@@ -22,7 +22,8 @@ std::string parse(const std::string& text, double& out);
 std::string parse(const std::string& text, float& out);
 std::string parse(const std::string& text, int& out);
 std::string parse(const std::string& text, bool& out);
-/// "auto" (any case) keeps out.value as the fallback; otherwise a number as for double.
+/// "auto" (any case) keeps out.value as the fallback; "auto(1.2)" is auto with fallback 1.2;
+/// otherwise a number as for double.
 std::string parse(const std::string& text, AutoReal& out);
 /// `choices` "a|b|c": the matching choice (any case) stored as listed; "" = any text.
 std::string parse(const std::string& text, std::string& out, const char* choices);
@@ -33,7 +34,7 @@ std::string format(double value);  ///< shortest text that reads back exactly, w
 std::string format(float value);
 std::string format(int value);
 std::string format(bool value);
-std::string format(const AutoReal& value);     ///< "auto" or the number
+std::string format(const AutoReal& value);     ///< "auto(FALLBACK)" or the number
 std::string format(const std::string& value);  ///< bare word or quoted
 /// The n-th '|'-separated choice.
 std::string choiceAt(const char* choices, int index);
@@ -88,8 +89,7 @@ std::string rangeError(const char* name, const T& value, const char* unit, doubl
     } else if constexpr (std::is_enum_v<T> || std::is_same_v<T, bool>) {
         return {};
     } else if constexpr (std::is_same_v<T, AutoReal>) {
-        if (value.isAuto()) return {};
-        return rangeError(name, value.value, unit, lo, hi);
+        return rangeError(name, value.value, unit, lo, hi);  // auto: its fallback
     } else {
         const double v = static_cast<double>(value);
         if (v >= lo && v <= hi) return {};  // false for NaN

@@ -74,6 +74,15 @@ struct MountNote {
     bool isWarning() const { return kind == Kind::Mismatch || kind == Kind::NotFound; }
 };
 
+/// Where fixed mount_roll_deg / mount_pitch_deg come from, for the advice of a tilt Mismatch.
+/// Empty `name` (default): the configuration ("set mount_roll_deg: R, mount_pitch_deg: P or
+/// auto"). A caller that sets the angles itself names their source and its remedy (TravelFilter:
+/// the observation's sensorPose), since the configured keys would then change nothing.
+struct MountAnglesSource {
+    std::string name;    ///< e.g. "the sensorPose of 'VELO'"
+    std::string remedy;  ///< the other way out, e.g. how to ignore that source
+};
+
 /// A configured mount farther than this from the measured ground draws a MountNote::Mismatch.
 constexpr double kMountHeightTolerance = 0.3;  // m
 constexpr double kMountTiltToleranceDeg = 5.0;
@@ -86,9 +95,11 @@ MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate
 MountNote notFoundMountNote(const Params& configured, std::size_t frame);
 /// Kind::Mismatch when a fixed value of `configured` is farther than the tolerances from
 /// `ground` (height: distance to the plane; tilt: angle between the plane's normal taken by
-/// `sensor_to_aligned` and vertical), else Kind::None.
+/// `sensor_to_aligned` and vertical), else Kind::None. `angles` names where the fixed angles
+/// come from (MountAnglesSource).
 MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
-                           const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame);
+                           const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame,
+                           const MountAnglesSource& angles = {});
 
 /// The smallest seed_search_radius that reaches the first ground ring: a sensor at height h whose
 /// lowest beam points `lowest_elevation_deg` (< 0) below the horizon sees no ground nearer than

@@ -14,8 +14,10 @@ namespace travel {
 /// A real parameter that may also be `auto` (sensor_height, mount_roll_deg, mount_pitch_deg):
 /// then the Pipeline estimates it from the first frame(s) (MountEstimator.hpp) and keeps the
 /// estimate. `value` is the configured number, or with `auto` the fallback used until an
-/// estimate exists (the value it had before `auto` was set, e.g. the preset's). It reads as a
-/// double (its value) so that code which only needs a number stays unchanged.
+/// estimate exists (the value it had before `auto` was set, e.g. the preset's). In files and
+/// --set, `auto` keeps the value before it as the fallback and `auto(1.2)` sets it; printed
+/// configurations write `auto(FALLBACK)`, so that they read back identically without the preset.
+/// It reads as a double (its value) so that code which only needs a number stays unchanged.
 struct AutoReal {
     double value = 0.0;
     bool automatic = false;

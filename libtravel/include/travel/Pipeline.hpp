@@ -14,6 +14,8 @@
 // radius is raised to reach the first ground ring (firstGroundRingRadius) when it cannot.
 #pragma once
 
+#include <utility>
+
 #include "travel/MountEstimator.hpp"
 #include "travel/Params.hpp"
 #include "travel/PointCloud.hpp"
@@ -41,6 +43,10 @@ class Pipeline {
     /// above-ground object segmentation (AOS) of its non-ground points.
     void process(const PointCloud& cloud, const FrameInput& input, Result& result);
 
+    /// Names where fixed mount_roll_deg / mount_pitch_deg come from when the caller sets them
+    /// (e.g. from a robot description), for the advice of a tilt Mismatch note.
+    void setMountAnglesSource(MountAnglesSource source) { angles_source_ = std::move(source); }
+
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
     /// Rings and columns of the last frame (valid when params.cluster_objects).
@@ -55,6 +61,7 @@ class Pipeline {
     Params configured_;
     Params params_;
     MountEstimator mount_estimator_;
+    MountAnglesSource angles_source_;
     std::size_t frame_index_ = 0;
     bool mount_done_ = false;
     AlignedCloud aligned_;

@@ -44,6 +44,10 @@ struct Result {
     /// News about the sensor mount, set on one frame only (Pipeline: `auto` values estimated,
     /// or configured ones far from the ground); show `mount.message` to the user.
     MountNote mount;
+    /// h_s this frame was segmented with: Pipeline::params().sensor_height, i.e. the estimate
+    /// once an `auto` height is estimated (not the configured fallback). Consumers that need
+    /// the height above ground (FrameFusion, evaluation protocol A) read it here.
+    double sensor_height = 0;
 
     std::size_t count(PointClass c) const { return class_counts[static_cast<int>(c)]; }
 };

@@ -5,8 +5,8 @@
 
 namespace travel {
 
-void fuseFrame(const PlacedFrame& frame, const MapSection& map, float sensor_height,
-               TraversabilityGrid& grid, RayEnds& ends) {
+void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGrid& grid,
+               RayEnds& ends) {
     const AlignedCloud& a = frame.aligned;
     const Result& result = frame.result;
     const TerrainModel& terrain = result.terrain;
@@ -14,6 +14,7 @@ void fuseFrame(const PlacedFrame& frame, const MapSection& map, float sensor_hei
     const float min_h = float(map.obstacle_min_height);
     const float max_h = float(map.obstacle_max_height);
     const float max_ray = float(map.max_ray_length);
+    const float sensor_height = float(result.sensor_height);
     ends.clear();
     const auto addEnd = [&](const Eigen::Vector3f& p, std::vector<Eigen::Vector3f>& near_list) {
         const float range = (p - frame.origin).norm();

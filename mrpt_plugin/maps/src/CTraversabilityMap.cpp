@@ -141,7 +141,7 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
                         float(sensor_in_world.z())),
         mrpt::Clock::toDouble(frame.timestamp)};
     Scratch& s = *scratch_;
-    travel::fuseFrame(placed, options_, float(options_.travel.params.sensor_height), grid_, s.ends);
+    travel::fuseFrame(placed, options_, grid_, s.ends);
 
     // The ray ends as OctoMap keys; the voxels along the rays are carved free, the obstacle
     // ends marked occupied, each voxel once.

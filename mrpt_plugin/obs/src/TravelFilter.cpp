@@ -104,6 +104,13 @@ TravelFilter::SensorPipeline& TravelFilter::pipelineFor(const std::string& label
         logStr(mrpt::system::LVL_INFO,
                "sensor '" + label + "' changed its mount: rebuilding its TRAVEL pipeline");
     entry.pipeline = std::make_unique<travel::Pipeline>(params);
+    // Fixed angles come from the sensorPose here: the configuration keys would change nothing.
+    if (options_.use_sensor_pose)
+        entry.pipeline->setMountAnglesSource(
+            {"the sensorPose of '" + label + "'",
+             "ignore the sensorPose's angles (filter option use_sensor_pose: false, "
+             "travel-rawlog --ignore-sensor-pose) and set mount_roll_deg / mount_pitch_deg "
+             "(or auto)"});
     entry.mount = pose;
     return entry;
 }

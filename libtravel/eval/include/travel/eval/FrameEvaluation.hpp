@@ -7,7 +7,7 @@
 //   travel::eval::FrameEvaluation frame;  // buffers reused across frames
 //   travel::eval::EvaluationAccumulator totals;
 //   for (...) {
-//       travel::eval::evaluateFrame(scan, label, *segmenter, params.sensor_height, frame);
+//       travel::eval::evaluateFrame(scan, label, *segmenter, frame);
 //       totals.add(frame);
 //   }
 //   const travel::eval::EvaluationSummary s = totals.summary();
@@ -48,10 +48,11 @@ struct FrameEvaluation {
 
 /// Reads the scan `scan_path` (readScan() in `format`), segments it with `segmenter` and, when
 /// `label_path` is not empty, reads its SemanticKITTI labels and scores ground under both protocols
-/// (`sensor_height`: protocol A's vegetation rule) and objects. `frame`'s buffers are reused.
+/// (protocol A's vegetation rule with the height the segmenter used, Segmentation::sensor_height)
+/// and objects. `frame`'s buffers are reused.
 /// Every error names the scan (or the label file).
 void evaluateFrame(const std::string& scan_path, const std::string& label_path,
-                   Segmenter& segmenter, double sensor_height, FrameEvaluation& frame,
+                   Segmenter& segmenter, FrameEvaluation& frame,
                    ScanFormat format = ScanFormat::Auto);
 
 /// Over the scored frames: mean and std of each ground score per protocol; over the scored

@@ -55,6 +55,9 @@ struct MethodRun {
     std::string method;
     std::vector<FrameRow> rows;
     EvaluationSummary summary;
+    /// The first note on the sensor mount a frame had (Segmentation::mount), for the caller
+    /// to show; empty when none.
+    MountNote mount;
 };
 
 /// Runs `method` over `frames`; `before_frame(f)` is called before frame f (progress display).

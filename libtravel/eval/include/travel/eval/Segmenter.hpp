@@ -32,6 +32,9 @@ struct Segmentation {
     StageTimings stages;
     /// TRAVEL's note on the sensor mount, on the one frame that has one (Result::mount).
     MountNote mount;
+    /// h_s the segmenter used (TRAVEL: its estimate under `auto`, Result::sensor_height): the
+    /// height protocol A's vegetation rule must use.
+    double sensor_height = 0;
 };
 
 class Segmenter {
@@ -44,7 +47,8 @@ class Segmenter {
 
 /// Methods by name: "travel", "travel-no-ttmf", "tgs", "ransac", "gpf", "gpf+slr", "tgs+slr",
 /// "tgs+euclidean", "gpf+euclidean". Throws ConfigError (listing the valid names) for any
-/// other name, and for invalid params.
+/// other name, and for invalid params. The baselines ("ransac", "gpf*") do not estimate the
+/// mount: `auto` sensor_height / mount_roll_deg / mount_pitch_deg is a ConfigError for them.
 std::unique_ptr<Segmenter> makeSegmenter(const std::string& method, const Params& params);
 
 /// The valid method names, in the order above.

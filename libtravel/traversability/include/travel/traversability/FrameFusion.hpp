@@ -6,7 +6,7 @@
 // deduplicated by VoxelUpdate).
 //
 //   travel::RayEnds ends;                 // reused from frame to frame
-//   travel::fuseFrame({aligned, result, R, t, time_s}, map, sensor_height, grid, ends);
+//   travel::fuseFrame({aligned, result, R, t, time_s}, map, grid, ends);
 #pragma once
 
 #include <Eigen/Core>
@@ -44,11 +44,11 @@ struct RayEnds {
 /// first, so that non-ground points see this frame's ground heights too. A non-ground point's
 /// height above the local ground is TRAVEL's (TerrainModel::heightAboveGround), else the
 /// ground fused in its grid cell this frame, else its cluster's ground_z, else its aligned z
-/// + sensor_height. Below map.obstacle_min_height it is neither ground nor obstacle (kerb
-/// faces, low vegetation: no ray); up to obstacle_max_height it is a grid obstacle; every such
-/// point ends an obstacle ray.
-void fuseFrame(const PlacedFrame& frame, const MapSection& map, float sensor_height,
-               TraversabilityGrid& grid, RayEnds& ends);
+/// + result.sensor_height (the height the pipeline used: its estimate under `auto`). Below
+/// map.obstacle_min_height it is neither ground nor obstacle (kerb faces, low vegetation: no ray);
+/// up to obstacle_max_height it is a grid obstacle; every such point ends an obstacle ray.
+void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGrid& grid,
+               RayEnds& ends);
 
 /// One frame's update of a voxel occupancy map (OctoMap) with every voxel touched once: one ray
 /// per distinct end voxel (not per point), traversed voxels free unless hit in this frame.
