@@ -45,11 +45,11 @@ std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
 namespace {
 // TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the
 // ground), on the one frame that has it.
-void reportMount(const Options& o, const travel_mrpt::CTraversabilityMap& map) {
+void reportMount(const Options& o, const travel_mrpt::CTraversabilityMap& map,
+                 ProgressLine& progress) {
     const travel::MountNote& note = map.lastFrame().result.mount;
     if (note && o.verbosity != Verbosity::Quiet)
-        std::cerr << "travel-map: " << (note.isWarning() ? "warning: " : "") << note.message
-                  << "\n";
+        progress.note(mountNoteLine("travel-map", "", note));
 }
 }  // namespace
 
@@ -85,7 +85,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
                           "frames without a pose are mapped at the identity pose");
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
-            reportMount(o, map);
+            reportMount(o, map, progress);
             ++stats.inserted;
             ++stats.lidar;
         } else {
@@ -166,7 +166,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
         ++stats.lidar;
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
-            reportMount(o, map);
+            reportMount(o, map, progress);
             ++stats.inserted;
         } else
             ++stats.rejected;

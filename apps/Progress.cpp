@@ -144,6 +144,12 @@ void ProgressLine::draw() {
     std::fflush(stderr);
 }
 
+std::string mountNoteLine(const std::string& app, const std::string& context,
+                          const travel::MountNote& note) {
+    return app + ": " + (context.empty() ? "" : context + ": ") +
+           (note.isWarning() ? "warning: " : "") + note.message;
+}
+
 void ProgressLine::note(const std::string& line) {
     if (mode_ == Mode::Terminal && printed_) std::fputc('\n', stderr);
     printed_ = false;  // the next draw starts a fresh line

@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <string>
 
+#include "travel/MountEstimator.hpp"
+
 namespace mrpt::system {
 class COutputLogger;
 }
@@ -65,6 +67,11 @@ struct ProgressState {
 /// "12 frames, 37 %, 8.3 frames/s, ETA 6.8 s" (the fraction of the input read, when N is not),
 /// or "t = 12.3 / 60 s, 2.1x real time" with a simulated time. `unit` names what is counted.
 std::string formatProgress(const ProgressState& state, const std::string& unit = "frames");
+
+/// TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the
+/// measured ground), as every app prints it: "<app>: [<context>: ][warning: ]<message>".
+std::string mountNoteLine(const std::string& app, const std::string& context,
+                          const travel::MountNote& note);
 
 /// "42 s", "3 min 05 s", "1 h 02 min".
 std::string formatDuration(double seconds);

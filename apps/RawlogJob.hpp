@@ -114,6 +114,9 @@ class RawlogSegmenter {
         }
     }
 
+    /// Notes and warnings go through `progress` from now on (it must outlive this object's use).
+    void attach(ProgressLine& progress) { progress_ = &progress; }
+
     /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
     bool processMotion(const mrpt::serialization::CSerializable& record) {
         return motion_.process(record);
@@ -154,8 +157,7 @@ class RawlogSegmenter {
         csv_.add(frame, obs, frame_);
         reference_.add(result);
         if (result.mount && !options_.quiet)
-            std::cerr << "travel-rawlog: " << (result.mount.isWarning() ? "warning: " : "")
-                      << obs.sensorLabel << ": " << result.mount.message << "\n";
+            say(mountNoteLine("travel-rawlog", obs.sensorLabel, result.mount));
         if (!options_.png_prefix.empty() && frame_.aligned)
             writePictures(frame, obs, *frame_.aligned);
     }
@@ -196,8 +198,14 @@ class RawlogSegmenter {
     }
 
     void noteOnce(const std::string& note) {
-        if (notes_.insert(note).second && !options_.quiet)
-            std::cerr << "travel-rawlog: note: " << note << "\n";
+        if (notes_.insert(note).second && !options_.quiet) say("travel-rawlog: note: " + note);
+    }
+    // On a line of its own above the progress line, once one is attached.
+    void say(const std::string& line) {
+        if (progress_)
+            progress_->note(line);
+        else
+            std::cerr << line << "\n";
     }
 
     const Options& options_;
@@ -212,6 +220,7 @@ class RawlogSegmenter {
     travel_mrpt::LabelledOutputPool outputs_;
     Totals totals_;
     travel_mrpt::TravelFrame frame_;  // reused across frames
+    ProgressLine* progress_ = nullptr;
 };
 
 /// The summary on stdout.

@@ -61,8 +61,7 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
         progress.update(f + 1);
     });
     if (run.mount && verbosity != travel::apps::Verbosity::Quiet)
-        progress.note("travel-eval: " + method + ": " + (run.mount.isWarning() ? "warning: " : "") +
-                      run.mount.message);
+        progress.note(travel::apps::mountNoteLine("travel-eval", method, run.mount));
     return run;
 }
 

@@ -131,8 +131,7 @@ int run(int argc, char** argv) {
         travel::eval::evaluateFrame(files[f], label_path, *segmenter, frame, format);
         totals.add(frame);
         if (const travel::MountNote& note = frame.segmentation.mount; note && !quiet)
-            progress.note(std::string("travel-kitti: ") + (note.isWarning() ? "warning: " : "") +
-                          note.message);
+            progress.note(travel::apps::mountNoteLine("travel-kitti", "", note));
         const travel::PointCloud& cloud = frame.cloud;
         const travel::eval::Segmentation& result = frame.segmentation;
 

@@ -245,6 +245,7 @@ int run(int argc, char** argv) {
     const auto start = Clock::now();
     travel::apps::ProgressLine progress(
         "travel-rawlog", 0, travel::apps::verbosityFrom(options.quiet, options.verbose));
+    segmenter.attach(progress);
     std::vector<CObservation::Ptr> added;
     try {
         while (auto record = reader.next()) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
@@ -111,8 +112,7 @@ void renderMethod(const std::string& method, const travel::Params& params,
     segmenter->segment(cloud, seg);
 
     if (seg.mount && !o.quiet)
-        std::cerr << "travel-view: " << method << ": " << (seg.mount.isWarning() ? "warning: " : "")
-                  << seg.mount.message << "\n";
+        std::cerr << travel::apps::mountNoteLine("travel-view", method, seg.mount) << "\n";
 
     travel::Result result;
     std::unique_ptr<travel::Pipeline> pipeline;
