@@ -36,7 +36,7 @@ if(NOT files)
   file(GLOB_RECURSE files RELATIVE "${ROOT}" LIST_DIRECTORIES false
     "${ROOT}/*.md" "${ROOT}/*.cpp" "${ROOT}/*.hpp" "${ROOT}/*.h" "${ROOT}/*.cmake"
     "${ROOT}/*CMakeLists.txt" "${ROOT}/*.sh" "${ROOT}/*.yaml" "${ROOT}/*.ini" "${ROOT}/*.in")
-  list(FILTER files EXCLUDE REGEX "^(build|out|travel-out)")
+  list(FILTER files EXCLUDE REGEX "^(build[^/]*|out|travel-out)/")
 endif()
 list(FILTER files INCLUDE REGEX
   "(\\.md|\\.cpp|\\.hpp|\\.h|\\.cmake|CMakeLists\\.txt|\\.sh|\\.yaml|\\.ini|\\.in|^\\.ci/run)$")
