@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -116,6 +117,9 @@ class CommandLine {
     CommandLine(const std::string& app, const std::string& description,
                 std::vector<std::string> examples)
         : output_(app, std::move(examples)), cmd(description, ' ', TRAVEL_VERSION) {
+        // TCLAP's setOutput() neither deletes the StdOutput its constructor allocated nor, once
+        // an output was set, deletes it in ~CmdLine: free it here (LeakSanitizer found it).
+        std::unique_ptr<TCLAP::CmdLineOutput> tclap_default(cmd.getOutput());
         cmd.setOutput(&output_);
     }
     /// Returns the exit code to stop with (0 after --help / --version, 1 after an error, the

@@ -23,7 +23,7 @@ struct Buffer final : travel::io::ByteSink, travel::io::ByteSource {
     }
     std::size_t read(void* data, std::size_t n) override {
         n = std::min(n, bytes.size() - read_at);
-        std::memcpy(data, bytes.data() + read_at, n);
+        if (n > 0) std::memcpy(data, bytes.data() + read_at, n);  // data() may be null
         read_at += n;
         return n;
     }
