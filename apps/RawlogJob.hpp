@@ -91,6 +91,14 @@ struct Options {
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 
+/// The filter's options from a loaded configuration: its travel and filter sections.
+inline travel_mrpt::TravelFilterOptions filterOptionsFrom(const travel::Config& config) {
+    travel_mrpt::TravelFilterOptions options;
+    options.params = config.travel;
+    static_cast<travel::FilterSection&>(options) = config.filter;
+    return options;
+}
+
 class RawlogSegmenter {
   public:
     RawlogSegmenter(const Options& options, const travel_mrpt::TravelFilterOptions& filter_options)
