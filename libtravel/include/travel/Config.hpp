@@ -123,7 +123,7 @@ VelocitySource velocitySourceFromString(const std::string& text);
 #define TRAVEL_REGRESS_LIST(X)                                                                   \
     X(double, min_class_agreement, 100.0, "%", 0.0, 100.0,                                       \
       "Least share of the points whose class (ground, non-ground, outlier, invalid) is the "     \
-      "golden one, over all compared frames and in every frame")                                 \
+      "golden one, in every compared frame")                                                     \
     X(double, min_cluster_agreement, 100.0, "%", 0.0, 100.0,                                     \
       "Least share of the clustered points (in either run) that lie in one-to-one matched "      \
       "clusters, whatever the cluster ids, over all compared frames")                            \
