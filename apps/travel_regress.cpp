@@ -113,6 +113,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
     o.pictures = static_cast<std::size_t>(pictures.getValue());
     o.picture.size_px = picture.sidePixels();
     o.picture.metres_per_pixel = picture.metresPerPixel();
+    o.replay.app = "travel-regress";
     o.replay.quiet = flags.quiet();
     o.replay.verbose = flags.verbose();
     o.replay.plain_clouds = false;  // only the labels object is compared
