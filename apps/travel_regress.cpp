@@ -64,7 +64,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
         "max_missing_frames, max_extra_frames, max_time_ratio; defaults: no difference "
         "allowed, timing not checked), in --config or with --set regress.KEY=VALUE.\n"
         "Outputs: one verdict line on stdout (PASS: ... or FAIL: ... with the tolerances "
-        "exceeded); with -o DIR: DIR/frames.csv (one line per frame: counts, confusion, "
+        "exceeded; with -q only a FAIL); with -o DIR: DIR/frames.csv (one line per frame: counts, "
+        "confusion, "
         "clusters, nodes, times; missing and extra frames with their status), DIR/report.md "
         "(totals, confusion matrix, the frames that differ and what changed, missing and extra "
         "frames, timing) and DIR/diff_<frame>.png for the --pictures most different frames "
@@ -217,7 +218,6 @@ class Regression {
 
 void writeOutputs(const RegressOptions& o, travel::Config& configuration, Regression& regression) {
     const fs::path dir(o.report_dir);
-    travel::apps::createParentFolder((dir / "x").string());
     std::vector<std::pair<std::size_t, std::string>> names;
     mrpt::img::CImage image;
     for (const auto& [index, picture] : regression.pictures()) {
@@ -248,6 +248,9 @@ int run(int argc, char** argv) {
     const std::string limit_note = travel::apps::applyMemoryLimit(o.replay.max_memory_mib);
     if (!limit_note.empty() && !o.replay.quiet)
         std::cerr << "travel-regress: note: " << limit_note << "\n";
+    // The report folder first: a wrong -o fails before the replay.
+    if (!o.report_dir.empty())
+        travel::apps::createParentFolder((fs::path(o.report_dir) / "report.md").string());
     travel_mrpt::registerClasses();  // the golden rawlog's CObservationTravelLabels
     Regression regression(o);        // opens the golden rawlog: errors before the replay
     travel_mrpt::RawlogReader reader(o.replay.input);
@@ -283,7 +286,8 @@ int run(int argc, char** argv) {
 
     const travel::RegressionVerdict verdict = regression.report().verdict(configuration.regress);
     if (!o.report_dir.empty()) writeOutputs(o, configuration, regression);
-    std::cout << "travel-regress: " << verdict.line << "\n";
+    // -q: nothing but errors, and the verdict when it fails (the answer a CI log needs).
+    if (!o.replay.quiet || !verdict.passed) std::cout << "travel-regress: " << verdict.line << "\n";
     if (!o.replay.quiet && !o.report_dir.empty())
         std::cout << "  report: " << (fs::path(o.report_dir) / "report.md").string()
                   << ", per-frame CSV: " << (fs::path(o.report_dir) / "frames.csv").string()
