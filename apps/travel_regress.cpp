@@ -52,7 +52,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
         "Regression test of TRAVEL's labels on a recorded rawlog: replays -i IN.rawlog with the "
         "given configuration (as travel-rawlog does) and compares, frame by frame, with the "
         "travel_mrpt::CObservationTravelLabels of --golden GOLDEN.rawlog (a rawlog travel-rawlog "
-        "wrote, e.g. with the configuration or library version you trust). Frames are paired by "
+        "wrote with the configuration or library version you trust: travel-rawlog -i IN.rawlog "
+        "-o GOLDEN.rawlog ...). Frames are paired by "
         "timestamp and sensor label; golden frames without a replayed twin are 'missing', "
         "replayed frames without a golden one 'extra' (both reported, never skipped).\n"
         "Compared per frame: the class of every point (confusion counts golden -> run, class "
@@ -72,9 +73,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
         "(golden classes, points whose class changed in black).\n"
         "Exit status: 0 within the tolerances, 1 outside them, 2 on an error (unreadable or "
         "truncated rawlog, golden rawlog without labels, bad flags).",
-        {"travel-rawlog -i drive.rawlog -o golden.rawlog -p vlp16   # once, with the trusted "
-         "version",
-         "travel-regress -i drive.rawlog --golden golden.rawlog -p vlp16 -o regress/",
+        {"travel-regress -i drive.rawlog --golden golden.rawlog -p vlp16",
+         "travel-regress -i drive.rawlog --golden golden.rawlog -c robot.yaml -o regress/ -q",
          "travel-regress -i drive.rawlog --golden golden.rawlog -p vlp16 --set "
          "sensor_height=1.2 --set regress.min_class_agreement=99.5 --set "
          "regress.max_split_clusters=3"});
