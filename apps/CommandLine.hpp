@@ -276,9 +276,10 @@ struct MemoryLimitFlag {
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
 /// or an uncaught exception). Ctrl-C / SIGTERM: "<name>: interrupted" and exit code 130, after
-/// the stack unwound (temporary files and partial outputs removed).
+/// the stack unwound (temporary files and partial outputs removed). `error_code`: the exit code
+/// of an error (travel-regress keeps 1 for "outside the tolerances").
 template <class Run>
-int runMain(const char* name, Run&& run, int argc, char** argv) {
+int runMain(const char* name, Run&& run, int argc, char** argv, int error_code = 1) {
     installInterruptHandlers();
     try {
         const int code = run(argc, argv);
@@ -298,7 +299,7 @@ int runMain(const char* name, Run&& run, int argc, char** argv) {
     } catch (...) {
         std::cerr << name << ": error: unknown exception\n";
     }
-    return 1;
+    return error_code;
 }
 
 }  // namespace travel::apps

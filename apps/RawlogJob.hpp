@@ -80,7 +80,8 @@ class ReferenceLog {
 };
 
 struct Options {
-    std::optional<int> exit_code;  // set when the command line says stop (--help, error)
+    std::optional<int> exit_code;       // set when the command line says stop (--help, error)
+    std::string app = "travel-rawlog";  // the notes' prefix (travel-regress replays too)
     std::string input, output, sensor_label_regex, png_prefix, csv, label_reference;
     std::string pcap_model, pcap_calibration;  // .pcap inputs
     bool plain_clouds = true;
@@ -90,6 +91,14 @@ struct Options {
     double png_metres_per_pixel = 0.075;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
+
+/// The filter's options from a loaded configuration: its travel and filter sections.
+inline travel_mrpt::TravelFilterOptions filterOptionsFrom(const travel::Config& config) {
+    travel_mrpt::TravelFilterOptions options;
+    options.params = config.travel;
+    static_cast<travel::FilterSection&>(options) = config.filter;
+    return options;
+}
 
 class RawlogSegmenter {
   public:
@@ -157,7 +166,7 @@ class RawlogSegmenter {
         csv_.add(frame, obs, frame_);
         reference_.add(result);
         if (result.mount && !options_.quiet)
-            say(mountNoteLine("travel-rawlog", obs.sensorLabel, result.mount));
+            say(mountNoteLine(options_.app, obs.sensorLabel, result.mount));
         if (!options_.png_prefix.empty() && frame_.aligned)
             writePictures(frame, obs, *frame_.aligned);
     }
@@ -198,7 +207,7 @@ class RawlogSegmenter {
     }
 
     void noteOnce(const std::string& note) {
-        if (notes_.insert(note).second && !options_.quiet) say("travel-rawlog: note: " + note);
+        if (notes_.insert(note).second && !options_.quiet) say(options_.app + ": note: " + note);
     }
     // On a line of its own above the progress line, once one is attached.
     void say(const std::string& line) {

@@ -209,13 +209,6 @@ travel_mrpt::RawlogReader openInput(const Options& o) {
 }
 #endif
 
-travel_mrpt::TravelFilterOptions loadFilterOptions(const travel::Config& config) {
-    travel_mrpt::TravelFilterOptions options;
-    options.params = config.travel;
-    static_cast<travel::FilterSection&>(options) = config.filter;
-    return options;
-}
-
 int run(int argc, char** argv) {
     travel::Config configuration;
     const Options options = parseCommandLine(argc, argv, configuration);
@@ -225,7 +218,8 @@ int run(int argc, char** argv) {
         std::cerr << "travel-rawlog: note: " << limit_note << "\n";
     // Our own classes (CObservationTravelLabels) must be readable: inputs may be earlier outputs.
     travel_mrpt::registerClasses();
-    const travel_mrpt::TravelFilterOptions filter_options = loadFilterOptions(configuration);
+    const travel_mrpt::TravelFilterOptions filter_options =
+        travel::apps::filterOptionsFrom(configuration);
     if (fs::exists(options.output) && fs::exists(options.input) &&
         fs::equivalent(options.input, options.output))
         throw AppError(options.output + ": output would overwrite the input");

@@ -47,3 +47,27 @@ if(TARGET travel_mrpt_hwdrivers)
       -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog_pcap.cmake)
   set_tests_properties(apps.travel_rawlog_pcap_cli PROPERTIES TIMEOUT 300)
 endif()
+
+# travel-regress (docs/regression.md): exit codes, reports and errors ...
+add_test(NAME apps.travel_regress_cli
+  COMMAND ${CMAKE_COMMAND}
+    -DTRAVEL_RAWLOG=$<TARGET_FILE:travel-rawlog>
+    -DTRAVEL_REGRESS=$<TARGET_FILE:travel-regress>
+    -DSAMPLE=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_regress
+    -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_regress.cmake)
+set_tests_properties(apps.travel_regress_cli PROPERTIES TIMEOUT 300)
+# ... and the project's own rawlog regressions through travel_add_rawlog_regression, the function
+# users call: the golden rawlogs are written by travel-rawlog first (fixture), then replayed.
+include(${PROJECT_SOURCE_DIR}/cmake/TravelRegression.cmake)
+set(regress_dir ${CMAKE_CURRENT_BINARY_DIR}/rawlog_regression)
+add_test(NAME apps.rawlog_regression_golden
+  COMMAND travel-rawlog -i /usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
+    -o ${regress_dir}/vlp16_golden.rawlog -c ${PROJECT_SOURCE_DIR}/share/configs/mrpt_sample_vlp16.yaml -q)
+set_tests_properties(apps.rawlog_regression_golden PROPERTIES FIXTURES_SETUP rawlog_regression)
+travel_add_rawlog_regression(NAME apps.rawlog_regression_vlp16
+  RAWLOG /usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
+  GOLDEN ${regress_dir}/vlp16_golden.rawlog
+  CONFIG ${PROJECT_SOURCE_DIR}/share/configs/mrpt_sample_vlp16.yaml
+  REPORT_DIR ${regress_dir}/vlp16 TIMEOUT 120)
+set_tests_properties(apps.rawlog_regression_vlp16 PROPERTIES FIXTURES_REQUIRED rawlog_regression)

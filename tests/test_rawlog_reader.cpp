@@ -4,6 +4,7 @@
 // travel-map: records of both formats, the exact error messages (file, record, what), and the
 // robot pose from odometry actions and odometry observations.
 #include <gtest/gtest.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -17,8 +18,11 @@
 #include <string>
 
 #include "travel/Errors.hpp"
+#include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
+#include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
+#include "travel_mrpt/TravelLabelsReader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -94,6 +98,57 @@ TEST(RawlogReader, TruncatedRecordIsNamed) {
     fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
     fs::resize_file(cut, (ends[1] + ends[2]) / 2);  // inside record 2
     EXPECT_EQ(errorOf(cut), cut + ": record 2: truncated (end of file inside the record)");
+}
+
+/// A labelled gzip rawlog as travel-rawlog writes them: an odometry record, then a SensoryFrame
+/// holding a CObservationTravelLabels of n points, then a bare one.
+void writeLabelledRawlog(const std::string& path, std::size_t n) {
+    registerClasses();
+    mrpt::io::CFileGZOutputStream file(path);
+    auto out = mrpt::serialization::archiveFrom(file);
+    out << *odometry(0);
+    auto labels = CObservationTravelLabels::Create();
+    labels->sensorLabel = "lidar_travel";
+    for (std::size_t i = 0; i < n; ++i) {
+        // Varied values: the gzip stream must stay long enough to be cut inside the object.
+        labels->x.push_back(0.37f * static_cast<float>(i % 977));
+        labels->y.push_back(0.11f * static_cast<float>(i % 331));
+        labels->z.push_back(0.01f * static_cast<float>(i % 97));
+        labels->intensity.push_back(static_cast<float>(i % 251));
+        labels->labels.push_back(static_cast<uint8_t>(i % 4));
+        labels->clusterId.push_back(0);
+    }
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(labels);
+    out << sf;
+    auto second = CObservationTravelLabels::Create();
+    second->sensorLabel = "lidar2_travel";
+    out << *second;
+}
+
+TEST(TravelLabelsReader, ReadsLabelsFromBothFormats) {
+    const std::string path = testPath("labelled.rawlog");
+    writeLabelledRawlog(path, 100);
+    TravelLabelsReader reader(path);
+    const auto first = reader.next();
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->sensorLabel, "lidar_travel");
+    EXPECT_EQ(first->size(), 100u);
+    const auto second = reader.next();
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->sensorLabel, "lidar2_travel");
+    EXPECT_FALSE(reader.next());
+    EXPECT_EQ(reader.count(), 2u);
+}
+
+TEST(RawlogReader, TruncatedLabelledGzipRecordIsNamed) {
+    // The labels object reads its own bytes: a cut inside it is still "truncated".
+    const std::string path = testPath("labelled_full.rawlog");
+    writeLabelledRawlog(path, 200000);
+    const std::string cut = testPath("labelled_cut.rawlog");
+    fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, fs::file_size(path) / 2);
+    EXPECT_EQ(errorOf(cut), cut + ": record 1: truncated (end of file inside the record)");
 }
 
 TEST(RawlogReader, NotARawlog) {

@@ -107,6 +107,10 @@ void NavSection::validate() const {
     require(max_height > 0, "max_height: must be > 0 [m]");
 }
 
+void RegressSection::validate() const {
+    checkRanges(*this);
+}
+
 void Config::validate() const {
     visitSections(*this, [](const auto& section) {
         try {

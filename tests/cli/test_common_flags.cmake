@@ -3,7 +3,8 @@
 # non-zero exit, a missing -o is named, and -i/-o/-p/--set/-f with -q succeed printing nothing
 # on stdout.
 # Variables: APP (the app's name), EXE, VERSION (CMake's PROJECT_VERSION), WORK_DIR, DATA_DIR,
-# MAKE_SYNTHETIC (travel-rawlog, travel-map).
+# MAKE_SYNTHETIC (travel-rawlog, travel-map, travel-regress), TRAVEL_RAWLOG (travel-regress's
+# golden rawlog).
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -145,6 +146,20 @@ elseif(APP STREQUAL "travel-rawlog")
   if(EXISTS ${WORK_DIR}/frames.csv)
     message(FATAL_ERROR "a failed run left ${WORK_DIR}/frames.csv behind")
   endif()
+elseif(APP STREQUAL "travel-regress")
+  expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/street.rawlog)
+  expect_failure_mentioning("missing --golden" ${EXE} -i ${WORK_DIR}/street.rawlog)
+  expect_failure_mentioning("only -f auto" ${EXE} -i ${WORK_DIR}/street.rawlog
+                            --golden ${WORK_DIR}/street.rawlog -f pcd)
+  expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/golden.rawlog ${common})
+  # -o is optional (the report folder); -q prints nothing when the comparison passes.
+  expect_quiet_success(${EXE} -i ${WORK_DIR}/street.rawlog --golden ${WORK_DIR}/golden.rawlog
+                       -f auto ${common})
+  expect_quiet_success(${EXE} -i ${WORK_DIR}/street.rawlog --golden ${WORK_DIR}/golden.rawlog
+                       -o ${WORK_DIR}/regress ${common})
+  expect_file(${WORK_DIR}/regress/report.md)
+  expect_failure_mentioning("${no_folder}" ${EXE} -i ${WORK_DIR}/street.rawlog
+                            --golden ${WORK_DIR}/golden.rawlog -o ${WORK_DIR}/afile/regress)
 elseif(APP STREQUAL "travel-nav-sim")
   expect_failure_mentioning("unknown flag -w; did you mean -i/--input?" ${EXE} -w flat_obstacles.world)
   expect_quiet_success(${EXE} -i flat_obstacles.world -o ${WORK_DIR}/nav --timeout 1 --no-navlog

@@ -1,5 +1,7 @@
 # Install the build tree into WORK_DIR/prefix, then build and run the consumer against it (with
-# WITH_MRPT=ON, also one program per MRPT library: travel::mrpt_obs, _maps, _nav).
+# WITH_MRPT=ON, also one program per MRPT library: travel::mrpt_obs, _maps, _nav, and the
+# consumer's rawlog regression test: a golden rawlog written by the installed travel-rawlog,
+# compared by the installed travel_add_rawlog_regression, run through ctest).
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -11,7 +13,18 @@ set(flags "")
 if(SANITIZE)
   set(flags "-fsanitize=${SANITIZE}")
 endif()
+set(regression "")
+set(sample /usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog)
+if(WITH_MRPT AND EXISTS ${sample})
+  execute_process(COMMAND ${WORK_DIR}/prefix/bin/travel-rawlog -i ${sample}
+                          -o ${WORK_DIR}/golden.rawlog -p vlp16 -q RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the installed travel-rawlog failed: ${rc}")
+  endif()
+  set(regression -DRAWLOG=${sample} -DGOLDEN=${WORK_DIR}/golden.rawlog)
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -G ${GENERATOR}
+                        ${regression}
                         -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
                         "-DCMAKE_CXX_FLAGS=${flags}" "-DCMAKE_EXE_LINKER_FLAGS=${flags}"
                         -DWITH_MRPT=${WITH_MRPT}
@@ -33,3 +46,13 @@ foreach(program IN LISTS programs)
     message(FATAL_ERROR "${program} failed: ${rc}")
   endif()
 endforeach()
+if(regression)
+  execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --output-on-failure --no-tests=error -R consumer.rawlog_regression
+                  WORKING_DIRECTORY ${WORK_DIR}/build RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the consumer's rawlog regression test failed: ${rc}")
+  endif()
+  if(NOT EXISTS ${WORK_DIR}/build/regression/report.md)
+    message(FATAL_ERROR "the consumer's rawlog regression wrote no report")
+  endif()
+endif()

@@ -26,7 +26,7 @@ namespace {
 constexpr int kMaxPresetDepth = 8;
 
 const std::vector<std::string>& sectionNames() {
-    static const std::vector<std::string> names = {"travel", "filter", "map", "nav"};
+    static const std::vector<std::string> names = {"travel", "filter", "map", "nav", "regress"};
     return names;
 }
 
@@ -122,7 +122,7 @@ class Applier {
 
     void applySectionName(const std::string& name, const Location& at) {
         if (isSection(name)) return;
-        fail(at, "unknown section '" + name + "' (sections: travel, filter, map, nav)" +
+        fail(at, "unknown section '" + name + "' (sections: travel, filter, map, nav, regress)" +
                      fields::didYouMean(name, sectionNames()));
     }
 
@@ -136,7 +136,8 @@ class Applier {
         if (root.IsNull()) return;
         if (!root.IsMap()) {
             fail(locationOf(root.Mark()),
-                 "expected 'key: value' lines or the sections travel:, filter:, map:, nav:");
+                 "expected 'key: value' lines or the sections travel:, filter:, map:, nav:, "
+                 "regress:");
         }
         for (const auto& item : root) {
             const std::string key = scalarKey(item.first);
@@ -409,7 +410,8 @@ void applyConfigOverride(const std::string& assignment, Config& config) {
 std::string configToYaml(const Config& config) {
     std::string yaml =
         "# TRAVEL configuration: one section per stage (travel: ground segmentation, filter: the\n"
-        "# MRPT observation filter, map: the traversability map, nav: the obstacle sources).\n"
+        "# MRPT observation filter, map: the traversability map, nav: the obstacle sources,\n"
+        "# regress: the tolerances of travel-regress).\n"
         "# Every key is optional: a missing key keeps its default. A first key `preset: NAME`\n"
         "# starts from share/presets/NAME.yaml.\n";
     visitSections(config, [&](const auto& section) {

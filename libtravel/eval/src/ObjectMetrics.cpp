@@ -296,28 +296,20 @@ ObjectScores evaluateObjects(const std::vector<uint32_t>& cluster_id,
         score.semantic = inst[s].semantic, score.instance = inst[s].instance;
         score.points = e - s;
         if (score.points >= options.min_instance_points) {
-            std::size_t best_count = 0;
-            for (std::size_t a = s; a < e;) {
-                std::size_t b = a;
-                while (b < e && inst[b].cluster == inst[a].cluster) ++b;
-                // Ascending ids and a strict '>': ties go to the smaller id.
-                if (inst[a].cluster != 0 && b - a > best_count) {
-                    best_count = b - a;
-                    score.best_cluster = inst[a].cluster;
-                }
-                a = b;
-            }
+            const GroupInClusters group =
+                locateGroup(e - s, [&](std::size_t k) { return inst[s + k].cluster; });
+            score.best_cluster = group.best_cluster;
             if (score.best_cluster != 0) {
-                score.coverage = static_cast<double>(best_count) / static_cast<double>(e - s);
-                score.purity = static_cast<double>(best_count) /
-                               static_cast<double>(cluster_size[score.best_cluster]);
+                const std::size_t best_size = cluster_size[score.best_cluster];
+                score.coverage = static_cast<double>(group.best_count) / static_cast<double>(e - s);
+                score.purity =
+                    static_cast<double>(group.best_count) / static_cast<double>(best_size);
                 ++out.clustered;
                 purity_sum += score.purity;
-                // Integer tests: exactly half is "no majority" without rounding doubt.
-                if (2 * best_count <= cluster_size[score.best_cluster]) ++out.merged;
+                if (group.mergedInto(best_size)) ++out.merged;
             }
             coverage_sum += score.coverage;
-            if (2 * best_count <= score.points) ++out.split;
+            if (group.split()) ++out.split;
             out.instances.push_back(score);
         }
         s = e;

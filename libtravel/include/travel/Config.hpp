@@ -1,10 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Every option of TRAVEL, in four named sections of one configuration (YAML `travel:`,
-// `filter:`, `map:`, `nav:`; ini [travel], [filter], [map], [nav]). Each section is declared
-// once, like Params: X(type, name, default, unit, min, max, description). For std::string and
-// enum options the unit slot lists the allowed values ("a|b|c"; "" = any text) and min/max are
-// unused; an enum's values are listed in declaration order. Each stage receives its own
+// Every option of TRAVEL, in five named sections of one configuration (YAML `travel:`,
+// `filter:`, `map:`, `nav:`, `regress:`; ini [travel], [filter], [map], [nav], [regress]). Each
+// section is declared once, like Params: X(type, name, default, unit, min, max, description). For
+// std::string and enum options the unit slot lists the allowed values ("a|b|c"; "" = any text) and
+// min/max are unused; an enum's values are listed in declaration order. Each stage receives its own
 // section: the ground segmentation Params, the MRPT filter FilterSection, the map MapSection,
 // the obstacle sources NavSection. Reading files is travel::config's job (ConfigIO.hpp).
 #pragma once
@@ -118,6 +118,29 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "How long earlier obstacles are kept (0: no memory)")                                  \
     X(double, memory_radius, 1.0, "m", 0.0, 1e6, "... while within this xy distance of the robot")
 
+// Regression tolerances of travel-regress (a replay compared with a golden labelled rawlog,
+// travel::compareFrames; docs/regression.md): within them the comparison passes (exit 0).
+#define TRAVEL_REGRESS_LIST(X)                                                                   \
+    X(double, min_class_agreement, 100.0, "%", 0.0, 100.0,                                       \
+      "Least share of the points whose class (ground, non-ground, outlier, invalid) is the "     \
+      "golden one, in every compared frame")                                                     \
+    X(double, min_cluster_agreement, 100.0, "%", 0.0, 100.0,                                     \
+      "Least share of the clustered points (in either run) that lie in one-to-one matched "      \
+      "clusters, whatever the cluster ids, over all compared frames")                            \
+    X(int, max_split_clusters, 0, "", 0, 1000000000,                                             \
+      "Most golden clusters (all frames) that no cluster of the run holds a strict majority of") \
+    X(int, max_merged_clusters, 0, "", 0, 1000000000,                                            \
+      "Most golden clusters (all frames) that are no strict majority of their best run cluster") \
+    X(int, max_changed_nodes, 0, "", 0, 1000000000,                                              \
+      "Most terrain-model nodes (all frames) whose traversability changed")                      \
+    X(int, max_missing_frames, 0, "", 0, 1000000000,                                             \
+      "Most golden frames without a frame of the run (timestamp and sensor label)")              \
+    X(int, max_extra_frames, 0, "", 0, 1000000000,                                               \
+      "Most frames of the run without a golden frame")                                           \
+    X(double, max_time_ratio, 0.0, "", 0.0, 1e6,                                                 \
+      "Most run / golden ratio of the median TRAVEL time per frame (0 = timing not checked: it " \
+      "depends on the machine)")
+
 #define TRAVEL_SECTION_MEMBER(type, name, def, unit, lo, hi, doc) type name = def;
 
 struct FilterSection {
@@ -156,6 +179,11 @@ struct NavSection {
     void validate() const;
 };
 
+struct RegressSection {
+    TRAVEL_REGRESS_LIST(TRAVEL_SECTION_MEMBER)
+    void validate() const;
+};
+
 #undef TRAVEL_SECTION_MEMBER
 
 /// The whole configuration: one struct per section.
@@ -164,6 +192,7 @@ struct Config {
     FilterSection filter;
     MapSection map;
     NavSection nav;
+    RegressSection regress;
     /// Every section's validate(); the message names the section ("map.max_x: ...").
     void validate() const;
 };
@@ -191,16 +220,18 @@ TRAVEL_DEFINE_VISITOR(GridGeometry, TRAVEL_MAP_GRID_LIST, "map")
 TRAVEL_DEFINE_VISITOR(GridFusionParams, TRAVEL_MAP_FUSION_LIST, "map")
 TRAVEL_DEFINE_VISITOR(MapSection, TRAVEL_MAP_LIST, "map")
 TRAVEL_DEFINE_VISITOR(NavSection, TRAVEL_NAV_LIST, "nav")
+TRAVEL_DEFINE_VISITOR(RegressSection, TRAVEL_REGRESS_LIST, "regress")
 #undef TRAVEL_DEFINE_VISITOR
 #undef TRAVEL_SECTION_VISIT
 
-/// f(section) for each section of `config`, in file order (travel, filter, map, nav).
+/// f(section) for each section of `config`, in file order (travel, filter, map, nav, regress).
 template <class C, class F>
 void visitSections(C& config, F&& f) {
     f(config.travel);
     f(config.filter);
     f(config.map);
     f(config.nav);
+    f(config.regress);
 }
 
 }  // namespace travel

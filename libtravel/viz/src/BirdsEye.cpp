@@ -244,4 +244,50 @@ Picture renderBirdsEye(const AlignedCloud& points, const std::vector<PointClass>
                           terrain, opt);
 }
 
+Picture renderClassChanges(const float* x, const float* y, std::size_t n,
+                           const std::vector<PointClass>& golden_labels,
+                           const std::vector<uint8_t>& changed, const BirdsEyeOptions& opt) {
+    if (changed.size() != n)
+        throw std::invalid_argument("renderClassChanges: " + std::to_string(changed.size()) +
+                                    " change flags for " + std::to_string(n) + " points");
+    Picture picture = renderBirdsEye(x, y, n, golden_labels, {}, nullptr, opt);
+    Raster& out = picture.raster;
+    const Rgb kChanged = kBlack;
+    const int size = opt.size_px;
+    const Projection proj{size / 2.0, opt.metres_per_pixel};
+    // One pixel larger than the other points: a changed point stays visible over its neighbours.
+    const int s = std::max(1, opt.point_px) + 1;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!changed[i]) continue;
+        const int u = static_cast<int>(std::lround(proj.u(y[i])));
+        const int v = static_cast<int>(std::lround(proj.v(x[i])));
+        if (u < s || v < s || u >= size - s || v >= size - s) continue;
+        out.fillRect(u - s / 2, v - s / 2, u - s / 2 + s - 1, v - s / 2 + s - 1, kChanged);
+    }
+    if (opt.legend) {  // top right, apart from renderBirdsEye's legend
+        const std::string text = "class changed";
+        const int w = 34 + 9 * static_cast<int>(text.size()) + 6;
+        textBox(out, size - 1 - w, 0, size - 1, 22);
+        out.fillRect(size - w + 5, 6, size - w + 27, 16, kChanged);
+        picture.text.push_back({size - w + 33, 5, text});
+    }
+    return picture;
+}
+
+Picture renderClassChanges(const LabelledFrame& golden, const std::vector<uint8_t>& changed,
+                           const BirdsEyeOptions& opt) {
+    const std::size_t n = golden.size();
+    if (golden.x.size() != n || golden.y.size() != n || golden.z.size() != n)
+        throw std::invalid_argument("renderClassChanges: the frame's vectors differ in size");
+    std::vector<float> x(n), y(n);
+    const Eigen::Matrix3f& r = golden.alignedRotation;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3f p = r * Eigen::Vector3f(golden.x[i], golden.y[i], golden.z[i]);
+        x[i] = p.x(), y[i] = p.y();
+    }
+    std::vector<PointClass> labels(n);
+    for (std::size_t i = 0; i < n; ++i) labels[i] = static_cast<PointClass>(golden.labels[i] & 3u);
+    return renderClassChanges(x.data(), y.data(), n, labels, changed, opt);
+}
+
 }  // namespace travel::viz

@@ -60,6 +60,12 @@ double RawlogReader::fractionRead() const {
     return size ? double(stream_->file.getPosition()) / double(size) : -1.0;
 }
 
+bool RawlogReader::wholeFileRead() const {
+    if (stream_->gzip_offset) return stream_->gzip_offset->fraction() >= 1.0;
+    const auto size = stream_->file.getTotalBytesCount();
+    return size > 0 && stream_->file.getPosition() >= size;
+}
+
 RawlogReader::~RawlogReader() = default;
 
 std::shared_ptr<mrpt::serialization::CSerializable> RawlogReader::next() {
@@ -81,9 +87,11 @@ std::shared_ptr<mrpt::serialization::CSerializable> RawlogReader::next() {
                                  "allows); is it a rawlog?");
     } catch (const std::exception& e) {
         const std::string what = mrptMessage(e.what());
-        // MRPT reports a short read inside an object as a generic error, not CExceptionEOF.
+        // MRPT reports a short read inside an object as a generic error, not CExceptionEOF; an
+        // object that reads its own bytes (CObservationTravelLabels) fails on a short read with
+        // its own message, after the whole file was read.
         if (what.find("EOF") != std::string::npos ||
-            what.find("Cannot read object class name") != std::string::npos)
+            what.find("Cannot read object class name") != std::string::npos || wholeFileRead())
             throw travel::InputError(record + ": truncated (end of file inside the record)");
         throw travel::InputError(
             record + (index_ == 0 ? ": cannot read (is it an MRPT rawlog?): " : ": cannot read: ") +

@@ -55,6 +55,8 @@ class RawlogReader {
     const std::string& path() const { return path_; }
 
   private:
+    /// Every byte of the file was read (of the compressed file for gzip; false when unknown).
+    bool wholeFileRead() const;
     struct Stream;
     std::string path_;
     std::unique_ptr<Stream> stream_;

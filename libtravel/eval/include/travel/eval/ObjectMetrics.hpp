@@ -96,6 +96,40 @@ struct ObjectScores {
     std::size_t split = 0, merged = 0;  ///< coverage <= 0.5, purity <= 0.5 (see above)
 };
 
+/// How the points of one group (a GT instance, a golden cluster) lie in the clusters of a
+/// labelling: the non-zero cluster holding most of them (ties: the smaller id) and how many.
+struct GroupInClusters {
+    std::size_t points = 0;      ///< points of the group
+    uint32_t best_cluster = 0;   ///< 0 = no point of the group is clustered
+    std::size_t best_count = 0;  ///< points of the group in best_cluster
+    /// No cluster holds a strict majority of the group (unclustered groups included).
+    bool split() const { return 2 * best_count <= points; }
+    /// A clustered group that is no strict majority of its best cluster (of `cluster_points`
+    /// points). Integer tests: exactly half is "no majority" without rounding doubt.
+    bool mergedInto(std::size_t cluster_points) const {
+        return best_cluster != 0 && 2 * best_count <= cluster_points;
+    }
+};
+
+/// The group of n points whose k-th point is in cluster cluster_of(k) (0 = none); the ids must
+/// come in ascending order.
+template <class ClusterOf>
+GroupInClusters locateGroup(std::size_t n, ClusterOf&& cluster_of) {
+    GroupInClusters g;
+    g.points = n;
+    for (std::size_t a = 0; a < n;) {
+        std::size_t b = a;
+        while (b < n && cluster_of(b) == cluster_of(a)) ++b;
+        // Ascending ids and a strict '>': ties go to the smaller id.
+        if (cluster_of(a) != 0 && b - a > g.best_count) {
+            g.best_count = b - a;
+            g.best_cluster = cluster_of(a);
+        }
+        a = b;
+    }
+    return g;
+}
+
 /// Scores one frame. All vectors are indexed like the input cloud: cluster_id[i] the predicted
 /// cluster (0 = none), pred[i] the predicted class, gt_labels[i] the SemanticKITTI label, x/y/z
 /// the point. Deterministic. Throws std::invalid_argument if the sizes differ or

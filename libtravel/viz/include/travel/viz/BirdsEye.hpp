@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "travel/LabelledFrame.hpp"
 #include "travel/PointCloud.hpp"
 #include "travel/Preprocessing.hpp"
 #include "travel/TerrainModel.hpp"
@@ -76,5 +77,18 @@ Picture renderBirdsEye(const PointCloud& points, const std::vector<PointClass>& 
 Picture renderBirdsEye(const AlignedCloud& points, const std::vector<PointClass>& labels,
                        const std::vector<uint32_t>& cluster_id, const TerrainModel* terrain,
                        const BirdsEyeOptions& opt);
+
+/// The differences between two labellings of the same n points: the golden classes as
+/// renderBirdsEye draws them without clusters and terrain (ground green, non-ground red,
+/// outliers blue), then every point with changed[i] != 0 (its class changed) in black, larger,
+/// on top, with a legend entry. Throws std::invalid_argument on size mismatches.
+Picture renderClassChanges(const float* x, const float* y, std::size_t n,
+                           const std::vector<PointClass>& golden_labels,
+                           const std::vector<uint8_t>& changed, const BirdsEyeOptions& opt);
+
+/// Same, for a stored frame (its points, labels and clusters are the golden ones), drawn in its
+/// levelled frame (alignedRotation).
+Picture renderClassChanges(const LabelledFrame& golden, const std::vector<uint8_t>& changed,
+                           const BirdsEyeOptions& opt);
 
 }  // namespace travel::viz
