@@ -120,19 +120,25 @@ PointsView checkPoints(const py::array& a) {
             f64};
 }
 
+template <class T, int Cols>
+void copyRows(const PointsView& v, float* const out[4]) {
+    const auto n = static_cast<std::size_t>(v.n);
+    for (std::size_t i = 0; i < n; ++i) {  // one pass over the rows: each is read once
+        const char* row = v.data + static_cast<py::ssize_t>(i) * v.row_stride;
+        for (int c = 0; c < Cols; ++c)
+            out[c][i] = static_cast<float>(*reinterpret_cast<const T*>(row + c * v.col_stride));
+        if constexpr (Cols == 3) out[3][i] = 0.f;
+    }
+}
+
+/// The one copy on the way in: (N, 3|4) rows into the library's x, y, z, intensity vectors
+/// (reused, so no allocation once warmed up).
 template <class T>
 void copyColumns(const PointsView& v, PointCloud& cloud) {
     const auto n = static_cast<std::size_t>(v.n);
     cloud.x.resize(n), cloud.y.resize(n), cloud.z.resize(n), cloud.intensity.resize(n);
-    float* out[4] = {cloud.x.data(), cloud.y.data(), cloud.z.data(), cloud.intensity.data()};
-    for (py::ssize_t c = 0; c < v.cols; ++c) {
-        const char* column = v.data + c * v.col_stride;
-        float* dst = out[c];
-        for (std::size_t i = 0; i < n; ++i)
-            dst[i] = static_cast<float>(
-                *reinterpret_cast<const T*>(column + static_cast<py::ssize_t>(i) * v.row_stride));
-    }
-    if (v.cols == 3) std::fill(cloud.intensity.begin(), cloud.intensity.end(), 0.f);
+    float* const out[4] = {cloud.x.data(), cloud.y.data(), cloud.z.data(), cloud.intensity.data()};
+    v.cols == 4 ? copyRows<T, 4>(v, out) : copyRows<T, 3>(v, out);
 }
 
 // ---- Scan ----------------------------------------------------------------------------------

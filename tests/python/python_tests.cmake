@@ -1,7 +1,7 @@
 # The Python module's tests (pytest), one CTest test per file so that ctest -j runs them side by
 # side. Without the module (TRAVEL_BUILD_PYTHON=OFF, or no Python / pybind11 / pytest found) one
 # test says why and is reported as skipped.
-set(python_tests api examples kitti)
+set(python_tests api examples kitti install)
 set(pytest_ok FALSE)
 if(TARGET travel_python)
   execute_process(COMMAND ${TRAVEL_PYTHON_EXECUTABLE} -c "import pytest"
@@ -26,7 +26,8 @@ if(NOT pytest_ok)
 endif()
 
 set(env "PYTHONPATH=${TRAVEL_PYTHON_PATH}" "TRAVEL_DATA_DIR=${TRAVEL_DATA_DIR}"
-  "PYTHONDONTWRITEBYTECODE=1")
+  "PYTHONDONTWRITEBYTECODE=1" "TRAVEL_BUILD_DIR=${PROJECT_BINARY_DIR}" "TRAVEL_CMAKE=${CMAKE_COMMAND}"
+  "TRAVEL_PYTHON_INSTALL_DIR=${TRAVEL_PYTHON_INSTALL_DIR}")
 if(TARGET travel-kitti)
   list(APPEND env "TRAVEL_KITTI=$<TARGET_FILE:travel-kitti>")
 endif()

@@ -62,3 +62,15 @@ def test_evaluate_folder_on_semantickitti(kitti_sequence):
     text = run("evaluate_folder.py", kitti_sequence)
     # travel-kitti on frames 000000-000002: F1 (B) 99.06, 99.04, 99.25 -> mean 99.12
     assert text.startswith("3 frames: ground F1 99.12 %"), text
+
+
+def test_readme_example(sequence, tmp_path):
+    readme = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
+    code = readme.split("```python\n", 1)[1].split("```", 1)[0]
+    assert len(code.strip().splitlines()) == 5
+    (tmp_path / "velodyne").mkdir()
+    (tmp_path / "velodyne/000000.bin").write_bytes((sequence / "velodyne/000000.bin").read_bytes())
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "000000.label").is_file()
