@@ -54,4 +54,5 @@ print(f"{len(scan)} points, preset {args.preset}, {args.rounds} rounds x {args.c
 print(f"C++ Pipeline::process          median {base:7.3f} ms")
 for name, series in (("Python process(numpy (N, 4))", numpy_in), ("Python process(Scan)", scan_in)):
     m = statistics.median(series)
-    print(f"{name:30s} median {m:7.3f} ms  overhead {100 * (m / base - 1):+5.1f} %")
+    print(f"{name:30s} median {m:7.3f} ms  overhead {m - base:+6.3f} ms "
+          f"= {100 * (m / base - 1):+5.1f} %")
