@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import travel
-from conftest import data_dir, synthetic_frame
+from conftest import synthetic_frame
 
 EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples" / "python"
 
