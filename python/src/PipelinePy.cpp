@@ -131,6 +131,17 @@ void copyRows(const PointsView& v, float* const out[4]) {
     }
 }
 
+template <class T, int Cols>
+void copyPacked(const T* in, std::size_t n, float* const out[4]) {
+    float *x = out[0], *y = out[1], *z = out[2], *intensity = out[3];
+    for (std::size_t i = 0; i < n; ++i) {
+        const T* row = in + i * Cols;
+        x[i] = static_cast<float>(row[0]), y[i] = static_cast<float>(row[1]);
+        z[i] = static_cast<float>(row[2]);
+        intensity[i] = Cols == 4 ? static_cast<float>(row[Cols - 1]) : 0.f;
+    }
+}
+
 /// The one copy on the way in: (N, 3|4) rows into the library's x, y, z, intensity vectors
 /// (reused, so no allocation once warmed up).
 template <class T>
@@ -138,7 +149,13 @@ void copyColumns(const PointsView& v, PointCloud& cloud) {
     const auto n = static_cast<std::size_t>(v.n);
     cloud.x.resize(n), cloud.y.resize(n), cloud.z.resize(n), cloud.intensity.resize(n);
     float* const out[4] = {cloud.x.data(), cloud.y.data(), cloud.z.data(), cloud.intensity.data()};
-    v.cols == 4 ? copyRows<T, 4>(v, out) : copyRows<T, 3>(v, out);
+    const bool packed = v.col_stride == sizeof(T) && v.row_stride == v.cols * v.col_stride;
+    if (packed && v.cols == 4)  // C-contiguous: strides known at compile time (vectorised)
+        copyPacked<T, 4>(static_cast<const T*>(static_cast<const void*>(v.data)), n, out);
+    else if (packed)
+        copyPacked<T, 3>(static_cast<const T*>(static_cast<const void*>(v.data)), n, out);
+    else
+        v.cols == 4 ? copyRows<T, 4>(v, out) : copyRows<T, 3>(v, out);
 }
 
 // ---- Scan ----------------------------------------------------------------------------------
@@ -414,16 +431,16 @@ py::dict objectMetrics(const py::handle& cluster_ids, const py::handle& labels,
         py::arg("split") = s.split, py::arg("merged") = s.merged, py::arg("instances") = instances);
 }
 
-/// Milliseconds of each of `repeats` C++ calls Pipeline::process(scan) (no Python in the loop):
-/// the reference the binding's overhead is measured against (python/bench/overhead.py).
-std::vector<double> benchCpp(const Params& params, const ScanPy& scan, int repeats) {
+/// Milliseconds of each of `repeats` C++ calls Pipeline::process(scan) on `self`'s pipeline and
+/// result buffers (reused, as a C++ caller does), with no Python in the loop: the reference the
+/// binding's overhead is measured against (python/bench/overhead.py).
+std::vector<double> benchCpp(PipelinePy& self, const ScanPy& scan, int repeats) {
     py::gil_scoped_release release;
-    Pipeline pipeline(params);
-    Result result;
+    std::lock_guard<std::mutex> lock(self.mutex);
     std::vector<double> ms;
     for (int k = 0; k < repeats; ++k) {
         const auto start = std::chrono::steady_clock::now();
-        pipeline.process(scan.cloud, FrameInput{}, result);
+        self.pipeline.process(scan.cloud, FrameInput{}, self.result);
         ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
