@@ -453,7 +453,7 @@ std::vector<double> benchCpp(PipelinePy& self, const ScanPy& scan, int repeats) 
 void bindPipeline(py::module_& m) {
     py::class_<ScanPy>(m, "Scan", R"doc(
 A scan read by read_scan(), kept in the library's layout: Pipeline.process(scan) uses it without
-any copy. x, y, z, intensity are read-only float32 views; points builds an (N, 4) array.
+any copy. `points` builds an (N, 4) float32 array (x, y, z, intensity) on each access.
 )doc")
         .def("__len__", [](const ScanPy& s) { return s.cloud.size(); })
         .def_readonly("path", &ScanPy::path)
