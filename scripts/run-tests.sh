@@ -4,7 +4,8 @@
 #   2. the whole test suite of ./build with CTest
 #   3. the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (./build-asan;
 #      MRPT itself is not instrumented, and MRPT's own apps cannot load a sanitized plugin, so
-#      the rawlog-edit / RawLogViewer checks run in step 2 only), and the multi-threaded test
+#      the rawlog-edit / RawLogViewer checks run in step 2 only; nor can python3 load a sanitized
+#      extension, so the Python tests run in step 2 only), and the multi-threaded test
 #      under ThreadSanitizer (./build-tsan)
 #   4. libFuzzer targets, 20 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
@@ -25,7 +26,7 @@ log "sanitizer build (build-asan/: address,undefined)"
 # file:line in every sanitizer report.
 asan=(cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=address,undefined
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DTRAVEL_BUILD_MRPT=ON
-      -DTRAVEL_BUILD_BENCHMARKS=OFF)
+      -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
 [[ -f build-asan/CMakeCache.txt ]] || asan+=(-G Ninja)
 "${asan[@]}" >/dev/null
 cmake --build build-asan -j2
@@ -42,7 +43,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1 UBSAN_O
 
 log "thread sanitizer build (build-tsan/): one Pipeline per thread, identical results"
 tsan=(cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=thread
-      -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF)
+      -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
 [[ -f build-tsan/CMakeCache.txt ]] || tsan+=(-G Ninja)
 "${tsan[@]}" >/dev/null
 cmake --build build-tsan -j2 --target test_robustness

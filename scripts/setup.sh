@@ -17,6 +17,7 @@ PACKAGES=(
   libmrpt-hwdrivers-dev
   liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev
   clang libclang-rt-14-dev
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-open3d
 )
 
 log() { printf '[setup] %s\n' "$*"; }

@@ -15,7 +15,7 @@ if(NOT ROOT OR NOT IS_DIRECTORY "${ROOT}")
 endif()
 get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 
-set(top_dirs "docs|share|scripts|apps|libtravel|mrpt_plugin|tests|cmake")
+set(top_dirs "docs|share|scripts|apps|libtravel|mrpt_plugin|tests|cmake|python|examples")
 # Installed locations that share a top-level name with the repository (<prefix>/share/travel,
 # MRPT's own <prefix>/share/mrpt): named in comments, not repository paths.
 set(installed_paths "^share/(travel|mrpt)(/|$)")

@@ -1,0 +1,685 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// travel.Pipeline and what goes in and out of it: numpy points in (checked here, copied once
+// into the library's structure-of-arrays cloud, without the GIL), labels and cluster ids out
+// (the library's vectors handed to numpy, no copy), clusters and the terrain model as arrays;
+// the scan reader, the .label writer and the metrics, all the library's.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "Bindings.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel/eval/KittiIO.hpp"
+#include "travel/eval/Metrics.hpp"
+#include "travel/eval/ObjectMetrics.hpp"
+#include "travel/io/ScanIO.hpp"
+
+namespace py = pybind11;
+
+namespace travel::python {
+namespace {
+
+// ---- Arrays --------------------------------------------------------------------------------
+
+/// Hands `values` to numpy without copying: the array owns the vector from now on.
+template <class T, class V>
+py::array_t<T> adopt(std::vector<V>&& values, std::vector<py::ssize_t> shape) {
+    static_assert(sizeof(T) == sizeof(V), "element types must have the same layout");
+    auto* owned = new std::vector<V>(std::move(values));
+    py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<V>*>(p); });
+    return py::array_t<T>(shape, reinterpret_cast<const T*>(owned->data()), owner);
+}
+
+/// An (items.size(), C) array of get(item)[c] (or (items.size(),) for C == 1).
+template <class T, int C, class Item, class Get>
+py::array_t<T> columns(const std::vector<Item>& items, Get get) {
+    using Stored = std::conditional_t<std::is_same_v<T, bool>, uint8_t, T>;  // not vector<bool>
+    std::vector<Stored> out;
+    out.reserve(items.size() * C);
+    for (const Item& item : items) {
+        if constexpr (C == 1) {
+            out.push_back(static_cast<Stored>(get(item)));
+        } else {
+            const auto v = get(item);
+            for (int c = 0; c < C; ++c) out.push_back(static_cast<Stored>(v[c]));
+        }
+    }
+    const auto n = static_cast<py::ssize_t>(items.size());
+    return adopt<T>(std::move(out),
+                    C == 1 ? std::vector<py::ssize_t>{n} : std::vector<py::ssize_t>{n, C});
+}
+
+char dtypeKind(const py::array& a) {
+    return a.dtype().kind();
+}
+
+/// An (N,) array-like as a std::vector<T> (numbers converted), or ValueError naming `what`.
+template <class T>
+std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds) {
+    const py::array a = py::array::ensure(object);
+    if (!a) throw py::value_error(std::string(what) + ": expected an array");
+    if (a.ndim() != 1 || (n >= 0 && a.shape(0) != n))
+        throw py::value_error(std::string(what) + ": expected shape (" +
+                              (n >= 0 ? std::to_string(n) : std::string("N")) + ",), got " +
+                              std::string(py::str(py::tuple(py::cast(
+                                  std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))))));
+    if (!std::string(kinds).empty() && std::string(kinds).find(dtypeKind(a)) == std::string::npos)
+        throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
+                              " is not accepted (kinds '" + kinds + "')");
+    const auto typed = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+    return std::vector<T>(typed.data(), typed.data() + typed.size());
+}
+
+/// A fixed-size float array-like (attitude, velocity, gravity) as doubles.
+std::vector<double> fixedFrom(py::handle object, py::ssize_t size, const char* what) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
+    if (!a || a.size() != size)
+        throw py::value_error(std::string(what) + ": expected " + std::to_string(size) +
+                              " numbers");
+    std::vector<double> v(a.data(), a.data() + size);
+    for (double x : v)
+        if (!std::isfinite(x)) throw py::value_error(std::string(what) + ": not finite");
+    return v;
+}
+
+/// The layout of an (N, 3) or (N, 4) float32 / float64 array: read in place, any strides.
+struct PointsView {
+    const char* data = nullptr;
+    py::ssize_t n = 0, cols = 0, row_stride = 0, col_stride = 0;
+    bool is_double = false;
+};
+
+PointsView checkPoints(const py::array& a) {
+    if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4))
+        throw py::value_error(
+            "points: expected shape (N, 3) or (N, 4) (x, y, z[, intensity]), "
+            "got ndim " +
+            std::to_string(a.ndim()) +
+            (a.ndim() >= 2 ? " with " + std::to_string(a.shape(1)) + " columns" : std::string()));
+    const bool f32 = a.dtype().is(py::dtype::of<float>());
+    const bool f64 = a.dtype().is(py::dtype::of<double>());
+    if (!f32 && !f64)
+        throw py::value_error("points: dtype must be float32 or float64, got " +
+                              std::string(py::str(a.dtype())));
+    return {static_cast<const char*>(a.data()),
+            a.shape(0),
+            a.shape(1),
+            a.strides(0),
+            a.strides(1),
+            f64};
+}
+
+template <class T, int Cols>
+void copyRows(const PointsView& v, float* const out[4]) {
+    const auto n = static_cast<std::size_t>(v.n);
+    for (std::size_t i = 0; i < n; ++i) {  // one pass over the rows: each is read once
+        const char* row = v.data + static_cast<py::ssize_t>(i) * v.row_stride;
+        for (int c = 0; c < Cols; ++c)
+            out[c][i] = static_cast<float>(*reinterpret_cast<const T*>(row + c * v.col_stride));
+        if constexpr (Cols == 3) out[3][i] = 0.f;
+    }
+}
+
+template <class T, int Cols>
+void copyPacked(const T* in, std::size_t n, float* const out[4]) {
+    float *x = out[0], *y = out[1], *z = out[2], *intensity = out[3];
+    for (std::size_t i = 0; i < n; ++i) {
+        const T* row = in + i * Cols;
+        x[i] = static_cast<float>(row[0]), y[i] = static_cast<float>(row[1]);
+        z[i] = static_cast<float>(row[2]);
+        intensity[i] = Cols == 4 ? static_cast<float>(row[Cols - 1]) : 0.f;
+    }
+}
+
+/// The one copy on the way in: (N, 3|4) rows into the library's x, y, z, intensity vectors
+/// (reused, so no allocation once warmed up).
+template <class T>
+void copyColumns(const PointsView& v, PointCloud& cloud) {
+    const auto n = static_cast<std::size_t>(v.n);
+    cloud.x.resize(n), cloud.y.resize(n), cloud.z.resize(n), cloud.intensity.resize(n);
+    float* const out[4] = {cloud.x.data(), cloud.y.data(), cloud.z.data(), cloud.intensity.data()};
+    const bool packed = v.col_stride == sizeof(T) && v.row_stride == v.cols * v.col_stride;
+    if (packed && v.cols == 4)  // C-contiguous: strides known at compile time (vectorised)
+        copyPacked<T, 4>(static_cast<const T*>(static_cast<const void*>(v.data)), n, out);
+    else if (packed)
+        copyPacked<T, 3>(static_cast<const T*>(static_cast<const void*>(v.data)), n, out);
+    else
+        v.cols == 4 ? copyRows<T, 4>(v, out) : copyRows<T, 3>(v, out);
+}
+
+// ---- Scan ----------------------------------------------------------------------------------
+
+/// A scan read by the library's reader, kept in the library's layout so that process() takes
+/// it without any copy.
+struct ScanPy {
+    PointCloud cloud;
+    std::string path, format;
+};
+
+py::array_t<float> scanPoints(const ScanPy& s) {
+    const std::size_t n = s.cloud.size();
+    py::array_t<float> out({static_cast<py::ssize_t>(n), py::ssize_t{4}});
+    auto w = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto r = static_cast<py::ssize_t>(i);
+        w(r, 0) = s.cloud.x[i], w(r, 1) = s.cloud.y[i], w(r, 2) = s.cloud.z[i];
+        w(r, 3) = s.cloud.intensity.empty() ? 0.f : s.cloud.intensity[i];
+    }
+    return out;
+}
+
+// ---- Result --------------------------------------------------------------------------------
+
+struct ClustersPy {
+    py::array ids, num_points, first_point, centroids, aabb_min, aabb_max, obb_center, obb_extent,
+        obb_yaw, ground_z, height_above_ground;
+    std::size_t size = 0;
+};
+
+ClustersPy clustersFrom(const std::vector<ClusterSummary>& c) {
+    using S = ClusterSummary;
+    ClustersPy out;
+    out.size = c.size();
+    out.ids = columns<uint32_t, 1>(c, [](const S& s) { return s.id; });
+    out.num_points = columns<uint32_t, 1>(c, [](const S& s) { return s.num_points; });
+    out.first_point = columns<uint32_t, 1>(c, [](const S& s) { return s.first_point; });
+    out.centroids = columns<float, 3>(c, [](const S& s) { return s.centroid; });
+    out.aabb_min = columns<float, 3>(c, [](const S& s) { return s.aabb_min; });
+    out.aabb_max = columns<float, 3>(c, [](const S& s) { return s.aabb_max; });
+    out.obb_center = columns<float, 3>(c, [](const S& s) { return s.obb_center; });
+    out.obb_extent = columns<float, 3>(c, [](const S& s) { return s.obb_extent; });
+    out.obb_yaw = columns<float, 1>(c, [](const S& s) { return s.obb_yaw; });
+    out.ground_z = columns<float, 1>(c, [](const S& s) { return s.ground_z; });
+    out.height_above_ground =
+        columns<float, 1>(c, [](const S& s) { return s.height_above_ground; });
+    return out;
+}
+
+/// The terrain model of one frame; the arrays are built on first access.
+struct TerrainPy {
+    std::shared_ptr<const TerrainModel> model;
+};
+
+py::array_t<float> triangleCornersXYZ(const TerrainModel& t) {
+    const auto m = static_cast<py::ssize_t>(t.nodes.size());
+    std::vector<float> xyz;
+    xyz.reserve(t.nodes.size() * 9);
+    for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+        const auto xy = t.triangleCorners(static_cast<int>(i));
+        for (int k = 0; k < 3; ++k) {
+            xyz.push_back(xy[static_cast<std::size_t>(k)].x());
+            xyz.push_back(xy[static_cast<std::size_t>(k)].y());
+            xyz.push_back(t.nodes[i].corner_z[k]);
+        }
+    }
+    return adopt<float>(std::move(xyz), {m, 3, 3});
+}
+
+struct ResultPy {
+    py::array labels, cluster_ids;
+    ClustersPy clusters;
+    TerrainPy terrain;
+    StageTimings timings;
+    std::array<std::size_t, 4> class_counts{};
+    double sensor_height = 0;
+    std::string mount_note;
+};
+
+py::dict timingsDict(const StageTimings& t) {
+    py::dict d;
+    d["preprocess"] = t.preprocess, d["embedding"] = t.embedding;
+    d["node_fitting"] = t.node_fitting, d["graph_search"] = t.graph_search;
+    d["ttmf"] = t.ttmf, d["labelling"] = t.labelling, d["ground_total"] = t.ground_total;
+    d["range_image"] = t.range_image, d["horizontal"] = t.horizontal;
+    d["vertical"] = t.vertical, d["clusters"] = t.clusters;
+    d["objects_total"] = t.objects_total, d["total"] = t.ground_total + t.objects_total;
+    return d;
+}
+
+// ---- Pipeline ------------------------------------------------------------------------------
+
+/// One travel::Pipeline with its input and output buffers; process() holds a per-instance lock
+/// (not the GIL), so one Pipeline shared by threads serialises instead of mixing frames.
+struct PipelinePy {
+    explicit PipelinePy(const Params& params) : pipeline(params) {}
+    Pipeline pipeline;
+    PointCloud cloud;
+    Result result;
+    std::mutex mutex;
+};
+
+FrameInput frameInput(const py::object& attitude, const py::object& gravity,
+                      const py::object& velocity, double reference_time) {
+    FrameInput input;
+    input.reference_time = reference_time;
+    if (!attitude.is_none()) {
+        const std::vector<double> r = fixedFrom(attitude, 9, "attitude (3x3 rotation)");
+        Eigen::Matrix3d rotation;
+        for (int i = 0; i < 9; ++i) rotation(i / 3, i % 3) = r[static_cast<std::size_t>(i)];
+        input.vehicle_attitude = rotation;
+    }
+    if (!gravity.is_none()) {
+        const std::vector<double> g = fixedFrom(gravity, 3, "gravity");
+        input.gravity_in_sensor = Eigen::Vector3d(g[0], g[1], g[2]);
+    }
+    if (!velocity.is_none()) {
+        const std::vector<double> v = fixedFrom(velocity, 6, "velocity (vx, vy, vz, wx, wy, wz)");
+        input.linear_velocity = Eigen::Vector3d(v[0], v[1], v[2]);
+        input.angular_velocity = Eigen::Vector3d(v[3], v[4], v[5]);
+    }
+    return input;
+}
+
+ResultPy process(PipelinePy& self, const py::object& points, const py::object& rings,
+                 const py::object& times, const py::object& attitude, const py::object& gravity,
+                 const py::object& velocity, double reference_time) {
+    const FrameInput input = frameInput(attitude, gravity, velocity, reference_time);
+    const ScanPy* scan = py::isinstance<ScanPy>(points) ? &points.cast<const ScanPy&>() : nullptr;
+    py::array array;
+    PointsView view;
+    std::vector<uint16_t> ring;
+    std::vector<float> time;
+    if (!scan) {
+        array = py::array::ensure(points);
+        if (!array) throw py::value_error("points: expected a numpy array or a travel.Scan");
+        view = checkPoints(array);
+        if (!rings.is_none()) {
+            const auto r = vectorFrom<int64_t>(rings, view.n, "rings", "iu");
+            ring.reserve(r.size());
+            for (int64_t v : r) {
+                if (v < 0 || v > 65535)
+                    throw py::value_error("rings: values must be in [0, 65535]");
+                ring.push_back(static_cast<uint16_t>(v));
+            }
+        }
+        if (!times.is_none()) time = vectorFrom<float>(times, view.n, "times", "f");
+    } else if (!rings.is_none() || !times.is_none()) {
+        throw py::value_error(
+            "rings and times come from the Scan; pass its points as an array "
+            "to override them");
+    }
+
+    ResultPy out;
+    std::vector<PointClass> labels;
+    std::vector<uint32_t> cluster_ids;
+    std::vector<ClusterSummary> clusters;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard<std::mutex> lock(self.mutex);
+        const PointCloud* cloud = &self.cloud;
+        if (scan) {
+            cloud = &scan->cloud;
+        } else {
+            if (view.is_double)
+                copyColumns<double>(view, self.cloud);
+            else
+                copyColumns<float>(view, self.cloud);
+            self.cloud.ring = std::move(ring);
+            self.cloud.time = std::move(time);
+        }
+        Result& r = self.result;
+        self.pipeline.process(*cloud, input, r);
+        out.timings = r.timings;
+        out.class_counts = r.class_counts;
+        out.sensor_height = r.sensor_height;
+        out.mount_note = r.mount.message;
+        out.terrain.model = std::make_shared<const TerrainModel>(r.terrain);
+        // Taken while locked: the next call on this Pipeline refills the buffers.
+        labels = std::move(r.labels), cluster_ids = std::move(r.cluster_id);
+        r.labels.clear(), r.cluster_id.clear();
+        clusters = r.clusters;
+    }
+    const auto n = static_cast<py::ssize_t>(labels.size());
+    out.labels = adopt<uint8_t>(std::move(labels), {n});
+    out.cluster_ids = adopt<uint32_t>(std::move(cluster_ids), {n});
+    out.clusters = clustersFrom(clusters);
+    return out;
+}
+
+// ---- Files and metrics ---------------------------------------------------------------------
+
+ScanPy readScanPy(const std::string& path, const std::string& format) {
+    ScanPy s;
+    const ScanFormat f = scanFormatFromString(format);
+    ScanFormat used = f;
+    {
+        py::gil_scoped_release release;
+        if (f == ScanFormat::Auto) used = detectScanFormat(path);
+        readScan(path, s.cloud, used);
+    }
+    s.path = path, s.format = toString(used);
+    return s;
+}
+
+void writeLabels(const std::string& path, const py::array& labels, const py::array& cluster_ids) {
+    const auto cls = vectorFrom<uint8_t>(labels, -1, "labels", "iu");
+    const auto ids = vectorFrom<uint32_t>(cluster_ids, static_cast<py::ssize_t>(cls.size()),
+                                          "cluster_ids", "iu");
+    std::vector<uint32_t> encoded(cls.size());
+    for (std::size_t i = 0; i < cls.size(); ++i) {
+        if (cls[i] > 3) throw py::value_error("labels: values must be 0..3 (travel classes)");
+        encoded[i] = encodeLabel(static_cast<PointClass>(cls[i]), ids[i]);
+    }
+    writeLabelFile(path, encoded);
+}
+
+std::vector<PointClass> classesFrom(const py::handle& labels, py::ssize_t n) {
+    const auto v = vectorFrom<uint8_t>(labels, n, "labels", "iu");
+    std::vector<PointClass> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out[i] = static_cast<PointClass>(v[i]);
+    return out;
+}
+
+py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py::object& z,
+                       double sensor_height, const std::string& protocol) {
+    if (protocol != "A" && protocol != "B")
+        throw py::value_error("protocol must be 'A' (Patchwork) or 'B' (Patchwork++), got '" +
+                              protocol + "'");
+    const auto pred = classesFrom(labels, -1);
+    const auto n = static_cast<py::ssize_t>(pred.size());
+    const auto truth = vectorFrom<uint32_t>(gt, n, "gt", "iu");
+    const GroundProtocol p = protocol == "A" ? GroundProtocol::A : GroundProtocol::B;
+    std::vector<float> heights;
+    if (p == GroundProtocol::A) {
+        if (z.is_none()) throw py::value_error("protocol A needs the points' z (sensor frame)");
+        heights = vectorFrom<float>(z, n, "z", "fiu");
+    }
+    const ConfusionCounts c = countGround(pred, truth, heights, sensor_height, p);
+    const GroundScores s = scoresFrom(c);
+    py::dict d;
+    d["precision"] = s.precision, d["recall"] = s.recall, d["f1"] = s.f1;
+    d["accuracy"] = s.accuracy, d["tp"] = c.tp, d["fp"] = c.fp, d["tn"] = c.tn, d["fn"] = c.fn;
+    return d;
+}
+
+py::dict objectMetrics(const py::handle& cluster_ids, const py::handle& labels,
+                       const py::handle& gt, const py::array& points,
+                       const ObjectEvalOptions& options) {
+    const auto pred = classesFrom(labels, -1);
+    const auto n = static_cast<py::ssize_t>(pred.size());
+    const auto ids = vectorFrom<uint32_t>(cluster_ids, n, "cluster_ids", "iu");
+    const auto truth = vectorFrom<uint32_t>(gt, n, "gt", "iu");
+    const PointsView view = checkPoints(points);
+    if (view.n != n) throw py::value_error("points: expected " + std::to_string(n) + " rows");
+    PointCloud cloud;
+    view.is_double ? copyColumns<double>(view, cloud) : copyColumns<float>(view, cloud);
+    const ObjectScores s = evaluateObjects(ids, pred, truth, cloud, options);
+    py::list instances;
+    for (const InstanceScore& i : s.instances)
+        instances.append(py::dict(py::arg("semantic") = i.semantic,
+                                  py::arg("instance") = i.instance, py::arg("points") = i.points,
+                                  py::arg("coverage") = i.coverage, py::arg("purity") = i.purity,
+                                  py::arg("best_cluster") = i.best_cluster));
+    const SegmentationEntropy& e = s.entropy;
+    return py::dict(
+        py::arg("ose_sum") = e.ose_sum, py::arg("use_sum") = e.use_sum,
+        py::arg("ose_mean") = e.ose_mean, py::arg("use_mean") = e.use_mean,
+        py::arg("gt_objects") = e.num_gt_objects, py::arg("clusters") = e.num_clusters,
+        py::arg("scored_points") = e.num_points, py::arg("mean_coverage") = s.mean_coverage,
+        py::arg("mean_purity") = s.mean_purity, py::arg("clustered") = s.clustered,
+        py::arg("split") = s.split, py::arg("merged") = s.merged, py::arg("instances") = instances);
+}
+
+/// Milliseconds of each of `repeats` C++ calls Pipeline::process(scan) on `self`'s pipeline and
+/// result buffers (reused, as a C++ caller does), with no Python in the loop: the reference the
+/// binding's overhead is measured against (python/bench/overhead.py).
+std::vector<double> benchCpp(PipelinePy& self, const ScanPy& scan, int repeats) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(self.mutex);
+    std::vector<double> ms;
+    for (int k = 0; k < repeats; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        self.pipeline.process(scan.cloud, FrameInput{}, self.result);
+        ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+    }
+    return ms;
+}
+
+}  // namespace
+
+void bindPipeline(py::module_& m) {
+    py::class_<ScanPy>(m, "Scan", R"doc(
+A scan read by read_scan(), kept in the library's layout: Pipeline.process(scan) uses it without
+any copy. `points` builds an (N, 4) float32 array (x, y, z, intensity) on each access.
+)doc")
+        .def("__len__", [](const ScanPy& s) { return s.cloud.size(); })
+        .def_readonly("path", &ScanPy::path)
+        .def_readonly("format", &ScanPy::format, "The format read: kitti, nuscenes, pcd or ply.")
+        .def_property_readonly("points", &scanPoints,
+                               "(N, 4) float32: x, y, z, intensity (a copy).")
+        .def_property_readonly(
+            "rings",
+            [](const ScanPy& s) -> py::object {
+                if (!s.cloud.hasRing()) return py::none();
+                return py::array_t<uint16_t>(static_cast<py::ssize_t>(s.cloud.size()),
+                                             s.cloud.ring.data());
+            },
+            "(N,) uint16 laser ring (0 = lowest), or None when the file has none.")
+        .def_property_readonly(
+            "times",
+            [](const ScanPy& s) -> py::object {
+                if (!s.cloud.hasTime()) return py::none();
+                return py::array_t<float>(static_cast<py::ssize_t>(s.cloud.size()),
+                                          s.cloud.time.data());
+            },
+            "(N,) float32 per-point time [s], or None when the file has none.")
+        .def("__repr__", [](const ScanPy& s) {
+            return "travel.Scan('" + s.path + "', format='" + s.format + "', " +
+                   std::to_string(s.cloud.size()) + " points)";
+        });
+
+    py::class_<ClustersPy>(m, "Clusters", R"doc(
+One row per cluster, ordered by id (ids[k] == k + 1). Coordinates in the aligned frame (sensor
+origin, z up against gravity). Boxes: axis-aligned (aabb_min, aabb_max) and oriented (obb_center,
+obb_extent = length >= width, height; obb_yaw [rad] of the length axis). ground_z: terrain height
+under the centroid (NaN if unknown); height_above_ground: of the highest point above it [m].
+)doc")
+        .def("__len__", [](const ClustersPy& c) { return c.size; })
+        .def_readonly("ids", &ClustersPy::ids, "(K,) uint32")
+        .def_readonly("num_points", &ClustersPy::num_points, "(K,) uint32")
+        .def_readonly("first_point", &ClustersPy::first_point,
+                      "(K,) uint32 smallest input index (ids are ordered by it)")
+        .def_readonly("centroids", &ClustersPy::centroids, "(K, 3) float32")
+        .def_readonly("aabb_min", &ClustersPy::aabb_min, "(K, 3) float32")
+        .def_readonly("aabb_max", &ClustersPy::aabb_max, "(K, 3) float32")
+        .def_readonly("obb_center", &ClustersPy::obb_center, "(K, 3) float32")
+        .def_readonly("obb_extent", &ClustersPy::obb_extent, "(K, 3) float32")
+        .def_readonly("obb_yaw", &ClustersPy::obb_yaw, "(K,) float32 [rad]")
+        .def_readonly("ground_z", &ClustersPy::ground_z, "(K,) float32 [m], NaN if unknown")
+        .def_readonly("height_above_ground", &ClustersPy::height_above_ground, "(K,) float32 [m]");
+
+    using T = TerrainModel;
+    auto nodes = [](auto get) { return [get](const TerrainPy& t) { return get(*t.model); }; };
+    py::class_<TerrainPy>(m, "Terrain", R"doc(
+The terrain model of a frame (paper Sec. III): a tri-grid of square cells of side `resolution`,
+4 triangular nodes per cell, node index = 4 * (iy * cells_per_side + ix) + triangle (0 east,
+1 north, 2 west, 3 south). Aligned frame: sensor origin, z up; ground near z = -sensor_height.
+Arrays have one row per node (M = 4 * cells_per_side**2) and are built when first read.
+)doc")
+        .def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
+        .def_property_readonly("resolution", nodes([](const T& t) { return t.resolution; }))
+        .def_property_readonly("cells_per_side", nodes([](const T& t) { return t.cells_per_side; }))
+        .def_property_readonly("origin_xy", nodes([](const T& t) { return t.origin_xy; }),
+                               "x and y of the grid's lower-left corner")
+        .def_property_readonly("seed_node", nodes([](const T& t) { return t.seed_node; }),
+                               "start node of the first search (-1: none)")
+        .def_property_readonly("num_components", nodes([](const T& t) { return t.num_components; }))
+        .def_property_readonly(
+            "node_class", nodes([](const T& t) {
+                return columns<uint8_t, 1>(t.nodes, [](const TriNode& n) { return n.node_class; });
+            }),
+            "(M,) uint8: 0 empty, 1 unknown (too few points), 2 terrain, 3 obstacle (too steep)")
+        .def_property_readonly("num_points", nodes([](const T& t) {
+                                   return columns<uint32_t, 1>(
+                                       t.nodes, [](const TriNode& n) { return n.count; });
+                               }),
+                               "(M,) uint32")
+        .def_property_readonly("planes", nodes([](const T& t) {
+                                   return columns<float, 4>(t.nodes, [](const TriNode& n) {
+                                       return Eigen::Vector4f(n.normal.x(), n.normal.y(),
+                                                              n.normal.z(), n.d);
+                                   });
+                               }),
+                               "(M, 4) float32 node-wise PCA plane (sx, sy, sz, d): s.p + d = 0")
+        .def_property_readonly("means", nodes([](const T& t) {
+                                   return columns<float, 3>(
+                                       t.nodes, [](const TriNode& n) { return n.mean; });
+                               }),
+                               "(M, 3) float32 mean of the node's points")
+        .def_property_readonly("weights", nodes([](const T& t) {
+                                   return columns<float, 1>(
+                                       t.nodes, [](const TriNode& n) { return n.weight; });
+                               }),
+                               "(M,) float32 the paper's node weight (eq. 1)")
+        .def_property_readonly("reached", nodes([](const T& t) {
+                                   return columns<bool, 1>(
+                                       t.nodes, [](const TriNode& n) { return n.reached; });
+                               }),
+                               "(M,) bool reached by the traversable graph search")
+        .def_property_readonly(
+            "traversable", nodes([](const T& t) {
+                return columns<bool, 1>(t.nodes, [](const TriNode& n) { return n.traversable; });
+            }),
+            "(M,) bool the final decision: the node's points are labelled against ground_planes")
+        .def_property_readonly(
+            "ground_planes", nodes([](const T& t) {
+                return columns<float, 4>(t.nodes, [](const TriNode& n) {
+                    return Eigen::Vector4f(n.refit_normal.x(), n.refit_normal.y(),
+                                           n.refit_normal.z(), n.refit_d);
+                });
+            }),
+            "(M, 4) float32 TTMF's refitted plane (sx, sy, sz, d); meaningful where traversable")
+        .def_property_readonly(
+            "corners", nodes([](const T& t) { return triangleCornersXYZ(t); }),
+            "(M, 3, 3) float32 the triangle's corners (cell centre first, counter-clockwise): "
+            "x, y and TTMF's corner height z (NaN where no traversable node voted)")
+        .def(
+            "node_at", [](const TerrainPy& t, float x, float y) { return t.model->nodeAt(x, y); },
+            py::arg("x"), py::arg("y"), "Node index holding (x, y), -1 outside the grid.")
+        .def(
+            "height_above_ground",
+            [](const TerrainPy& t, const py::array& points) {
+                const PointsView v = checkPoints(points);
+                PointCloud c;
+                v.is_double ? copyColumns<double>(v, c) : copyColumns<float>(v, c);
+                std::vector<float> h(c.size());
+                for (std::size_t i = 0; i < c.size(); ++i)
+                    h[i] = t.model->heightAboveGround(c.x[i], c.y[i], c.z[i]);
+                const auto n = static_cast<py::ssize_t>(h.size());
+                return adopt<float>(std::move(h), {n});
+            },
+            py::arg("points"),
+            "(N,) float32 height of aligned-frame points above the local ground (lowest of the "
+            "ground planes of the point's cell and its 4 neighbours), NaN where unknown.");
+
+    py::class_<ResultPy>(m, "Result", R"doc(
+The result of one frame; arrays are indexed like the input points and owned by the Result.
+labels (N,) uint8: 0 invalid (NaN / inf / zero / out of range), 1 ground, 2 non-ground,
+3 outlier (below ground). cluster_ids (N,) uint32, 0 = no cluster.
+)doc")
+        .def_readonly("labels", &ResultPy::labels, "(N,) uint8 class per point")
+        .def_readonly("cluster_ids", &ResultPy::cluster_ids, "(N,) uint32, 0 = no cluster")
+        .def_property_readonly(
+            "ground_mask",
+            [](const ResultPy& r) { return r.labels.attr("__eq__")(1).cast<py::array>(); },
+            "(N,) bool labels == GROUND")
+        .def_readonly("clusters", &ResultPy::clusters)
+        .def_readonly("terrain", &ResultPy::terrain)
+        .def_property_readonly(
+            "timings", [](const ResultPy& r) { return timingsDict(r.timings); },
+            "Milliseconds per stage of this frame (and 'total').")
+        .def_property_readonly("class_counts",
+                               [](const ResultPy& r) {
+                                   return py::dict(py::arg("invalid") = r.class_counts[0],
+                                                   py::arg("ground") = r.class_counts[1],
+                                                   py::arg("nonground") = r.class_counts[2],
+                                                   py::arg("outlier") = r.class_counts[3]);
+                               })
+        .def_readonly("sensor_height", &ResultPy::sensor_height,
+                      "h_s used for this frame (the estimate once an 'auto' height is known)")
+        .def_readonly("mount_note", &ResultPy::mount_note,
+                      "News about the sensor mount on the frame it happened ('' otherwise): an "
+                      "'auto' estimate, or configured values far from the ground")
+        .def("__len__", [](const ResultPy& r) { return r.labels.size(); })
+        .def("__repr__", [](const ResultPy& r) {
+            return "travel.Result(" + std::to_string(r.labels.size()) + " points, " +
+                   std::to_string(r.class_counts[1]) + " ground, " +
+                   std::to_string(r.clusters.size) + " clusters)";
+        });
+
+    py::class_<PipelinePy>(m, "Pipeline", R"doc(
+The TRAVEL pipeline: ground segmentation, then object clustering of the non-ground points.
+Keep one per sensor stream and reuse it (buffers are reused; `auto` mount values are estimated on
+the first frames and kept). Pipelines share nothing: one per thread runs in parallel (process
+releases the GIL); one Pipeline used by several threads serialises its calls.
+)doc")
+        .def(py::init<const Params&>(), py::arg("params") = Params{},
+             "Validates params (ConfigError naming the first offending parameter).")
+        .def("process", &process, py::arg("points"), py::arg("rings") = py::none(),
+             py::arg("times") = py::none(), py::arg("attitude") = py::none(),
+             py::arg("gravity") = py::none(), py::arg("velocity") = py::none(),
+             py::arg("reference_time") = 0.0, R"doc(
+Segments one frame and returns a Result.
+
+points: (N, 3) or (N, 4) float32 or float64 array (x, y, z[, intensity]) in the sensor frame, any
+  strides (read in place, copied once into the library's buffers), or a travel.Scan (no copy).
+  Points with NaN / inf coordinates, all-zero points and points outside [min_range, max_range]
+  are labelled 0 (invalid); nothing is dropped, nothing raises.
+rings: optional (N,) integer laser ring (0 = lowest), values in [0, 65535].
+times: optional (N,) float per-point time [s] (same clock as reference_time), for deskew.
+attitude: optional 3x3 rotation vehicle -> gravity-aligned (roll and pitch level the frame).
+gravity: optional 3-vector, the gravity direction measured in the sensor frame (instead).
+velocity: optional (vx, vy, vz, wx, wy, wz), sensor frame [m/s, rad/s], for deskew with times.
+Raises ValueError for a wrong shape, dtype or size.
+)doc")
+        .def_property_readonly(
+            "params", [](const PipelinePy& p) { return p.pipeline.params(); },
+            "The parameters in use ('auto' values replaced by their estimates once known).");
+
+    m.def("read_scan", &readScanPy, py::arg("path"), py::arg("format") = "auto", R"doc(
+Reads a scan with the library's reader (the apps' one): format auto, kitti, nuscenes, pcd or ply.
+`auto` decides from the name, folder, first line or size, never by guessing silently. Raises
+InputError (a ValueError) naming the file when it is missing, malformed or has no finite point.
+)doc");
+    m.def("_write_labels", &writeLabels, py::arg("path"), py::arg("labels"),
+          py::arg("cluster_ids"));
+    m.def(
+        "read_labels",
+        [](const std::string& path) {
+            std::vector<uint32_t> v = readLabelFile(path, kAnyLabelCount);
+            const auto n = static_cast<py::ssize_t>(v.size());
+            return adopt<uint32_t>(std::move(v), {n});
+        },
+        py::arg("path"), "A .label file (SemanticKITTI or travel-kitti) as (N,) uint32.");
+    m.def("_ground_metrics", &groundMetrics);
+    py::class_<ObjectEvalOptions>(m, "_ObjectEvalOptions")
+        .def(py::init<>())
+        .def_readwrite("gt_cluster_distance", &ObjectEvalOptions::gt_cluster_distance)
+        .def_readwrite("min_gt_object_points", &ObjectEvalOptions::min_gt_object_points)
+        .def_readwrite("min_instance_points", &ObjectEvalOptions::min_instance_points)
+        .def_readwrite("entropy_on_predicted_nonground",
+                       &ObjectEvalOptions::entropy_on_predicted_nonground);
+    m.def("_object_metrics", &objectMetrics);
+    m.def("_bench_cpp", &benchCpp);
+}
+
+}  // namespace travel::python
+
+PYBIND11_MODULE(_travel, m) {
+    m.doc() = "TRAVEL for MRPT: traversable ground and object segmentation of LiDAR scans.";
+    travel::python::bindParams(m);
+    travel::python::bindPipeline(m);
+}

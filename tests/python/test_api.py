@@ -1,0 +1,259 @@
+"""travel's Python API on synthetic frames: shapes and dtypes, every input layout giving the same
+labels, parameters, files, metrics, errors and threads."""
+import concurrent.futures
+import copy
+import pickle
+
+import numpy as np
+import pytest
+
+import travel
+from conftest import synthetic_frame
+
+
+def segment(points, **kwargs):
+    return travel.Pipeline(travel.Params()).process(points, **kwargs)
+
+
+def test_result_shapes_and_dtypes(frame):
+    points, _, is_box = frame
+    r = segment(points)
+    n = len(points)
+    assert r.labels.shape == (n,) and r.labels.dtype == np.uint8
+    assert r.cluster_ids.shape == (n,) and r.cluster_ids.dtype == np.uint32
+    assert r.ground_mask.dtype == np.bool_ and r.ground_mask.sum() == r.class_counts["ground"]
+    assert sum(r.class_counts.values()) == n
+    assert set(np.unique(r.labels)) <= {0, 1, 2, 3}
+    # Ground is ground, the box is one cluster.
+    ground = (points[:, 2] < -1.6) & (np.hypot(points[:, 0], points[:, 1]) < 40)
+    assert np.mean(r.labels[ground] == travel.GROUND) > 0.95
+    assert np.all(r.labels[is_box] == travel.NONGROUND)
+    box_ids = np.unique(r.cluster_ids[is_box])
+    assert len(box_ids) == 1 and box_ids[0] > 0
+    c = r.clusters
+    k = len(c)
+    assert k >= 1 and np.array_equal(c.ids, np.arange(1, k + 1))
+    for name in ("centroids", "aabb_min", "aabb_max", "obb_center", "obb_extent"):
+        assert getattr(c, name).shape == (k, 3) and getattr(c, name).dtype == np.float32
+    for name in ("num_points", "first_point", "obb_yaw", "ground_z", "height_above_ground"):
+        assert getattr(c, name).shape == (k,)
+    box = box_ids[0] - 1
+    assert c.num_points[box] == np.sum(r.cluster_ids == box_ids[0])
+    assert 7.9 < c.centroids[box, 0] < 8.1  # the one face seen
+    assert abs(c.height_above_ground[box] - (points[is_box, 2].max() + 1.73)) < 0.05
+    t = r.terrain
+    m = len(t)
+    assert m == 4 * t.cells_per_side ** 2 and t.resolution == 4.0
+    assert t.planes.shape == (m, 4) and t.ground_planes.shape == (m, 4)
+    assert t.corners.shape == (m, 3, 3) and t.means.shape == (m, 3)
+    assert t.traversable.dtype == np.bool_ and t.traversable.sum() > 0
+    assert t.node_class.dtype == np.uint8 and t.num_points.sum() > 0
+    node = t.node_at(5.0, 0.5)
+    assert t.traversable[node] and abs(t.ground_planes[node, 3] - 1.73) < 0.05
+    h = t.height_above_ground(np.array([[5.0, 0.5, -1.0]]))
+    assert abs(h[0] - 0.73) < 0.05
+    assert {"preprocess", "ground_total", "objects_total", "total"} <= set(r.timings)
+    assert abs(r.sensor_height - 1.73) < 1e-9 and "ground" in repr(r)
+
+
+def test_every_layout_gives_the_same_labels(frame):
+    points, ring, _ = frame
+    reference = segment(points)
+    layouts = {
+        "float64": points.astype(np.float64),
+        "xyz only": np.ascontiguousarray(points[:, :3]),
+        "fortran": np.asfortranarray(points),
+        "strided view": np.concatenate([points, points], axis=1)[:, :4],
+        "column slice": points[:, :3],
+    }
+    for name, p in layouts.items():
+        r = segment(p)
+        assert np.array_equal(r.labels, reference.labels), name
+        assert np.array_equal(r.cluster_ids, reference.cluster_ids), name
+    with_rings = segment(points, rings=ring.astype(np.uint16))
+    assert np.array_equal(with_rings.labels, reference.labels)
+
+
+def test_nan_points_are_invalid_not_errors(frame):
+    points = frame[0].copy()
+    points[:100, 0] = np.nan
+    points[100:200, 2] = np.inf
+    r = segment(points)
+    assert np.all(r.labels[:200] == travel.INVALID) and np.all(r.cluster_ids[:200] == 0)
+
+
+def test_pipeline_keeps_state_and_reports_auto_height(frame):
+    params = travel.Params(sensor_height="auto")
+    assert params.is_auto("sensor_height") and not params.is_auto("mount_roll_deg")
+    pipeline = travel.Pipeline(params)
+    first = pipeline.process(frame[0])
+    assert "sensor_height" in first.mount_note
+    assert abs(pipeline.params.sensor_height - 1.73) < 0.05
+    assert pipeline.process(frame[0]).mount_note == ""
+
+
+def test_input_errors(frame):
+    points = frame[0]
+    pipeline = travel.Pipeline(travel.Params())
+    bad = {
+        "ndim": points[:, 0],
+        "columns": points[:, :2],
+        "dtype": points.astype(np.int32),
+        "float16": points.astype(np.float16),
+    }
+    for name, p in bad.items():
+        with pytest.raises(ValueError, match="points"):
+            pipeline.process(p)
+    with pytest.raises(ValueError, match="rings"):
+        pipeline.process(points, rings=np.zeros(3, np.uint16))
+    with pytest.raises(ValueError, match="rings"):
+        pipeline.process(points, rings=np.full(len(points), 70000))
+    with pytest.raises(ValueError, match="rings"):
+        pipeline.process(points, rings=np.zeros(len(points), np.float32))
+    with pytest.raises(ValueError, match="times"):
+        pipeline.process(points, times=np.zeros(len(points) - 1, np.float32))
+    with pytest.raises(ValueError, match="attitude"):
+        pipeline.process(points, attitude=np.eye(2))
+    with pytest.raises(ValueError, match="velocity"):
+        pipeline.process(points, velocity=[1, 2, 3])
+    # An empty frame is not an error: nothing to label.
+    assert len(pipeline.process(np.zeros((0, 3), np.float32)).labels) == 0
+
+
+def test_attitude_and_deskew_inputs(frame):
+    points, _, _ = frame
+    level = segment(points, attitude=np.eye(3), gravity=None)
+    assert np.array_equal(level.labels, segment(points).labels)
+    times = np.linspace(0, 0.1, len(points), dtype=np.float32)
+    still = segment(points, times=times, velocity=np.zeros(6))
+    assert np.array_equal(still.labels, level.labels)
+
+
+def test_params_attributes_come_from_the_library():
+    p = travel.Params()
+    keys = travel.Params.keys()
+    assert len(keys) > 40 and "sensor_height" in keys and "ground_dist" in keys
+    for key in keys:
+        doc = getattr(travel.Params, key).__doc__
+        assert doc and len(doc) > 20, key
+        getattr(p, key)
+    assert "[m]" in travel.Params.sensor_height.__doc__
+    assert p.to_dict()["num_rings"] == 64
+    p.ground_dist = 0.2
+    p.num_rings = 32
+    p.ring_source = "table"
+    p.deskew = False
+    assert (p.ground_dist, p.num_rings, p.ring_source, p.deskew) == (0.2, 32, "table", False)
+    assert p != travel.Params() and copy.deepcopy(p) == p
+    assert pickle.loads(pickle.dumps(p)) == p
+    assert travel.Params.from_yaml(p.to_yaml()) == p
+    assert "ground_dist=0.2" in repr(p)
+    assert travel.Params(ground_dist=0.2).ground_dist == 0.2
+
+
+def test_params_errors_carry_the_library_messages():
+    p = travel.Params()
+    with pytest.raises(travel.ConfigError, match="outside its allowed range"):
+        p.ground_dist = -1.0
+    assert p.ground_dist == travel.Params().ground_dist  # unchanged on error
+    with pytest.raises(ValueError, match="ground_dist"):
+        p.ground_dist = float("nan")
+    with pytest.raises(ValueError, match="not one of"):
+        p.ring_source = "laser"
+    with pytest.raises(ValueError, match="expected an int"):
+        p.num_rings = 3.5
+    with pytest.raises(ValueError, match="expected a bool"):
+        p.deskew = 1
+    with pytest.raises(ValueError, match="expected a number"):
+        p.ground_dist = "0.2"
+    with pytest.raises(ValueError, match="did you mean 'ground_dist'"):
+        travel.Params(groun_dist=0.2)
+    with pytest.raises(AttributeError):
+        p.no_such_parameter = 1
+    p.min_range = 50.0
+    p.max_range = 40.0
+    with pytest.raises(travel.ConfigError, match="min_range"):
+        p.validate()
+    with pytest.raises(travel.ConfigError, match="min_range"):
+        travel.Pipeline(p)
+    with pytest.raises(travel.ConfigError, match="hdl64"):
+        travel.Params.from_preset("no-such-sensor")
+
+
+def test_presets_and_files(tmp_path):
+    assert {"hdl64", "vlp16"} <= set(travel.Params.presets())
+    vlp16 = travel.Params.from_preset("vlp16")
+    assert vlp16.num_rings == 16
+    config = tmp_path / "robot.yaml"
+    config.write_text("travel:\n  preset: vlp16\n  sensor_height: 0.8\n")
+    p = travel.Params.from_file(config)
+    assert p.num_rings == 16 and p.sensor_height == 0.8
+    config.write_text("travel:\n  sensor_hieght: 0.8\n")
+    with pytest.raises(travel.ConfigError, match=r"robot.yaml:2:.*did you mean"):
+        travel.Params.from_file(config)
+
+
+def test_scan_and_label_files(tmp_path, frame):
+    points = frame[0]
+    path = tmp_path / "000000.bin"
+    points.tofile(path)
+    scan = travel.read_scan(path)
+    assert scan.format == "kitti" and len(scan) == len(points) and scan.rings is None
+    assert np.array_equal(scan.points, points)
+    pipeline = travel.Pipeline(travel.Params())
+    from_scan = pipeline.process(scan)
+    assert np.array_equal(from_scan.labels, segment(points).labels)
+    labels = tmp_path / "000000.label"
+    travel.write_labels(labels, from_scan)
+    encoded = travel.read_labels(labels)
+    assert encoded.dtype == np.uint32 and len(encoded) == len(points)
+    assert np.array_equal(encoded & 0xFFFF, from_scan.labels)
+    assert np.array_equal(encoded >> 16, from_scan.cluster_ids)
+    with pytest.raises(FileNotFoundError):
+        travel.read_scan(tmp_path / "missing.bin")
+    (tmp_path / "odd.bin").write_bytes(b"\0" * 13)
+    with pytest.raises(travel.InputError, match="odd.bin"):
+        travel.read_scan(tmp_path / "odd.bin")
+    with pytest.raises(travel.ConfigError, match="pcd"):
+        travel.read_scan(path, format="las")
+
+
+def test_metrics(frame):
+    points, _, is_box = frame
+    r = segment(points)
+    gt = np.where(is_box, (7 << 16) | 10, 40).astype(np.uint32)  # car instance 7, road
+    gt[np.all(points[:, :3] == 0, axis=1)] = 0                 # no return: unlabeled
+    gt[(points[:, 2] > -1.6) & ~is_box] = 0                     # the box's foot: unlabeled
+    g = travel.metrics.ground(r, gt)
+    assert g["f1"] > 95 and g["tp"] + g["fn"] == np.sum(gt == 40)
+    a = travel.metrics.ground(r, gt, protocol="A", z=points[:, 2])
+    assert a["f1"] > 95
+    with pytest.raises(ValueError, match="protocol"):
+        travel.metrics.ground(r, gt, protocol="C")
+    with pytest.raises(ValueError, match="gt"):
+        travel.metrics.ground(r, gt[:-1])
+    o = travel.metrics.objects(r, gt, points)
+    assert o["mean_coverage"] > 0.9 and o["mean_purity"] > 0.9 and len(o["instances"]) == 1
+
+
+def test_threads_give_identical_results():
+    frames = [synthetic_frame(seed=s)[0] for s in range(4)]
+    serial = [segment(f) for f in frames]
+
+    def run(index):  # one Pipeline per thread, several frames each
+        pipeline = travel.Pipeline(travel.Params())
+        return [pipeline.process(frames[(index + k) % 4]) for k in range(4)]
+
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(run, range(4)))
+    for index, rs in enumerate(results):
+        for k, r in enumerate(rs):
+            expected = serial[(index + k) % 4]
+            assert np.array_equal(r.labels, expected.labels)
+            assert np.array_equal(r.cluster_ids, expected.cluster_ids)
+    # One Pipeline shared by threads: calls serialise, results stay whole.
+    shared = travel.Pipeline(travel.Params())
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        rs = list(pool.map(lambda k: shared.process(frames[k % 4]), range(8)))
+    for k, r in enumerate(rs):
+        assert np.array_equal(r.labels, serial[k % 4].labels)
