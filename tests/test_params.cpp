@@ -343,7 +343,7 @@ TEST(Presets, PresetKeyThenOverrides) {
     const Params p = fromText("# my robot\npreset: vlp16\nsensor_height: 0.8\n");
     EXPECT_EQ(p.sensor_height, 0.8);
     EXPECT_EQ(p.node_min_points, 5);
-    EXPECT_EQ(p.tgf_resolution, 2.0);
+    EXPECT_EQ(p.tgf_resolution, 4.0);
     EXPECT_EQ(fromText("travel:\n  preset: \"hdl32\"\n").mount_yaw_deg, -90.0);
     EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\npreset: vlp16\n"); }),
                     "'preset' must come before");

@@ -100,6 +100,14 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     terrain_fitting_.run(field_, params_, result.terrain);
     t.ttmf = msSince(clock);
     result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels);
+    const bool faces = params_.vertical_face_min_rise > 0.0;
+    if (faces) {
+        range_image_.build(cloud, aligned_.valid, params_);
+        vertical_faces_.unlabelFaceFeet(aligned_, range_image_, params_, result.labels,
+                                        result.class_counts);
+    } else {
+        vertical_faces_.clear();
+    }
     t.labelling = msSince(clock);
     t.ground_total =
         t.preprocess + t.embedding + t.node_fitting + t.graph_search + t.ttmf + t.labelling;
@@ -108,9 +116,11 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     result.clusters.clear();
     t.range_image = t.horizontal = t.vertical = t.clusters = t.objects_total = 0;
     if (!params_.cluster_objects) return;
-    range_image_.build(cloud, aligned_.valid, params_);
+    if (!faces) range_image_.build(cloud, aligned_.valid, params_);  // else built above
     t.range_image = msSince(clock);
+    vertical_faces_.setFaceFeet(result.labels, PointClass::Ground);
     clustering_.horizontal(aligned_, range_image_, result.labels, params_);
+    vertical_faces_.setFaceFeet(result.labels, PointClass::NonGround);
     t.horizontal = msSince(clock);
     clustering_.vertical(params_);
     t.vertical = msSince(clock);

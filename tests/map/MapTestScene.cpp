@@ -147,7 +147,11 @@ std::string mapIni(const std::string& section) {
            "[" +
            section +
            "_traversabilityMap_00_insertOpts]\n"
-           "preset=vlp16\nsensor_height=1.8\nmax_step_height=0.1\nmax_neighbour_step=0.1\n"
+           // The map's thresholds were set with the preset's former 2 m cells; with the 4 m
+           // cells of the preset now, the box's footprint drops from 43/48 to 35/48 obstacle
+           // cells (issue 14 report: open item).
+           "preset=vlp16\ntgf_resolution=2\nsensor_height=1.8\nmax_step_height=0.1\n"
+           "max_neighbour_step=0.1\n"
            "max_traversable_slope_deg=20\n";
 }
 

@@ -113,6 +113,10 @@ struct AutoReal {
     X(bool, label_with_node_plane, false, "", 0, 1,                                               \
       "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
       "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
+    X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
+      "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
+      "than this is on a wall, fence, trunk or bush face: NonGround, left out of the object "     \
+      "clusters (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")       \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
       "Points more than this below the refitted plane are outliers (below-ground noise)")         \
     /* ---- Range image (Sec. IV-A) ---- */                                                       \

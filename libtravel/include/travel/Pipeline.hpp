@@ -26,6 +26,7 @@
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
 #include "travel/TriGridField.hpp"
+#include "travel/VerticalFaces.hpp"
 
 namespace travel {
 
@@ -69,6 +70,7 @@ class Pipeline {
     TraversableGraphSearch graph_search_;
     TerrainModelFitting terrain_fitting_;
     RangeImage range_image_;
+    VerticalFaces vertical_faces_;
     RunClustering clustering_;
 };
 

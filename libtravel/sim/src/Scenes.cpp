@@ -1,6 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/sim/Scenes.hpp"
 
+#include <cmath>
+
 namespace travel::sim {
 namespace {
 
@@ -24,15 +26,20 @@ Step halfPlane(const Eigen::Vector2d& start, const Eigen::Vector2d& towards_rais
     return step;
 }
 
+Box box(uint32_t id, double x, double y, double length, double width, double height,
+        double yaw_deg = 0.0) {
+    Box b;
+    b.id = id;
+    b.centre = {x, y};
+    b.yaw_deg = yaw_deg;
+    b.length = length;
+    b.width = width;
+    b.height = height;
+    return b;
+}
+
 Box car(uint32_t id, double x, double y, double yaw_deg) {
-    Box box;
-    box.id = id;
-    box.centre = {x, y};
-    box.yaw_deg = yaw_deg;
-    box.length = 4.5;
-    box.width = 1.8;
-    box.height = 1.5;
-    return box;
+    return box(id, x, y, 4.5, 1.8, 1.5, yaw_deg);
 }
 
 Pole pole(uint32_t id, double x, double y, double radius, double height) {
@@ -114,6 +121,76 @@ Scene mixed() {
     scene.boxes = {car(1, -8.0, -2.0, 10.0)};
     scene.poles = {pole(2, 5.0, -4.0, 0.12, 4.0)};
     scene.walls = {wall(3, {-10.0, 8.0}, {0.0, 8.0}, 0.2, 2.0)};
+    return scene;
+}
+
+Scene fencesAndWalls() {
+    Scene scene;
+    // Fence along y = 6: thin posts, and mesh panels whose lower edge is 2 cm above the ground
+    // (the rays through the mesh holes are not modelled: the panels are solid, 1 cm thick).
+    uint32_t panel_id = 101;
+    for (int k = 0; k < 25; ++k) {
+        const double x = -30.0 + 2.5 * k;
+        scene.poles.push_back(pole(static_cast<uint32_t>(k + 1), x, 6.0, 0.04, 1.6));
+        if (k + 1 < 25) {
+            Box panel = box(panel_id++, x + 1.25, 6.0, 2.0, 0.01, 1.5);  // 0.5 m gaps
+            panel.clearance = 0.02;
+            scene.boxes.push_back(panel);
+        }
+    }
+    // Wall on a footing along y = -7: the footing's top is a 0.6 m wide strip 0.3 m high.
+    scene.walls.push_back(wall(200, {-30.0, -7.0}, {30.0, -7.0}, 0.25, 2.5));
+    scene.boxes.push_back(box(201, 0.0, -7.0, 60.0, 0.6, 0.3));
+    return scene;
+}
+
+Scene grassVerges() {
+    Scene scene;
+    Ramp left;
+    left.start = {0.0, 4.0};
+    left.direction = {0.0, 1.0};
+    left.length = 2.0;
+    left.width = 400.0;
+    left.slope_deg = std::atan(0.3 / 2.0) / kDegToRad;
+    scene.ramps.push_back(left);
+    Ramp right = left;
+    right.start = {0.0, -4.0};
+    right.direction = {0.0, -1.0};
+    right.length = 1.5;
+    right.slope_deg = std::atan(0.5 / 1.5) / kDegToRad;
+    scene.ramps.push_back(right);
+    scene.roughness.amplitude = 0.03;
+    scene.roughness.wavelength = 1.0;
+    return scene;
+}
+
+Scene offRoadMeadow() {
+    Scene scene;
+    scene.bumps = {
+        {{6.0, 4.0}, 0.3, 2.0},    {{-7.0, 9.0}, 0.5, 3.0},    {{12.0, -6.0}, 0.4, 2.5},
+        {{-10.0, -8.0}, 0.6, 4.0}, {{18.0, 12.0}, 0.5, 3.0},   {{2.0, -14.0}, 0.35, 1.5},
+        {{-18.0, 2.0}, 0.25, 2.0}, {{25.0, -18.0}, 0.45, 3.5}, {{-22.0, -20.0}, 0.3, 2.5},
+        {{8.0, 20.0}, -0.3, 3.0},  {{-3.0, 4.0}, -0.2, 2.0},
+    };
+    scene.roughness.amplitude = 0.05;
+    scene.roughness.wavelength = 1.2;
+    const double bushes[8][4] = {{7, -3, 1.0, 0.8},   {-5, 6, 1.4, 1.2},   {14, 8, 1.2, 1.0},
+                                 {-12, -4, 0.8, 0.6}, {20, -10, 1.6, 1.2}, {-9, 15, 1.0, 0.9},
+                                 {4, 11, 0.9, 0.7},   {-16, -13, 1.2, 1.1}};
+    for (int k = 0; k < 8; ++k)
+        scene.boxes.push_back(box(static_cast<uint32_t>(k + 1), bushes[k][0], bushes[k][1],
+                                  bushes[k][2], bushes[k][2], bushes[k][3], 20.0 * k));
+    const double trunks[6][3] = {{9, 2, 0.2},    {-6, -7, 0.3}, {15, -2, 0.15},
+                                 {-14, 9, 0.25}, {3, -9, 0.2},  {22, 6, 0.3}};
+    for (int k = 0; k < 6; ++k)
+        scene.poles.push_back(
+            pole(static_cast<uint32_t>(11 + k), trunks[k][0], trunks[k][1], trunks[k][2], 4.0));
+    return scene;
+}
+
+Scene carBesideSensor(double gap) {
+    Scene scene;
+    scene.boxes = {car(1, 0.0, gap + 0.9, 0.0)};
     return scene;
 }
 

@@ -35,6 +35,29 @@ Scene urbanObjects();
 /// A 10 deg ramp, a kerb and sidewalk, bumps, a car (id 1), a pole (id 2), a wall (id 3).
 Scene mixed();
 
+// ---- Failure scenes of issue 14 (errors seen on unseen SemanticKITTI / off-road scans) ----
+
+/// A road |y| < 5 with, on its left (y = 6), a 1.6 m mesh fence: posts every 2.5 m (ids 1-25)
+/// and mesh panels reaching 2 cm above the ground with 0.5 m gaps between them (ids 101-);
+/// on its right (y = -7), a 2.5 m wall (id 200) on a 0.3 m high, 0.6 m wide footing (id 201).
+/// The bases of fences and walls are what TRAVEL labelled ground 5-20 m away.
+Scene fencesAndWalls();
+
+/// A road |y| < 4 between verges: on the left, grass rising 0.3 m over 2 m (8.5 deg) to a
+/// plateau; on the right, an embankment rising 0.5 m over 1.5 m (18 deg) to a plateau; 3 cm
+/// roughness (1 m wavelength) everywhere. All of it is ground: what TRAVEL missed 5-40 m away.
+Scene grassVerges();
+
+/// Uneven meadow: bumps of 0.2-0.6 m (sigma 1.5-4 m), 5 cm roughness (1.2 m wavelength),
+/// bushes (0.6-1.2 m boxes, ids 1-8) and tree trunks (0.15-0.3 m radius, ids 11-16). Meant for
+/// an OS1-64 about 1.3 m above the ground (kOffRoadSensorHeight).
+Scene offRoadMeadow();
+constexpr double kOffRoadSensorHeight = 1.3;
+
+/// Flat ground and one 4.5 x 1.8 x 1.5 m car (id 1) parked beside the sensor along +x, its
+/// near side `gap` metres from the sensor (y = gap .. gap + 1.8).
+Scene carBesideSensor(double gap);
+
 /// Sensor pose in the world: `height` above the terrain at (x, y), attitude
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll) (angles in degrees).
 Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,

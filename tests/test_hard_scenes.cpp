@@ -1,0 +1,179 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// The failures seen on scans the project was never tuned on (issue 14), each reproduced in a
+// synthetic scene with exact ground truth: fence and wall bases labelled ground, grass verges
+// missed, an uneven off-road meadow with bushes and trunks, a car right beside the sensor.
+// Each test prints its figures (run with --gtest_filter=HardScenes.* to see them) and asserts
+// the level the current algorithm reaches, with margin: a change that loses it fails here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "SceneMetrics.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel/sim/Scenes.hpp"
+#include "travel/sim/SyntheticLidar.hpp"
+
+namespace travel {
+namespace {
+
+struct SceneRun {
+    sim::Scan scan;
+    Result result;
+    test::SceneScores scores;
+};
+
+SceneRun segment(const sim::Scene& scene, sim::LidarModel model, const Params& params,
+                 double height) {
+    model.range_noise_sigma = 0.01;
+    model.seed = 7;
+    model.max_range = params.max_range;
+    SceneRun run;
+    run.scan = sim::scan(scene, model, sim::sensorPoseAt(scene, 0, 0, height, 0, 0, 0));
+    Pipeline pipeline(params);
+    pipeline.process(run.scan.cloud, {}, run.result);
+    run.scores = test::scoreScene(run.scan.gt, run.result.labels);
+    return run;
+}
+
+// Non-ground points of objects with instance in [lo, hi] labelled ground, and their number.
+std::pair<std::size_t, std::size_t> objectPointsAsGround(const SceneRun& run, uint32_t lo,
+                                                         uint32_t hi) {
+    std::size_t as_ground = 0, total = 0;
+    for (std::size_t i = 0; i < run.scan.gt.size(); ++i) {
+        const uint32_t id = run.scan.gt.instance[i];
+        if (id < lo || id > hi) continue;
+        ++total;
+        as_ground += run.result.labels[i] == PointClass::Ground;
+    }
+    return {as_ground, total};
+}
+
+void print(const char* name, const test::SceneScores& s) {
+    std::printf("%-28s ground P %.4f R %.4f F1 %.4f (fp %zu fn %zu, > 0.3 m as ground %zu)\n", name,
+                s.precision(), s.recall(), s.f1(), s.fp, s.fn, s.high_obstacle_as_ground);
+}
+
+Params hdl64Params() {
+    Params p;
+    p.sensor_height = sim::kSensorHeight;
+    return p;
+}
+
+// OS1-64 (uniform +-16.6 deg, 64 x 2048), as share/presets/os64.yaml, at 1.3 m.
+Params os64Params() {
+    Params p;
+    p.sensor_height = sim::kOffRoadSensorHeight;
+    p.min_range = 0.5;
+    p.max_range = 60.0;
+    p.num_rings = 64;
+    p.num_columns = 2048;
+    p.elevation_table = "uniform";
+    p.min_elevation_deg = -16.6;
+    p.max_elevation_deg = 16.6;
+    p.vertical_face_min_rise = 0.25;
+    return p;
+}
+
+TEST(HardScenes, FenceAndWallBasesBesideARoad) {
+    Params params = hdl64Params();
+    params.vertical_face_min_rise = 0.25;  // off: fence 1194 / 20514 as ground, F1 0.977
+    const SceneRun run =
+        segment(sim::fencesAndWalls(), sim::LidarModel::hdl64(), params, sim::kSensorHeight);
+    print("fences_walls", run.scores);
+    const auto fence = objectPointsAsGround(run, 1, 199);
+    const auto wall = objectPointsAsGround(run, 200, 201);
+    std::printf("  fence points as ground %zu / %zu, wall+footing %zu / %zu\n", fence.first,
+                fence.second, wall.first, wall.second);
+    EXPECT_GE(run.scores.f1(), 0.98);
+    EXPECT_EQ(run.scores.high_obstacle_as_ground, 0u);
+    // The lowest centimetres of the mesh (5.8 % of the fence without the face rule). The
+    // footing's flat top, a 0.6 m strip 0.3 m up, stays ground: not fixed yet (4.3 %).
+    EXPECT_LE(fence.first, 0.005 * fence.second);
+    EXPECT_LE(wall.first, 0.06 * wall.second);
+}
+
+TEST(HardScenes, FaceRuleIgnoresInvalidPoints) {
+    // Invalid points have no range-image cell: they change nothing in the face rule.
+    Params params = hdl64Params();
+    params.vertical_face_min_rise = 0.25;
+    const SceneRun run =
+        segment(sim::fencesAndWalls(), sim::LidarModel::hdl64(), params, sim::kSensorHeight);
+    const PointCloud& clean = run.scan.cloud;
+    PointCloud dirty;  // every 7th point preceded by an invalid (NaN) one, rings kept
+    std::vector<int> origin;
+    for (std::size_t i = 0; i < clean.size(); ++i) {
+        if (i % 7 == 0) {
+            dirty.push_back(std::nanf(""), 0.f, 0.f);
+            dirty.ring.push_back(clean.ring[i]);
+            origin.push_back(-1);
+        }
+        dirty.push_back(clean.x[i], clean.y[i], clean.z[i], clean.intensity[i]);
+        dirty.ring.push_back(clean.ring[i]);
+        origin.push_back(static_cast<int>(i));
+    }
+    Pipeline pipeline(params);
+    Result result;
+    pipeline.process(dirty, {}, result);
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < dirty.size(); ++k)
+        if (origin[k] >= 0) differ += result.labels[k] != run.result.labels[origin[k]];
+    EXPECT_EQ(differ, 0u);
+}
+
+TEST(HardScenes, GrassVergesAndEmbankmentsAreGround) {
+    const SceneRun run =
+        segment(sim::grassVerges(), sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight);
+    print("grass_verges", run.scores);
+    // Not fixed yet (issue 14): recall 0.964, the verges' rough slopes are missed. The
+    // thresholds hold today's level; the goal is recall >= 0.98.
+    EXPECT_GE(run.scores.recall(), 0.955);
+    EXPECT_GE(run.scores.f1(), 0.965);
+}
+
+TEST(HardScenes, OffRoadMeadowWithBushesAndTrunks) {
+    const SceneRun run =
+        segment(sim::offRoadMeadow(), sim::LidarModel::uniform(64, -16.6, 16.6, 2048), os64Params(),
+                sim::kOffRoadSensorHeight);
+    print("offroad_meadow_os64", run.scores);
+    const auto bushes = objectPointsAsGround(run, 1, 8);
+    const auto trunks = objectPointsAsGround(run, 11, 16);
+    std::printf("  bush points as ground %zu / %zu, trunk %zu / %zu\n", bushes.first, bushes.second,
+                trunks.first, trunks.second);
+    // Without the face rule: precision 0.991, 402 bush and 113 trunk points as ground.
+    EXPECT_GE(run.scores.f1(), 0.985);
+    EXPECT_GE(run.scores.precision(), 0.998);
+    EXPECT_LE(bushes.first + trunks.first, 20u);
+}
+
+TEST(HardScenes, CarTwoMetresFromA64And128BeamSensor) {
+    struct Sensor {
+        const char* name;
+        sim::LidarModel model;
+        Params params;
+    };
+    Params p64 = hdl64Params();
+    p64.min_range = 1.0;  // the car is nearer than KITTI's 2.7 m self-return cut
+    Params p128 = p64;
+    p128.num_rings = 128;
+    p128.num_columns = 1024;
+    p128.elevation_table = "os128";
+    for (const Sensor& s : {Sensor{"hdl64", sim::LidarModel::hdl64(), p64},
+                            Sensor{"os128", sim::LidarModel::os128(), p128}}) {
+        const SceneRun run =
+            segment(sim::carBesideSensor(2.0), s.model, s.params, sim::kSensorHeight);
+        const test::ObjectScore car =
+            test::scoreObject(run.scan.gt, run.result.labels, run.result.cluster_id, 1);
+        std::printf("car_2m_%-21s coverage %.3f purity %.3f (%zu points)\n", s.name, car.coverage,
+                    car.purity, car.points);
+        SCOPED_TRACE(s.name);
+        // A box car does not reproduce the split seen on real data (windows, dark paint):
+        // this holds the level of the ideal case only.
+        EXPECT_GE(car.coverage, 0.9);
+        EXPECT_GE(car.purity, 0.99);
+    }
+}
+
+}  // namespace
+}  // namespace travel
