@@ -140,6 +140,14 @@ class MethodSegmenter final : public Segmenter {
         }
     }
 
+    bool independentFrames() const override { return !pipeline_ || pipeline_->mountSettled(); }
+
+    std::unique_ptr<Segmenter> clone() const override {
+        auto copy = std::make_unique<MethodSegmenter>(method_, params_);
+        if (pipeline_) *copy->pipeline_ = *pipeline_;  // the settled mount, the same params
+        return copy;
+    }
+
   private:
     Method method_;
     Params params_;

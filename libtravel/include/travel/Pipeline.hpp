@@ -47,6 +47,12 @@ class Pipeline {
     /// (e.g. from a robot description), for the advice of a tilt Mismatch note.
     void setMountAnglesSource(MountAnglesSource source) { angles_source_ = std::move(source); }
 
+    /// True once the mount is settled (`auto` values estimated or given up, fixed ones checked):
+    /// from then on each process() depends on its own frame only, and a copy of this Pipeline
+    /// labels any later frame exactly as this one would (apps run such copies on several
+    /// threads, one Pipeline per thread).
+    bool mountSettled() const { return mount_done_; }
+
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
     /// Rings and columns of the last frame (valid when params.cluster_objects).
