@@ -31,6 +31,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "Prefault.hpp"
 #include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 
@@ -487,6 +488,10 @@ std::vector<double> elevationTableDeg(const Params& params) {
     std::vector<double> table;
     fillElevationTableDeg(params, table);
     return table;
+}
+
+void RangeImage::reserve(std::size_t points) {
+    detail::prefault(row_, points), detail::prefault(col_, points);
 }
 
 void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& valid,

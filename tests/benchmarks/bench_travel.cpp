@@ -12,7 +12,8 @@
 //   BM_Travel_C     TGS + object segmentation (AOS), the whole pipeline, warm buffers
 //   BM_Objects_C    the AOS stages' own time inside the whole pipeline (manual timing)
 //   BM_FirstFrame_C the first process() of a freshly built Pipeline (manual timing; the
-//                   construction is reported as the counter `build_ms`). Inside one process the
+//                   construction and Pipeline::reserve(Result&) are reported as the counter
+//                   `build_ms`). Inside one process the
 //                   allocator reuses memory freed by the previous iteration, so this is a lower
 //                   bound of a new process's first frame (travel-kitti on one file measures that)
 //   BM_Stage_C/<stage> each stage alone on the state the previous stages leave
@@ -164,6 +165,7 @@ void runFirstFrame(benchmark::State& state, CaseId id) {
         const Clock::time_point t0 = Clock::now();
         auto pipeline = std::make_unique<Pipeline>(c.params);
         Result result;
+        pipeline->reserve(result);
         const Clock::time_point t1 = Clock::now();
         pipeline->process(c.cloud, {}, result);
         const Clock::time_point t2 = Clock::now();

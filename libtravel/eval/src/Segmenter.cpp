@@ -84,6 +84,7 @@ class MethodSegmenter final : public Segmenter {
         params_.validate();
         if (method.ground == Ground::Tgs) {
             pipeline_ = std::make_unique<Pipeline>(params_);
+            pipeline_->reserve(result_);
         } else {
             rejectAutoMount(params_, method.name);
         }

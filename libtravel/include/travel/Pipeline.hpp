@@ -31,7 +31,13 @@ namespace travel {
 
 class Pipeline {
   public:
+    /// Validates `params` and sizes every buffer for the sensor they describe (rings x columns
+    /// points, the tri-grid's extent), so the first frame is not slower than the next ones.
     explicit Pipeline(const Params& params);
+
+    /// Sizes a Result's buffers for this pipeline's frames (before its first process(): the
+    /// first frame into a fresh Result would otherwise map their memory page by page).
+    void reserve(Result& result) const;
 
     /// The parameters in use: `auto` values replaced by their estimates once known, the seed
     /// search radius as raised by the first-ground-ring rule.
@@ -63,6 +69,8 @@ class Pipeline {
     void updateMount(const PointCloud& cloud, const FrameInput& input, MountNote& note);
     /// seed_search_radius >= firstGroundRingRadius for the current height and elevation table.
     void applyFirstGroundRing();
+    /// Points of a full frame of the configured sensor: beams x num_columns.
+    std::size_t expectedPoints() const;
 
     Params configured_;
     Params params_;

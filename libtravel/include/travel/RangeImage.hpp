@@ -35,6 +35,8 @@ class RangeImage {
     /// other points get row = col = -1. `cloud` is in the sensor frame (as acquired: the
     /// beams are fixed there). Reuses its buffers across frames.
     void build(const PointCloud& cloud, const std::vector<uint8_t>& valid, const Params& params);
+    /// Sizes (and maps) the buffers for frames of up to `points` points.
+    void reserve(std::size_t points);
 
     int rows() const { return rows_; }
     int cols() const { return cols_; }
