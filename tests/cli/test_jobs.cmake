@@ -1,8 +1,8 @@
-# -j N of the batch apps: the outputs of -j 2 and -j 3 are byte-identical to -j 1's (the workers'
+# -j N of the batch apps: travel-kitti's labels with -j 2 and -j 3 are byte-identical to -j 1's (the workers'
 # results are written in input order), also with `auto` mount values, which the first frames
 # settle one by one before the frames are spread over the workers. Generated scans (no real
-# data); the SemanticKITTI dev frames too when present.
-# Variables: TRAVEL_KITTI, MAKE_SCANS, WORK_DIR, DATA_DIR.
+# data); the SemanticKITTI dev frames too when present, and then travel-eval's frames.csv.
+# Variables: TRAVEL_KITTI, TRAVEL_EVAL (optional), MAKE_SCANS, WORK_DIR, DATA_DIR.
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -49,4 +49,17 @@ if(EXISTS ${velodyne}/000000.bin)
   expect_same_labels(kitti ${velodyne})
 else()
   message(STATUS "SemanticKITTI scans not found in ${velodyne}: real-scan part skipped")
+endif()
+
+# travel-eval: frames.csv of -j 2 equals -j 1's but for the time columns (the last two).
+if(TRAVEL_EVAL AND EXISTS ${velodyne}/000000.bin)
+  foreach(j 1 2)
+    expect_success(${TRAVEL_EVAL} report -i ${DATA_DIR}/semantickitti/sequences/00
+                   -o ${WORK_DIR}/eval_j${j} --methods travel,gpf+slr -q -j ${j})
+    file(STRINGS ${WORK_DIR}/eval_j${j}/frames.csv rows_j${j})
+    list(TRANSFORM rows_j${j} REPLACE ",[^,]*,[^,]*$" "")
+  endforeach()
+  if(NOT rows_j1 STREQUAL rows_j2)
+    message(FATAL_ERROR "travel-eval frames.csv differs between -j 1 and -j 2:\n${rows_j1}\n${rows_j2}")
+  endif()
 endif()
