@@ -31,6 +31,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "FastAtan2.hpp"
 #include "Prefault.hpp"
 #include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
@@ -38,6 +39,8 @@
 namespace travel {
 
 namespace {
+
+using detail::fastAtan2;
 
 constexpr float kPi = 3.14159265358979f;
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
@@ -104,26 +107,6 @@ void fillElevationTableDeg(const Params& params, std::vector<double>& out) {
 // ---- Vectorisable maths ------------------------------------------------------------------
 // The library is built for baseline x86-64 (SSE2) without -ffast-math; these are written so
 // that GCC vectorises the loops that use them.
-
-// atan2 with a degree-11 minimax polynomial on [0, 1]: max error 2e-6 rad (0.0001 deg, far
-// below half a column). One division (no min/max selects feeding it, which made GCC compute
-// both), Estrin evaluation and the octant applied in one step keep it short. Same results as
-// std::atan2 for signed zeros and infinities, except atan2(0, 0), which is NaN here.
-inline float fastAtan2(float y, float x) {
-    const float ax = std::fabs(x), ay = std::fabs(y);
-    const float lo = std::min(ax, ay);
-    const float t = lo / (ax + ay - lo);  // min / max, in [0, 1]
-    const float t2 = t * t, t4 = t2 * t2;
-    const float p01 = 0.99997726f - 0.33262347f * t2;
-    const float p23 = 0.19354346f - 0.11643287f * t2;
-    const float p45 = 0.05265332f - 0.01172120f * t2;
-    const float atan_t = t * (p01 + t4 * (p23 + t4 * p45));
-    // |y| > |x| gives pi/2 - a, x < 0 gives pi - a, both give pi/2 + a.
-    const bool swapped = ay > ax, negative_x = x < 0.0f;
-    const float offset = swapped ? 0.5f * kPi : (negative_x ? kPi : 0.0f);
-    const float sign = swapped != negative_x ? -1.0f : 1.0f;
-    return std::copysign(offset + sign * atan_t, y);
-}
 
 // std::sqrt keeps an errno branch (no -fno-math-errno here) that stops vectorisation. Inverse
 // square root from the exponent bits and three Newton steps: relative error 2e-7.
