@@ -13,7 +13,7 @@
 // Items whose processing carries state into the next ones (TRAVEL's mount, estimated or checked
 // on the first frames) run on the calling thread, one by one, while `sequential()` says so; then
 // `fork(workers)` runs once and the remaining items are spread over the workers. At most
-// 2 x workers items are in flight (slots are reused). An exception thrown by `produce` reaches
+// workers + 1 items are in flight (slots are reused: each new one costs page faults). An exception thrown by `produce` reaches
 // the caller when its item's turn to be consumed comes (the items before it are consumed, as
 // with -j 1); one thrown by `consume` (e.g. an interrupt) stops the workers and propagates.
 #pragma once
@@ -52,7 +52,7 @@ void forEachInOrder(std::size_t count, unsigned workers, Sequential sequential, 
     fork(workers);
 
     // Ring of slots: item i lives in slot i % window until consumed.
-    const std::size_t window = 2 * static_cast<std::size_t>(workers);
+    const std::size_t window = static_cast<std::size_t>(workers) + 1;
     std::vector<Slot> slots(window);
     std::vector<std::exception_ptr> errors(window);
     std::vector<char> done(window, 0);
