@@ -49,8 +49,10 @@ class RangeImage {
     RingSource source_ = RingSource::None;
     std::vector<int16_t> row_;
     std::vector<int32_t> col_;
-    std::vector<double> table_deg_;  // cached elevation table
-    std::vector<float> table_mid_;   // decision boundaries between table beams [rad]
+    std::vector<double> table_deg_;              // cached elevation table
+    std::vector<float> table_mid_;               // decision boundaries between table beams [rad]
+    std::vector<int32_t> table_mids_quantised_;  // the same, quantised (row_of_elevation_'s)
+    std::vector<int16_t> row_of_elevation_;      // row of each quantised elevation
 };
 
 }  // namespace travel
