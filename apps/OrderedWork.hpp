@@ -6,16 +6,17 @@
 //
 //   forEachInOrder<FrameEvaluation>(files.size(), jobs,
 //       [&] { return !segmenter->independentFrames(); },        // sequential while true
-//       [&](unsigned n) { ...make n - 1 clones of worker 0's state... },
+//       [&](unsigned n) { ...room for n workers (each may copy worker 0 on its thread)... },
 //       [&](unsigned w, std::size_t i, FrameEvaluation& slot) { ...worker w fills slot... },
 //       [&](std::size_t i, FrameEvaluation& slot) { ...write, print, in order... });
 //
 // Items whose processing carries state into the next ones (TRAVEL's mount, estimated or checked
 // on the first frames) run on the calling thread, one by one, while `sequential()` says so; then
 // `fork(workers)` runs once and the remaining items are spread over the workers. At most
-// workers + 1 items are in flight (slots are reused: each new one costs page faults). An exception thrown by `produce` reaches
-// the caller when its item's turn to be consumed comes (the items before it are consumed, as
-// with -j 1); one thrown by `consume` (e.g. an interrupt) stops the workers and propagates.
+// workers + 1 items are in flight (slots are reused: each new one costs page faults). An exception
+// thrown by `produce` reaches the caller when its item's turn to be consumed comes (the items
+// before it are consumed, as with -j 1); one thrown by `consume` (e.g. an interrupt) stops the
+// workers and propagates.
 #pragma once
 
 #include <algorithm>

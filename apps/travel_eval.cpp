@@ -63,10 +63,10 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     segmenters.push_back(travel::eval::makeSegmenter(method, params));
     travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
         frames.size(), jobs, [&] { return !segmenters[0]->independentFrames(); },
-        [&](unsigned workers) {
-            while (segmenters.size() < workers) segmenters.push_back(segmenters[0]->clone());
-        },
+        [&](unsigned workers) { segmenters.resize(workers); },
         [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
+            // Each worker builds its own copy, on its thread (page faults in parallel).
+            if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
             travel::eval::evaluateFrame(frames[f].scan, frames[f].label, *segmenters[w], frame,
                                         frames[f].format);
         },

@@ -135,11 +135,11 @@ int run(int argc, char** argv) {
     std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;
     segmenters.push_back(std::move(segmenter));
     const auto produce = [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
+        // Each worker builds its own copy, on its thread (page faults in parallel).
+        if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
         travel::eval::evaluateFrame(files[f], label_paths[f], *segmenters[w], frame, format);
     };
-    const auto fork = [&](unsigned workers) {
-        while (segmenters.size() < workers) segmenters.push_back(segmenters[0]->clone());
-    };
+    const auto fork = [&](unsigned workers) { segmenters.resize(workers); };
     const auto consume = [&](std::size_t f, travel::eval::FrameEvaluation& frame) {
         travel::apps::throwIfInterrupted();  // the .label files written so far are complete
         const std::string stem = fs::path(files[f]).stem().string();

@@ -46,6 +46,14 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     }
 }
 
+Pipeline Pipeline::settledCopy() const {
+    Pipeline copy(configured_);
+    copy.params_ = params_;  // the `auto` estimates, the raised seed search radius
+    copy.angles_source_ = angles_source_;
+    copy.mount_done_ = mount_done_;  // (frame_index_, which process() counts, only numbers notes)
+    return copy;
+}
+
 std::size_t Pipeline::expectedPoints() const {
     const std::size_t beams = std::max<std::size_t>(elevationTableDeg(params_).size(),
                                                     static_cast<std::size_t>(params_.num_rings));

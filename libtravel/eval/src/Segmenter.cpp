@@ -90,6 +90,13 @@ class MethodSegmenter final : public Segmenter {
         }
     }
 
+    // A clone around `settled` (Pipeline::settledCopy()); `params` are another segmenter's.
+    MethodSegmenter(const Method& method, const Params& params, Pipeline settled)
+        : method_(method), params_(params) {
+        pipeline_ = std::make_unique<Pipeline>(std::move(settled));
+        pipeline_->reserve(result_);
+    }
+
     const char* name() const override { return method_.name; }
 
     void segment(const PointCloud& cloud, Segmentation& out) override {
@@ -143,10 +150,12 @@ class MethodSegmenter final : public Segmenter {
 
     bool independentFrames() const override { return !pipeline_ || pipeline_->mountSettled(); }
 
+    // Reads only state that segment() leaves alone once independentFrames(): callable while
+    // another thread segments with this one.
     std::unique_ptr<Segmenter> clone() const override {
-        auto copy = std::make_unique<MethodSegmenter>(method_, params_);
-        if (pipeline_) *copy->pipeline_ = *pipeline_;  // the settled mount, the same params
-        return copy;
+        if (!pipeline_) return std::make_unique<MethodSegmenter>(method_, params_);
+        return std::unique_ptr<MethodSegmenter>(
+            new MethodSegmenter(method_, params_, pipeline_->settledCopy()));
     }
 
   private:

@@ -59,6 +59,11 @@ class Pipeline {
     /// threads, one Pipeline per thread).
     bool mountSettled() const { return mount_done_; }
 
+    /// A new pipeline in this one's settled state (the parameters in use, the mount settled)
+    /// with buffers of its own. Reads only what process() no longer changes once
+    /// mountSettled(), so another thread may call it while this pipeline processes a frame.
+    Pipeline settledCopy() const;
+
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
     /// Rings and columns of the last frame (valid when params.cluster_objects).

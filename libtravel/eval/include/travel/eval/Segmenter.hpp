@@ -48,7 +48,8 @@ class Segmenter {
     /// Once true, frames are independent: clones may segment them in any order, on other
     /// threads, with the labels of one segmenter processing them in order (travel-kitti -j N).
     virtual bool independentFrames() const = 0;
-    /// An independent copy in the same state (same settled mount), for another thread.
+    /// An independent copy in the same state (same settled mount), for another thread. Once
+    /// independentFrames(), a thread may clone while another segments with this one.
     virtual std::unique_ptr<Segmenter> clone() const = 0;
 };
 
