@@ -2,13 +2,14 @@
 //
 // Shared by the apps: the one command-line dialect (docs/cli.md), declared here once:
 // CommonFlags (-i/-o/-f/-q/-v and the configuration flags), PictureFlags (--mpp, --size),
-// MaxFramesFlag, MemoryLimitFlag (createFolder and AppError: OutputFolder.hpp), the parameter
-// sources in their documented order, and main()'s one-line error reporting. The parser itself
-// (CommandLine: version, examples, "did you mean") is in CommandLineParser.hpp.
+// MaxFramesFlag, JobsFlag, MemoryLimitFlag (createFolder and AppError: OutputFolder.hpp), the
+// parameter sources in their documented order, and main()'s one-line error reporting. The parser
+// itself (CommandLine: version, examples, "did you mean") is in CommandLineParser.hpp.
 #pragma once
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -20,6 +21,7 @@
 #include "CommandLineParser.hpp"
 #include "Interrupt.hpp"
 #include "MemoryLimit.hpp"  // kDefaultMemoryLimitMiB
+#include "OrderedWork.hpp"  // defaultJobs
 #include "OutputFolder.hpp"
 #include "travel/Config.hpp"
 #include "travel/ConfigIO.hpp"
@@ -253,6 +255,26 @@ struct MaxFramesFlag {
     void keepFirst(std::vector<T>& items) const {
         if (count() > 0 && items.size() > static_cast<std::size_t>(count())) items.resize(count());
     }
+};
+
+/// -j N, --jobs N, for the batch apps: N worker threads, each with its own Pipeline (the
+/// library is single-threaded per instance); outputs are identical to -j 1 and in input order
+/// (OrderedWork.hpp). Default: the number of cores; 0 is a usage error.
+struct JobsFlag {
+    mutable TCLAP::ValueArg<long> arg;  // TCLAP's getValue() is not const
+    /// `what`: what the workers process, as the app's --help names it ("scans").
+    JobsFlag(CommandLine& line, const std::string& what)
+        : arg("j", "jobs",
+              "Process " + what +
+                  " on N threads, one pipeline each; output identical to -j 1 "
+                  "and in input order (default: the number of cores, here " +
+                  std::to_string(defaultJobs()) + ")",
+              false, static_cast<long>(defaultJobs()), "N", line.cmd) {
+        line.checks.push_back([this] {
+            if (arg.getValue() < 1) throw usageError("-j must be >= 1");
+        });
+    }
+    unsigned count() const { return static_cast<unsigned>(std::min<long>(arg.getValue(), 256)); }
 };
 
 /// --max-memory MIB, for the apps that read MRPT files (travel-map, travel-rawlog; see

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
@@ -45,21 +46,39 @@ using travel::eval::MethodRun;
 // ---------------------------------------------------------------------------------------------
 // Running one method over the frames, with a progress display
 
+// Frames are evaluated on `jobs` workers (one segmenter each, cloned once the first one's mount
+// is settled) and added to the run in frame order: the same run as with one worker.
 MethodRun runMethod(const std::string& method, const travel::Params& params,
                     const std::vector<FrameRef>& frames, const std::string& progress_label,
-                    travel::apps::Verbosity verbosity) {
+                    travel::apps::Verbosity verbosity, unsigned jobs) {
     // -v: one line per frame (its name) instead of the progress line.
     const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
     travel::apps::ProgressLine progress(
         progress_label, frames.size(),
         per_frame_lines ? travel::apps::Verbosity::Quiet : verbosity);
-    MethodRun run = travel::eval::runMethod(method, params, frames, [&](std::size_t f) {
-        travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
-        if (per_frame_lines)
-            std::fprintf(stderr, "%s: frame %zu/%zu %s\n", progress_label.c_str(), f + 1,
-                         frames.size(), frames[f].name.c_str());
-        progress.update(f + 1);
-    });
+    MethodRun run;
+    run.method = method;
+    travel::eval::EvaluationAccumulator totals;
+    std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;
+    segmenters.push_back(travel::eval::makeSegmenter(method, params));
+    travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
+        frames.size(), jobs, [&] { return !segmenters[0]->independentFrames(); },
+        [&](unsigned workers) { segmenters.resize(workers); },
+        [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
+            // Each worker builds its own copy, on its thread (page faults in parallel).
+            if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
+            travel::eval::evaluateFrame(frames[f].scan, frames[f].label, *segmenters[w], frame,
+                                        frames[f].format);
+        },
+        [&](std::size_t f, const travel::eval::FrameEvaluation& frame) {
+            travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
+            if (per_frame_lines)
+                std::fprintf(stderr, "%s: frame %zu/%zu %s\n", progress_label.c_str(), f + 1,
+                             frames.size(), frames[f].name.c_str());
+            travel::eval::addFrame(frames[f], frame, run, totals);
+            progress.update(f + 1);
+        });
+    run.summary = totals.summary();
     if (run.mount && verbosity != travel::apps::Verbosity::Quiet)
         progress.note(travel::apps::mountNoteLine("travel-eval", method, run.mount));
     return run;
@@ -300,6 +319,7 @@ int run(int argc, char** argv) {
                                        "sweep: KEY=v1,v2,... e.g. tgf_resolution=2,4,6,8,10", false,
                                        "", "KEY=VALUES", cmd);
     const travel::apps::MaxFramesFlag max_frames(line, "labelled frames");
+    const travel::apps::JobsFlag jobs(line, "frames");
     if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
     const travel::Config configuration = flags.config.load();
     if (flags.config.print(configuration)) return 0;
@@ -336,7 +356,7 @@ int run(int argc, char** argv) {
     if (!is_sweep) {
         std::vector<MethodRun> runs;
         for (const std::string& name : names)
-            runs.push_back(runMethod(name, params, frames, name, verbosity));
+            runs.push_back(runMethod(name, params, frames, name, verbosity, jobs.count()));
         const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
         openOut(dir / "report.md") << md;
         std::ofstream frames_csv = openOut(dir / "frames.csv");
@@ -352,7 +372,8 @@ int run(int argc, char** argv) {
         travel::Params p = params;
         travel::applyOverride(spec.key + "=" + value, p);
         p.validate();
-        const MethodRun run = runMethod(names[0], p, frames, spec.key + "=" + value, verbosity);
+        const MethodRun run =
+            runMethod(names[0], p, frames, spec.key + "=" + value, verbosity, jobs.count());
         sums.push_back(run.summary);
         const EvaluationSummary& s = sums.back();
         if (quiet) continue;

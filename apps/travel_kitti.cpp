@@ -11,11 +11,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
@@ -48,7 +51,7 @@ int run(int argc, char** argv) {
         "scored).",
         {"travel-kitti -i data/sequences/00 -o out/00",
          "travel-kitti -i scan.pcd -o out -p vlp16 --set sensor_height=1.2",
-         "travel-kitti -i hdl32_000000.bin -f nuscenes -o out -p hdl32 -q"});
+         "travel-kitti -i hdl32_000000.bin -f nuscenes -o out -p hdl32 -q -j 1"});
     TCLAP::CmdLine& cmd = line.cmd;
     const travel::apps::CommonFlags flags(line, false, "hdl64");
     TCLAP::ValueArg<std::string> labels(
@@ -58,6 +61,7 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> csv("", "csv", "Write per-frame metrics and timings to this CSV",
                                      false, "", "FILE", cmd);
     const travel::apps::MaxFramesFlag max_frames(line, "scans");
+    const travel::apps::JobsFlag jobs(line, "scans");
     TCLAP::ValueArg<std::string> method(
         "", "method",
         "Segmentation method: travel (default), travel-no-ttmf, tgs (ground only), ransac, gpf, "
@@ -73,7 +77,7 @@ int run(int argc, char** argv) {
     const std::string out = flags.outputPath();
     const travel::ScanFormat format = flags.scanFormat();
     // Configuration errors first, before any file is touched.
-    const std::unique_ptr<travel::eval::Segmenter> segmenter =
+    std::unique_ptr<travel::eval::Segmenter> segmenter =
         travel::eval::makeSegmenter(method.getValue(), params);
     const travel::ScanList scans = travel::listScans(flags.inputPath(), format);
     std::vector<std::string> files = scans.files;
@@ -94,7 +98,6 @@ int run(int argc, char** argv) {
                    "ms_clusters,ms_objects_total,ms_total\n";
     }
 
-    travel::eval::FrameEvaluation frame;
     travel::eval::EvaluationAccumulator totals;
     std::vector<uint32_t> encoded;
     StageSeries stages[] = {{"preprocess", {}},   {"embedding", {}},   {"node_fitting", {}},
@@ -117,18 +120,29 @@ int run(int argc, char** argv) {
                     "clust", "ms", "ground A: P R F1 Acc", "ground B: P R F1 Acc",
                     "objects: OSE USE (sums) coverage purity");
 
-    for (std::size_t f = 0; f < files.size(); ++f) {
+    // Label files found up front: the workers only read them.
+    std::vector<std::string> label_paths(files.size());
+    for (std::size_t f = 0; f < files.size() && !labels_dir.empty(); ++f) {
+        const std::string stem = fs::path(files[f]).stem().string();
+        label_paths[f] = (fs::path(labels_dir) / (stem + ".label")).string();
+        if (!fs::exists(label_paths[f])) {
+            label_paths[f].clear();
+            ++unlabelled_frames;
+        }
+    }
+    // -j N: worker w segments with segmenters[w] (clones of the first, made once its mount is
+    // settled); frames are consumed here, in input order.
+    std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;
+    segmenters.push_back(std::move(segmenter));
+    const auto produce = [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
+        // Each worker builds its own copy, on its thread (page faults in parallel).
+        if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
+        travel::eval::evaluateFrame(files[f], label_paths[f], *segmenters[w], frame, format);
+    };
+    const auto fork = [&](unsigned workers) { segmenters.resize(workers); };
+    const auto consume = [&](std::size_t f, travel::eval::FrameEvaluation& frame) {
         travel::apps::throwIfInterrupted();  // the .label files written so far are complete
         const std::string stem = fs::path(files[f]).stem().string();
-        std::string label_path;
-        if (!labels_dir.empty()) {
-            label_path = (fs::path(labels_dir) / (stem + ".label")).string();
-            if (!fs::exists(label_path)) {
-                label_path.clear();
-                ++unlabelled_frames;
-            }
-        }
-        travel::eval::evaluateFrame(files[f], label_path, *segmenter, frame, format);
         totals.add(frame);
         if (const travel::MountNote& note = frame.segmentation.mount; note && !quiet)
             progress.note(travel::apps::mountNoteLine("travel-kitti", "", note));
@@ -198,7 +212,10 @@ int run(int argc, char** argv) {
             csv_out << '\n';
         }
         progress.update(f + 1);
-    }
+    };
+    travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
+        files.size(), jobs.count(), [&] { return !segmenters[0]->independentFrames(); }, fork,
+        produce, consume);
     progress.finish();
     if (verbosity == travel::apps::Verbosity::Quiet) return 0;
 
@@ -236,7 +253,7 @@ int run(int argc, char** argv) {
                 o.instances, o.mean_coverage, o.mean_purity, o.split, o.merged);
         }
     }
-    std::printf("Milliseconds per frame (single thread):\n");
+    std::printf("Milliseconds per frame (each frame on one thread):\n");
     for (const StageSeries& s : stages) {
         const double max = s.ms.empty() ? 0.0 : *std::max_element(s.ms.begin(), s.ms.end());
         if (max == 0.0) continue;  // a stage this method does not have

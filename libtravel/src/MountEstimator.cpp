@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "FastAtan2.hpp"
+
 namespace travel {
 namespace {
 
@@ -21,6 +23,28 @@ constexpr double kRansacInlierDist = 0.1;      // m, range noise plus small unev
 constexpr double kRefitDist[] = {0.1, 0.06};   // m, successive least-squares bands
 constexpr double kMaxTiltFromPriorDeg = 30.0;  // steeper planes are walls, not ground
 constexpr std::size_t kMinInliers = 100;
+
+// The bins of a point at (u, v): hypot(u, v) / kBinLength and the azimuth in sectors,
+// (atan2(v, u) + pi) / 2 pi * kSectors; only their integer parts are used. The libm calls cost
+// more than the rest of the estimate, so cheap approximations are used wherever their error
+// cannot change the integer part (the exact call is made within kEdge of a bin edge, or for
+// NaN): the same bins as the exact calls, at a fraction of the cost.
+double ringPosition(double u, double v) {
+    constexpr double kEdge = 1e-9;  // sqrt(u^2 + v^2) is within a few ulps of hypot(u, v)
+    const double approx = std::sqrt(u * u + v * v) / kBinLength;
+    const double frac = approx - std::floor(approx);
+    if (frac >= kEdge && frac <= 1.0 - kEdge) return approx;
+    return std::hypot(u, v) / kBinLength;
+}
+double sectorPosition(double u, double v) {
+    // fastAtan2's error, and float rounding of u and v (1e-7 rad), in sectors.
+    constexpr double kEdge = 2 * detail::kFastAtan2MaxError / (2 * M_PI) * kSectors;
+    const double approx = (detail::fastAtan2(static_cast<float>(v), static_cast<float>(u)) + M_PI) /
+                          (2 * M_PI) * kSectors;
+    const double frac = approx - std::floor(approx);
+    if (frac >= kEdge && frac <= 1.0 - kEdge) return approx;
+    return (std::atan2(v, u) + M_PI) / (2 * M_PI) * kSectors;
+}
 
 // Plane n.p + d = 0 through the points within `band` of the previous plane (PCA); false when
 // fewer than 3 points.
@@ -165,9 +189,8 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
         const double r2 = p.squaredNorm();
         if (!(r2 >= min_r2 && r2 <= max_r2)) continue;  // also drops NaN
         const double u = e1.dot(p), v = e2.dot(p), h = up.dot(p);
-        const double rxy = std::hypot(u, v);
-        const int ring = std::min(num_rings - 1, static_cast<int>(rxy / kBinLength));
-        int sector = static_cast<int>((std::atan2(v, u) + M_PI) / (2 * M_PI) * kSectors);
+        const int ring = std::min(num_rings - 1, static_cast<int>(ringPosition(u, v)));
+        int sector = static_cast<int>(sectorPosition(u, v));
         sector = std::clamp(sector, 0, kSectors - 1);
         const std::size_t bin = static_cast<std::size_t>(ring) * kSectors + sector;
         if (bin_point_[bin] < 0 || h < bin_height_[bin]) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "Prefault.hpp"
 #include "travel/GroundLabelling.hpp"
 #include "travel/NodeFitting.hpp"
 
@@ -34,6 +35,36 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     params_.validate();
     applyFirstGroundRing();
     field_.configure(params_);
+    // Buffers sized for a full frame now: their pages are mapped here, not on the first frame.
+    const std::size_t points = expectedPoints();
+    detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
+    detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
+    field_.reserve(points);
+    if (params_.cluster_objects) {
+        range_image_.reserve(points);
+        clustering_.reserve(points, points);  // the range image has beams x columns cells too
+    }
+}
+
+Pipeline Pipeline::settledCopy() const {
+    Pipeline copy(configured_);
+    copy.params_ = params_;  // the `auto` estimates, the raised seed search radius
+    copy.angles_source_ = angles_source_;
+    copy.mount_done_ = mount_done_;  // (frame_index_, which process() counts, only numbers notes)
+    return copy;
+}
+
+std::size_t Pipeline::expectedPoints() const {
+    const std::size_t beams = std::max<std::size_t>(elevationTableDeg(params_).size(),
+                                                    static_cast<std::size_t>(params_.num_rings));
+    return beams * static_cast<std::size_t>(params_.num_columns);
+}
+
+void Pipeline::reserve(Result& result) const {
+    const std::size_t points = expectedPoints();
+    detail::prefault(result.labels, points);
+    detail::prefault(result.cluster_id, points);
+    detail::prefault(result.terrain.nodes, static_cast<std::size_t>(field_.numNodes()));
 }
 
 void Pipeline::applyFirstGroundRing() {

@@ -31,12 +31,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "FastAtan2.hpp"
+#include "Prefault.hpp"
 #include "travel/EnumNames.hpp"
 #include "travel/Errors.hpp"
 
 namespace travel {
 
 namespace {
+
+using detail::fastAtan2;
 
 constexpr float kPi = 3.14159265358979f;
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
@@ -103,26 +107,6 @@ void fillElevationTableDeg(const Params& params, std::vector<double>& out) {
 // ---- Vectorisable maths ------------------------------------------------------------------
 // The library is built for baseline x86-64 (SSE2) without -ffast-math; these are written so
 // that GCC vectorises the loops that use them.
-
-// atan2 with a degree-11 minimax polynomial on [0, 1]: max error 2e-6 rad (0.0001 deg, far
-// below half a column). One division (no min/max selects feeding it, which made GCC compute
-// both), Estrin evaluation and the octant applied in one step keep it short. Same results as
-// std::atan2 for signed zeros and infinities, except atan2(0, 0), which is NaN here.
-inline float fastAtan2(float y, float x) {
-    const float ax = std::fabs(x), ay = std::fabs(y);
-    const float lo = std::min(ax, ay);
-    const float t = lo / (ax + ay - lo);  // min / max, in [0, 1]
-    const float t2 = t * t, t4 = t2 * t2;
-    const float p01 = 0.99997726f - 0.33262347f * t2;
-    const float p23 = 0.19354346f - 0.11643287f * t2;
-    const float p45 = 0.05265332f - 0.01172120f * t2;
-    const float atan_t = t * (p01 + t4 * (p23 + t4 * p45));
-    // |y| > |x| gives pi/2 - a, x < 0 gives pi - a, both give pi/2 + a.
-    const bool swapped = ay > ax, negative_x = x < 0.0f;
-    const float offset = swapped ? 0.5f * kPi : (negative_x ? kPi : 0.0f);
-    const float sign = swapped != negative_x ? -1.0f : 1.0f;
-    return std::copysign(offset + sign * atan_t, y);
-}
 
 // std::sqrt keeps an errno branch (no -fno-math-errno here) that stops vectorisation. Inverse
 // square root from the exponent bits and three Newton steps: relative error 2e-7.
@@ -375,8 +359,10 @@ class RowAssigner {
     }
 
     // The nearest beam of `table_deg` by elevation. `boundaries` receives the midpoints
-    // between beams [rad].
-    void fromTable(const std::vector<double>& table_deg, std::vector<float>& boundaries) {
+    // between beams [rad]; `row_of_elevation` caches the row of every quantised elevation for
+    // them (rebuilt when they change, `cached_mids` says for which).
+    void fromTable(const std::vector<double>& table_deg, std::vector<float>& boundaries,
+                   std::vector<int32_t>& cached_mids, std::vector<int16_t>& row_of_elevation) {
         const int count = static_cast<int>(table_deg.size()) - 1;
         boundaries.resize(static_cast<std::size_t>(count));
         for (int k = 0; k < count; ++k) {
@@ -392,30 +378,27 @@ class RowAssigner {
             const float horizontal = vectorisableSqrt(xs[i] * xs[i] + ys[i] * ys[i]);
             row[i] = quantisedAngle(fastAtan2(zs[i] - origin_height, horizontal));
         }
-        // A binary search per point would cost more than all the rest: elevation bins give a
-        // start row at most a bin low, and a step or two up finds the row. Quantised
-        // boundaries, then a sentinel that no elevation passes.
-        std::array<int32_t, kMaxRings + 1> mids{};
+        // A search per point would cost more than all the rest: the row of every quantised
+        // elevation (65536 values, 128 KiB) is looked up instead, row = the number of quantised
+        // boundaries <= the elevation (kNoAngle, NaN, ends on row 0). Built once per table.
+        std::array<int32_t, kMaxRings> mids{};
         for (int k = 0; k < count; ++k) mids[k] = quantisedAngle(boundaries[k]);
-        mids[count] = std::numeric_limits<int32_t>::max();
-        constexpr int kBinShift = 5;  // 2048 bins of 32 steps: 0.18 deg
-        constexpr int kBins = 65536 >> kBinShift;
-        std::array<int16_t, kBins> start_row{};
-        for (int bin = 1, beam = 0; bin < kBins; ++bin) {  // rows below the previous bin
-            const int previous_bin_start = ((bin - 1) << kBinShift) + kNoAngle;
-            while (mids[beam] < previous_bin_start) ++beam;
-            start_row[bin] = static_cast<int16_t>(beam);
+        if (cached_mids.size() != static_cast<std::size_t>(count) ||
+            !std::equal(cached_mids.begin(), cached_mids.end(), mids.begin()) ||
+            row_of_elevation.size() != 65536) {
+            row_of_elevation.resize(65536);
+            int beam = 0;
+            for (int e = kNoAngle; e <= kHalfTurn; ++e) {
+                while (beam < count && mids[beam] <= e) ++beam;
+                row_of_elevation[e - kNoAngle] = static_cast<int16_t>(beam);
+            }
+            cached_mids.assign(mids.begin(), mids.begin() + count);
         }
+        const int16_t* row_of = row_of_elevation.data();
         const uint8_t* keep = valid_.data();
         for (std::size_t i = 0; i < n; ++i) {
-            const int elevation = row[i];  // kNoAngle (NaN) ends on row 0
-            int beam = start_row[(elevation - kNoAngle) >> kBinShift];
-            // Two branchless steps cover the named tables (beams >= 0.25 deg apart: at most two
-            // boundaries in two bins); the loop only runs for dense uniform tables.
-            beam += mids[beam] <= elevation;
-            beam += mids[beam] <= elevation;
-            while (mids[beam] <= elevation) ++beam;
-            row[i] = keep[i] ? static_cast<int16_t>(beam) : int16_t{-1};
+            const int16_t beam = row_of[row[i] - kNoAngle];
+            row[i] = keep[i] ? beam : int16_t{-1};
         }
     }
 
@@ -489,6 +472,10 @@ std::vector<double> elevationTableDeg(const Params& params) {
     return table;
 }
 
+void RangeImage::reserve(std::size_t points) {
+    detail::prefault(row_, points), detail::prefault(col_, points);
+}
+
 void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& valid,
                        const Params& params) {
     const std::size_t n = cloud.size();
@@ -553,7 +540,7 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     }
     // A named table fixes the number of rows, whatever num_rings says.
     fillElevationTableDeg(params, table_deg_);
-    rows.fromTable(table_deg_, table_mid_);
+    rows.fromTable(table_deg_, table_mid_, table_mids_quantised_, row_of_elevation_);
     source_ = RingSource::Table;
     rows_ = static_cast<int>(table_deg_.size());
 }

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <limits>
 
+#include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
 #include "travel/TriGridField.hpp"
 
@@ -52,6 +53,21 @@ void RunClustering::unite(int a, int b) {
         parent_[b] = a;
     else
         parent_[a] = b;
+}
+
+void RunClustering::reserve(std::size_t points, std::size_t cells) {
+    using detail::prefault;
+    prefault(key_count_, cells + 1);
+    prefault(sorted_, points), prefault(sorted_col_, points), prefault(point_run_, points);
+    prefault(px_, points), prefault(py_, points), prefault(pz_, points), prefault(range_, points);
+    prefault(run_points_, points), prefault(point_id_, points);
+    // Runs: a few points each on real scans; more grow the buffers once.
+    const std::size_t runs = points / 4 + 1;
+    prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
+    prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
+    prefault(parent_, runs), prefault(run_box_, runs), prefault(cursor_, runs);
+    prefault(run_points_begin_, runs + 1), prefault(run_root_, runs), prefault(root_size_, runs);
+    prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
 
 void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& image,

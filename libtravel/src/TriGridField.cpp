@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Prefault.hpp"
+
 namespace travel {
 
 void TriGridField::configure(const Params& params) {
@@ -44,6 +46,12 @@ void TriGridField::configure(const Params& params) {
             }
         }
     }
+}
+
+void TriGridField::reserve(std::size_t points) {
+    detail::prefault(point_node_, points);
+    detail::prefault(sx_, points), detail::prefault(sy_, points), detail::prefault(sz_, points);
+    detail::prefault(order_, points);
 }
 
 void TriGridField::vertexXY(int vertex, float& x, float& y) const {

@@ -1,20 +1,37 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// TRAVEL benchmarks, single-threaded:
-//   BM_Ground_KITTI/<frame>   ground segmentation (TGS) only, SemanticKITTI seq 00 frames 0-2
-//                             (when ../shared/data is present; otherwise reports an error)
-//   BM_Travel_KITTI/<frame>   TGS + object segmentation (AOS), the whole pipeline
-//   BM_Objects_KITTI/<frame>  the AOS stages' own time inside the whole pipeline
-//   BM_Stage_KITTI/<stage>    each stage alone on frame 000000
-//   BM_Stage_Synthetic/<stage> each stage alone on a synthetic HDL-64E frame
-//   BM_Ground_Synthetic, BM_Travel_Synthetic: a synthetic HDL-64E frame (always available)
+// TRAVEL benchmarks, single-threaded, per sensor. Sensors ("cases"):
+//   KITTI        SemanticKITTI seq 00 frames 0-2, HDL-64E, preset hdl64 (../shared/data)
+//   OS128        shared/data/ouster128/000000.bin, 128 beams, preset os128 (../shared/data)
+//   HDL32        shared/data/nuscenes/hdl32_000000.bin, preset hdl32 (../shared/data)
+//   Synthetic    synthetic HDL-64E frame of the mixed scene (always available)
+//   Synthetic128 synthetic OS1-128 frame (1875 columns) of the mixed scene, preset os128 with
+//                the sensor 1.73 m above the ground (always available)
+// Benchmarks, for each case C:
+//   BM_Ground_C     ground segmentation (TGS) only, warm buffers
+//   BM_Travel_C     TGS + object segmentation (AOS), the whole pipeline, warm buffers
+//   BM_Objects_C    the AOS stages' own time inside the whole pipeline (manual timing)
+//   BM_FirstFrame_C the first process() of a freshly built Pipeline (manual timing: the
+//                   thread's CPU time, page faults included; construction and
+//                   Pipeline::reserve(Result&) in the counter `build_ms`, wall time `wall_ms`).
+//                   Inside one process the allocator reuses memory freed by the previous iteration,
+//                   so this is a lower bound of a new process's first frame (travel-kitti on one
+//                   file measures that)
+//   BM_Stage_C/<stage> each stage alone on the state the previous stages leave
+// (KITTI cases take the frame as argument: BM_Ground_KITTI/0..2; stages use frame 0.)
+// Cases whose data is missing report an error and are skipped.
 // Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
 //        --benchmark_report_aggregates_only=true --benchmark_out=bench_travel.json
+// docs/performance.md has the figures and the per-stage table.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "travel/GroundLabelling.hpp"
 #include "travel/NodeFitting.hpp"
@@ -32,61 +49,157 @@ using namespace travel;
 
 namespace {
 
-bool loadKittiFrame(int index, PointCloud& cloud) {
-    char name[32];
-    std::snprintf(name, sizeof name, "%06d.bin", index);
-    const fs::path path = fs::path(TRAVEL_DATA_DIR) / "semantickitti/sequences/00/velodyne" / name;
+// One sensor case: its parameters and a frame (empty `cloud` = data missing).
+struct Case {
+    const char* name;
+    Params params;
+    PointCloud cloud;
+};
+
+bool readShared(const std::string& relative, ScanFormat format, PointCloud& cloud) {
+    const fs::path path = fs::path(TRAVEL_DATA_DIR) / relative;
     if (!fs::exists(path)) return false;
-    readScan(path.string(), cloud, ScanFormat::KittiBin);
+    readScan(path.string(), cloud, format);
     return true;
 }
 
-void runKitti(benchmark::State& state, bool objects) {
+PointCloud kittiFrame(int index) {
+    char name[64];
+    std::snprintf(name, sizeof name, "semantickitti/sequences/00/velodyne/%06d.bin", index);
     PointCloud cloud;
-    if (!loadKittiFrame(static_cast<int>(state.range(0)), cloud)) {
-        state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
-        return;
+    readShared(name, ScanFormat::KittiBin, cloud);
+    return cloud;
+}
+
+// A synthetic frame of the mixed scene (ramp, kerb, bumps, car, pole, wall), sensor 1.73 m up.
+PointCloud syntheticFrame(sim::LidarModel lidar) {
+    const sim::Scene scene = sim::mixed();
+    lidar.range_noise_sigma = 0.02;
+    return sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, 1.73, 0, 0, 0)).cloud;
+}
+
+enum CaseId { kKitti0, kKitti1, kKitti2, kOs128, kHdl32, kSynthetic, kSynthetic128, kNumCases };
+
+// Loaded once, on first use (the benchmarks of a filtered run load only what they need).
+const Case& getCase(CaseId id) {
+    static std::unique_ptr<Case> cases[kNumCases];
+    if (!cases[id]) {
+        auto c = std::make_unique<Case>();
+        switch (id) {
+            case kKitti0:
+            case kKitti1:
+            case kKitti2:
+                *c = Case{"KITTI", loadPreset("hdl64"), kittiFrame(id - kKitti0)};
+                break;
+            case kOs128:
+                c->name = "OS128";
+                c->params = loadPreset("os128");
+                readShared("ouster128/000000.bin", ScanFormat::KittiBin, c->cloud);
+                break;
+            case kHdl32:
+                c->name = "HDL32";
+                c->params = loadPreset("hdl32");
+                readShared("nuscenes/hdl32_000000.bin", ScanFormat::NuScenesBin, c->cloud);
+                break;
+            case kSynthetic:
+                // Default parameters (= HDL-64E on KITTI), as since the first benchmarks.
+                *c = Case{"Synthetic", Params{}, syntheticFrame(sim::LidarModel::hdl64())};
+                break;
+            case kSynthetic128:
+                c->name = "Synthetic128";
+                c->params = loadPreset("os128");
+                c->params.sensor_height = 1.73;
+                c->cloud = syntheticFrame(sim::LidarModel::os128(1875));
+                break;
+            default:
+                break;
+        }
+        cases[id] = std::move(c);
     }
-    Params params = loadPreset("hdl64");
+    return *cases[id];
+}
+
+bool haveData(benchmark::State& state, const Case& c) {
+    if (!c.cloud.empty()) return true;
+    state.SkipWithError((std::string(c.name) + ": data not found (../shared/data)").c_str());
+    return false;
+}
+
+// Warm buffers, as on a running vehicle, and the mount settled: a mount that finds no ground
+// (OS128: its origin is at ground level) is tried on up to 10 frames, each paying the estimate.
+void warmUp(Pipeline& pipeline, const PointCloud& cloud, Result& result) {
+    do {
+        pipeline.process(cloud, {}, result);
+    } while (!pipeline.mountSettled());
+}
+
+void runWarm(benchmark::State& state, CaseId id, bool objects) {
+    const Case& c = getCase(id);
+    if (!haveData(state, c)) return;
+    Params params = c.params;
     params.cluster_objects = objects;
     Pipeline pipeline(params);
     Result result;
-    pipeline.process(cloud, {}, result);  // warm the buffers, as on a running vehicle
+    warmUp(pipeline, c.cloud, result);
     for (auto _ : state) {
-        pipeline.process(cloud, {}, result);
+        pipeline.process(c.cloud, {}, result);
         benchmark::DoNotOptimize(result.labels.data());
     }
-    state.counters["points"] = static_cast<double>(cloud.size());
+    state.counters["points"] = static_cast<double>(c.cloud.size());
     state.counters["ground"] = static_cast<double>(result.count(PointClass::Ground));
     state.counters["clusters"] = static_cast<double>(result.clusters.size());
 }
-void BM_Ground_KITTI(benchmark::State& state) {
-    runKitti(state, false);
-}
-void BM_Travel_KITTI(benchmark::State& state) {
-    runKitti(state, true);
-}
-BENCHMARK(BM_Ground_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Travel_KITTI)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 // The object stage alone, inside the whole pipeline (same cache state as in use): each
 // iteration runs ground + objects and reports the objects' own time (manual timing).
-void BM_Objects_KITTI(benchmark::State& state) {
-    PointCloud cloud;
-    if (!loadKittiFrame(static_cast<int>(state.range(0)), cloud)) {
-        state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
-        return;
-    }
-    Pipeline pipeline(loadPreset("hdl64"));
+void runObjects(benchmark::State& state, CaseId id) {
+    const Case& c = getCase(id);
+    if (!haveData(state, c)) return;
+    Pipeline pipeline(c.params);
     Result result;
-    pipeline.process(cloud, {}, result);
+    warmUp(pipeline, c.cloud, result);
     for (auto _ : state) {
-        pipeline.process(cloud, {}, result);
+        pipeline.process(c.cloud, {}, result);
         state.SetIterationTime(result.timings.objects_total / 1000.0);
     }
     state.counters["clusters"] = static_cast<double>(result.clusters.size());
 }
-BENCHMARK(BM_Objects_KITTI)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+// CPU time of the calling thread [s], page faults included (kernel time on its behalf): on a
+// shared machine wall-clock time mostly measures the other processes.
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The first frame of a new Pipeline (manual timing: the thread's CPU time in process()); the
+// counters give the construction + Pipeline::reserve(Result&) (`build_ms`, CPU) and the first
+// frame's wall-clock time (`wall_ms`).
+void runFirstFrame(benchmark::State& state, CaseId id) {
+    using Clock = std::chrono::steady_clock;
+    const Case& c = getCase(id);
+    if (!haveData(state, c)) return;
+    double build_ms = 0, wall_ms = 0;
+    for (auto _ : state) {
+        const double t0 = threadCpuSeconds();
+        auto pipeline = std::make_unique<Pipeline>(c.params);
+        Result result;
+        pipeline->reserve(result);
+        const double t1 = threadCpuSeconds();
+        const Clock::time_point w1 = Clock::now();
+        pipeline->process(c.cloud, {}, result);
+        const Clock::time_point w2 = Clock::now();
+        const double t2 = threadCpuSeconds();
+        benchmark::DoNotOptimize(result.labels.data());
+        state.SetIterationTime(t2 - t1);
+        build_ms += 1e3 * (t1 - t0);
+        wall_ms += std::chrono::duration<double, std::milli>(w2 - w1).count();
+    }
+    const double n = static_cast<double>(std::max<int64_t>(state.iterations(), 1));
+    state.counters["build_ms"] = build_ms / n;
+    state.counters["wall_ms"] = wall_ms / n;
+}
 
 // Each stage alone, on the state the previous stages leave.
 enum Stage {
@@ -99,38 +212,19 @@ enum Stage {
     kRangeImage,
     kHorizontal,
     kVertical,
-    kClusters
+    kClusters,
+    kNumStages
 };
+constexpr const char* kStageNames[kNumStages] = {
+    "preprocess", "embedding",   "node_fitting", "graph_search", "ttmf",
+    "labelling",  "range_image", "horizontal",   "vertical",     "clusters"};
 
-// A synthetic HDL-64E frame of the mixed scene (ramp, kerb, bumps, car, pole, wall; ~118k
-// points), available without ../shared/data.
-const PointCloud& syntheticFrame() {
-    static const PointCloud cloud = [] {
-        const sim::Scene scene = sim::mixed();
-        sim::LidarModel lidar = sim::LidarModel::hdl64();
-        lidar.range_noise_sigma = 0.02;
-        return sim::scan(scene, lidar, sim::sensorPoseAt(scene, 0, 0, 1.73, 0, 0, 0)).cloud;
-    }();
-    return cloud;
-}
-
-void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage);
-
-void BM_Stage_KITTI(benchmark::State& state, Stage stage) {
-    PointCloud cloud;
-    if (!loadKittiFrame(0, cloud)) {
-        state.SkipWithError("SemanticKITTI frames not found (../shared/data)");
-        return;
-    }
-    runStage(state, cloud, stage);
-}
-
-void BM_Stage_Synthetic(benchmark::State& state, Stage stage) {
-    runStage(state, syntheticFrame(), stage);
-}
-
-void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage) {
-    const Params params = loadPreset("hdl64");
+void runStage(benchmark::State& state, CaseId id, Stage stage) {
+    const Case& c = getCase(id);
+    if (!haveData(state, c)) return;
+    const PointCloud& cloud = c.cloud;
+    // The parameters the Pipeline uses (e.g. its seed search radius reaching the first ring).
+    const Params params = Pipeline(c.params).params();
     AlignedCloud aligned;
     TriGridField field;
     field.configure(params);
@@ -188,6 +282,8 @@ void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage) {
                 clustering.assignIds(params, cluster_id);
                 clustering.summarize(field, model, clusters);
                 break;
+            default:
+                break;
         }
         benchmark::ClobberMemory();
         // Embedding resets the model: refit so the later stages' inputs stay meaningful.
@@ -200,48 +296,63 @@ void runStage(benchmark::State& state, const PointCloud& cloud, Stage stage) {
         }
     }
 }
-BENCHMARK_CAPTURE(BM_Stage_KITTI, preprocess, kPreprocess)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, embedding, kEmbedding)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, node_fitting, kNodeFitting)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, graph_search, kGraphSearch)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, ttmf, kTtmf)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, labelling, kLabelling)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, range_image, kRangeImage)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, horizontal, kHorizontal)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, vertical, kVertical)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_KITTI, clusters, kClusters)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, preprocess, kPreprocess)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, embedding, kEmbedding)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, node_fitting, kNodeFitting)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, graph_search, kGraphSearch)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, ttmf, kTtmf)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, labelling, kLabelling)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, range_image, kRangeImage)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, horizontal, kHorizontal)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, vertical, kVertical)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Stage_Synthetic, clusters, kClusters)->Unit(benchmark::kMicrosecond);
 
-void runSynthetic(benchmark::State& state, bool objects) {
-    const PointCloud& cloud = syntheticFrame();
-    Params params;
-    params.cluster_objects = objects;
-    Pipeline pipeline(params);
-    Result result;
-    for (auto _ : state) {
-        pipeline.process(cloud, {}, result);
-        benchmark::DoNotOptimize(result.labels.data());
+void registerAll() {
+    using benchmark::RegisterBenchmark;
+    struct Named {
+        CaseId id;
+        const char* name;
+    };
+    // Whole-pipeline benchmarks: the three KITTI frames as /0../2, then the other sensors.
+    for (const char* what : {"Ground", "Travel", "Objects"}) {
+        const std::string kind = what;
+        auto add = [&](const std::string& name, CaseId id) {
+            benchmark::internal::Benchmark* b;
+            if (kind == "Objects") {
+                b = RegisterBenchmark(name.c_str(), [id](benchmark::State& s) {
+                        runObjects(s, id);
+                    })->UseManualTime();
+            } else {
+                const bool objects = kind == "Travel";
+                b = RegisterBenchmark(
+                    name.c_str(), [id, objects](benchmark::State& s) { runWarm(s, id, objects); });
+            }
+            b->Unit(benchmark::kMillisecond);
+        };
+        for (int f = 0; f < 3; ++f)
+            add("BM_" + kind + "_KITTI/" + std::to_string(f), static_cast<CaseId>(kKitti0 + f));
+        for (const Named& n :
+             {Named{kOs128, "OS128"}, Named{kHdl32, "HDL32"}, Named{kSynthetic, "Synthetic"},
+              Named{kSynthetic128, "Synthetic128"}})
+            add("BM_" + kind + "_" + n.name, n.id);
     }
-    state.counters["points"] = static_cast<double>(cloud.size());
+    const Named all[] = {{kKitti0, "KITTI"},
+                         {kOs128, "OS128"},
+                         {kHdl32, "HDL32"},
+                         {kSynthetic, "Synthetic"},
+                         {kSynthetic128, "Synthetic128"}};
+    for (const Named& n : all)
+        RegisterBenchmark(("BM_FirstFrame_" + std::string(n.name)).c_str(),
+                          [id = n.id](benchmark::State& s) { runFirstFrame(s, id); })
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+    for (const Named& n : all)
+        for (int stage = 0; stage < kNumStages; ++stage)
+            RegisterBenchmark(
+                ("BM_Stage_" + std::string(n.name) + "/" + kStageNames[stage]).c_str(),
+                [id = n.id, stage](benchmark::State& s) {
+                    runStage(s, id, static_cast<Stage>(stage));
+                })
+                ->Unit(benchmark::kMicrosecond);
 }
-void BM_Ground_Synthetic(benchmark::State& state) {
-    runSynthetic(state, false);
-}
-void BM_Travel_Synthetic(benchmark::State& state) {
-    runSynthetic(state, true);
-}
-BENCHMARK(BM_Ground_Synthetic)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Travel_Synthetic)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    registerAll();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -120,42 +120,30 @@ std::string describeFrames(const std::vector<FrameRef>& frames) {
     return text;
 }
 
-MethodRun runMethod(const std::string& method, const Params& params,
-                    const std::vector<FrameRef>& frames,
-                    const std::function<void(std::size_t)>& before_frame) {
-    MethodRun run;
-    run.method = method;
-    const std::unique_ptr<Segmenter> segmenter = makeSegmenter(method, params);
-    FrameEvaluation frame;
-    EvaluationAccumulator totals;
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        if (before_frame) before_frame(f);
-        evaluateFrame(frames[f].scan, frames[f].label, *segmenter, frame, frames[f].format);
-        if (frame.segmentation.mount && !run.mount) run.mount = frame.segmentation.mount;
-        totals.add(frame);
-        FrameRow row;
-        row.frame = frames[f].name;
-        row.points = frame.cloud.size();
-        for (int p = 0; p < 2; ++p) row.ground[p] = frame.ground[p];
-        row.ground_ms = frame.segmentation.ground_ms;
-        row.objects_ms = frame.segmentation.objects_ms;
-        row.clusters = frame.clusters;
-        // Ground-only methods have no object stage: their object scores would be all zero.
-        row.objects = frame.clustered;
-        if (row.objects) {
-            const ObjectScores& o = frame.objects;
-            row.entropy = o.entropy;
-            row.coverage = o.mean_coverage;
-            row.purity = o.mean_purity;
-            row.instances = o.instances.size();
-            row.clustered = o.clustered;
-            row.split = o.split;
-            row.merged = o.merged;
-        }
-        run.rows.push_back(std::move(row));
+void addFrame(const FrameRef& ref, const FrameEvaluation& frame, MethodRun& run,
+              EvaluationAccumulator& totals) {
+    if (frame.segmentation.mount && !run.mount) run.mount = frame.segmentation.mount;
+    totals.add(frame);
+    FrameRow row;
+    row.frame = ref.name;
+    row.points = frame.cloud.size();
+    for (int p = 0; p < 2; ++p) row.ground[p] = frame.ground[p];
+    row.ground_ms = frame.segmentation.ground_ms;
+    row.objects_ms = frame.segmentation.objects_ms;
+    row.clusters = frame.clusters;
+    // Ground-only methods have no object stage: their object scores would be all zero.
+    row.objects = frame.clustered;
+    if (row.objects) {
+        const ObjectScores& o = frame.objects;
+        row.entropy = o.entropy;
+        row.coverage = o.mean_coverage;
+        row.purity = o.mean_purity;
+        row.instances = o.instances.size();
+        row.clustered = o.clustered;
+        row.split = o.split;
+        row.merged = o.merged;
     }
-    run.summary = totals.summary();
-    return run;
+    run.rows.push_back(std::move(row));
 }
 
 std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<FrameRef>& frames,

@@ -84,9 +84,17 @@ class MethodSegmenter final : public Segmenter {
         params_.validate();
         if (method.ground == Ground::Tgs) {
             pipeline_ = std::make_unique<Pipeline>(params_);
+            pipeline_->reserve(result_);
         } else {
             rejectAutoMount(params_, method.name);
         }
+    }
+
+    // A clone around `settled` (Pipeline::settledCopy()); `params` are another segmenter's.
+    MethodSegmenter(const Method& method, const Params& params, Pipeline settled)
+        : method_(method), params_(params) {
+        pipeline_ = std::make_unique<Pipeline>(std::move(settled));
+        pipeline_->reserve(result_);
     }
 
     const char* name() const override { return method_.name; }
@@ -138,6 +146,16 @@ class MethodSegmenter final : public Segmenter {
             out.ground_ms = msBetween(t0, t1);
             out.objects_ms = method_.objects == Objects::None ? 0.0 : msBetween(t1, t2);
         }
+    }
+
+    bool independentFrames() const override { return !pipeline_ || pipeline_->mountSettled(); }
+
+    // Reads only state that segment() leaves alone once independentFrames(): callable while
+    // another thread segments with this one.
+    std::unique_ptr<Segmenter> clone() const override {
+        if (!pipeline_) return std::make_unique<MethodSegmenter>(method_, params_);
+        return std::unique_ptr<MethodSegmenter>(
+            new MethodSegmenter(method_, params_, pipeline_->settledCopy()));
     }
 
   private:

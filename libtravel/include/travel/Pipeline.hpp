@@ -32,7 +32,13 @@ namespace travel {
 
 class Pipeline {
   public:
+    /// Validates `params` and sizes every buffer for the sensor they describe (rings x columns
+    /// points, the tri-grid's extent), so the first frame is not slower than the next ones.
     explicit Pipeline(const Params& params);
+
+    /// Sizes a Result's buffers for this pipeline's frames (before its first process(): the
+    /// first frame into a fresh Result would otherwise map their memory page by page).
+    void reserve(Result& result) const;
 
     /// The parameters in use: `auto` values replaced by their estimates once known, the seed
     /// search radius as raised by the first-ground-ring rule.
@@ -48,6 +54,17 @@ class Pipeline {
     /// (e.g. from a robot description), for the advice of a tilt Mismatch note.
     void setMountAnglesSource(MountAnglesSource source) { angles_source_ = std::move(source); }
 
+    /// True once the mount is settled (`auto` values estimated or given up, fixed ones checked):
+    /// from then on each process() depends on its own frame only, and a copy of this Pipeline
+    /// labels any later frame exactly as this one would (apps run such copies on several
+    /// threads, one Pipeline per thread).
+    bool mountSettled() const { return mount_done_; }
+
+    /// A new pipeline in this one's settled state (the parameters in use, the mount settled)
+    /// with buffers of its own. Reads only what process() no longer changes once
+    /// mountSettled(), so another thread may call it while this pipeline processes a frame.
+    Pipeline settledCopy() const;
+
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
     /// Rings and columns of the last frame (valid when params.cluster_objects).
@@ -58,6 +75,8 @@ class Pipeline {
     void updateMount(const PointCloud& cloud, const FrameInput& input, MountNote& note);
     /// seed_search_radius >= firstGroundRingRadius for the current height and elevation table.
     void applyFirstGroundRing();
+    /// Points of a full frame of the configured sensor: beams x num_columns.
+    std::size_t expectedPoints() const;
 
     Params configured_;
     Params params_;

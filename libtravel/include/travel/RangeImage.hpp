@@ -35,6 +35,8 @@ class RangeImage {
     /// other points get row = col = -1. `cloud` is in the sensor frame (as acquired: the
     /// beams are fixed there). Reuses its buffers across frames.
     void build(const PointCloud& cloud, const std::vector<uint8_t>& valid, const Params& params);
+    /// Sizes (and maps) the buffers for frames of up to `points` points.
+    void reserve(std::size_t points);
 
     int rows() const { return rows_; }
     int cols() const { return cols_; }
@@ -47,8 +49,10 @@ class RangeImage {
     RingSource source_ = RingSource::None;
     std::vector<int16_t> row_;
     std::vector<int32_t> col_;
-    std::vector<double> table_deg_;  // cached elevation table
-    std::vector<float> table_mid_;   // decision boundaries between table beams [rad]
+    std::vector<double> table_deg_;              // cached elevation table
+    std::vector<float> table_mid_;               // decision boundaries between table beams [rad]
+    std::vector<int32_t> table_mids_quantised_;  // the same, quantised (row_of_elevation_'s)
+    std::vector<int16_t> row_of_elevation_;      // row of each quantised elevation
 };
 
 }  // namespace travel

@@ -44,6 +44,10 @@ class RunClustering {
     void summarize(const TriGridField& field, const TerrainModel& terrain,
                    std::vector<ClusterSummary>& clusters);
 
+    /// Sizes (and maps) the buffers for frames of up to `points` non-ground points on a range
+    /// image of `cells` = rows x columns cells.
+    void reserve(std::size_t points, std::size_t cells);
+
     std::size_t numRuns() const { return run_first_.size(); }
 
   private:

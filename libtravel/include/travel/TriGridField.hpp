@@ -30,6 +30,9 @@ class TriGridField {
     /// (Re)size the grid for the parameters: R = max_range, rounded up to whole cells.
     void configure(const Params& params);
 
+    /// Sizes (and maps) the per-point buffers for frames of up to `points` points.
+    void reserve(std::size_t points);
+
     /// Bucket the valid points into nodes; fills model.nodes[*].begin/count and the sorted
     /// coordinates below. Invalid points and points outside the grid are left out (the caller
     /// labels them).

@@ -60,10 +60,12 @@ struct MethodRun {
     MountNote mount;
 };
 
-/// Runs `method` over `frames`; `before_frame(f)` is called before frame f (progress display).
-MethodRun runMethod(const std::string& method, const Params& params,
-                    const std::vector<FrameRef>& frames,
-                    const std::function<void(std::size_t)>& before_frame);
+/// One step of running a method over frames: adds `frame` (the evaluation of `ref`) to `run`
+/// (its row, its first mount note) and to `totals`. Call in frame order; afterwards
+/// run.summary = totals.summary(). (travel-eval evaluates the frames with evaluateFrame() on
+/// -j N workers and adds them here in order.)
+void addFrame(const FrameRef& ref, const FrameEvaluation& frame, MethodRun& run,
+              EvaluationAccumulator& totals);
 
 /// report.md: ground tables for both protocols and the object table; `setup` describes the
 /// parameters (preset, config, overrides).

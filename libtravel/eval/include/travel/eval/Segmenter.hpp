@@ -43,6 +43,14 @@ class Segmenter {
     virtual const char* name() const = 0;
     /// Segments one frame (sensor frame, as acquired). Buffers are reused across frames.
     virtual void segment(const PointCloud& cloud, Segmentation& out) = 0;
+    /// False while segment() still carries state from one frame into the next (TRAVEL's
+    /// Pipeline estimates or checks the mount on its first frames, Pipeline::mountSettled()).
+    /// Once true, frames are independent: clones may segment them in any order, on other
+    /// threads, with the labels of one segmenter processing them in order (travel-kitti -j N).
+    virtual bool independentFrames() const = 0;
+    /// An independent copy in the same state (same settled mount), for another thread. Once
+    /// independentFrames(), a thread may clone while another segments with this one.
+    virtual std::unique_ptr<Segmenter> clone() const = 0;
 };
 
 /// Methods by name: "travel", "travel-no-ttmf", "tgs", "ransac", "gpf", "gpf+slr", "tgs+slr",
