@@ -1,7 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/traversability/FrameFusion.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace travel {
 
@@ -53,6 +55,129 @@ void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGr
         addEnd(pw, ends.obstacle);
     }
     grid.endFrame(frame.time_s, map);
+}
+
+namespace {
+
+void sortUnique(std::vector<uint64_t>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+int64_t keyAxis(uint64_t key, int axis) {
+    return int64_t((key >> (16 * (2 - axis))) & 0xFFFF);
+}
+
+}  // namespace
+
+int64_t VoxelUpdate::bitOf(uint64_t key) const {
+    int64_t i[3];
+    for (int a = 0; a < 3; ++a) {
+        i[a] = keyAxis(key, a) - corner_[a];
+        if (i[a] < 0 || i[a] >= size_[a]) return -1;
+    }
+    // x, then y, then z: a scan of the bitmap lists the keys in packVoxelKey order. A z row
+    // is a whole number of words, so the scan divides once per word, not per bit.
+    return (i[0] * size_[1] + i[1]) * row_bits_ + i[2];
+}
+
+void VoxelUpdate::mark(uint64_t key) {
+    const int64_t bit = bitOf(key);
+    if (bit >= 0) seen_[std::size_t(bit >> 6)] |= uint64_t(1) << (bit & 63);
+}
+
+void VoxelUpdate::unmark(uint64_t key) {
+    const int64_t bit = bitOf(key);
+    if (bit >= 0) seen_[std::size_t(bit >> 6)] &= ~(uint64_t(1) << (bit & 63));
+}
+
+void VoxelUpdate::castRay(const Eigen::Vector3d& origin, uint64_t end) {
+    // Amanatides & Woo, walked backwards: from the end voxel's centre towards the sensor,
+    // always across the nearest voxel boundary, in bitmap indices. The end voxel itself is
+    // left out, the sensor's voxel included (the voxels of OctoMap's computeRayKeys).
+    int64_t key[3], stop[3], step[3];
+    double t_max[3], t_delta[3];
+    Eigen::Vector3d from, dir;
+    for (int a = 0; a < 3; ++a) {
+        key[a] = keyAxis(end, a) - corner_[a];
+        stop[a] = int64_t(std::floor(origin[a])) - corner_[a];
+        if (key[a] < 0 || key[a] >= size_[a]) return;  // not a ray of this frame's box
+        from[a] = double(key[a]) + 0.5;
+        dir[a] = origin[a] - double(corner_[a]) - from[a];
+    }
+    const double length = dir.norm();
+    if (!(length > 0)) return;
+    dir /= length;
+    const int64_t stride[3] = {size_[1] * row_bits_, row_bits_, 1};
+    int64_t bit = key[0] * stride[0] + key[1] * stride[1] + key[2];
+    const int64_t stop_bit = stop[0] * stride[0] + stop[1] * stride[1] + stop[2];
+    for (int a = 0; a < 3; ++a) {
+        step[a] = dir[a] > 0 ? 1 : (dir[a] < 0 ? -1 : 0);
+        if (step[a] == 0) {
+            t_max[a] = t_delta[a] = std::numeric_limits<double>::infinity();
+            continue;
+        }
+        t_max[a] = 0.5 / std::abs(dir[a]);  // from a voxel centre to its boundary
+        t_delta[a] = 1.0 / std::abs(dir[a]);
+    }
+    int seen_in_a_row = 0;
+    while (bit != stop_bit) {
+        const int a =
+            t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
+        if (t_max[a] > length) break;  // past the sensor: rounding, stop
+        bit += step[a] * stride[a];
+        t_max[a] += t_delta[a];
+        uint64_t& word = seen_[std::size_t(bit >> 6)];
+        const uint64_t mask = uint64_t(1) << (bit & 63);
+        if (word & mask) {
+            // The rest of the way to the sensor has been carved by earlier rays of this frame
+            // (they all converge there): stop, as fast mappers do (voxblox's
+            // max_consecutive_ray_collisions).
+            if (++seen_in_a_row >= kMaxSeenInARow) break;
+        } else {
+            seen_in_a_row = 0;
+            word |= mask;
+        }
+    }
+}
+
+void VoxelUpdate::cast(std::size_t ground_stride, const Eigen::Vector3d& origin) {
+    sortUnique(ground_ends), sortUnique(obstacle_ends), sortUnique(far_ends);
+    rays_.clear();
+    for (std::size_t k = 0; k < ground_ends.size(); k += std::max<std::size_t>(1, ground_stride))
+        rays_.push_back(ground_ends[k]);
+    rays_.insert(rays_.end(), obstacle_ends.begin(), obstacle_ends.end());
+    rays_.insert(rays_.end(), far_ends.begin(), far_ends.end());
+    // The box every ray of this frame stays in (its ends and the sensor): the bitmap covers
+    // only it, a few metres high, not the whole sphere of max_ray_length.
+    int64_t low[3], high[3];
+    for (int a = 0; a < 3; ++a) low[a] = high[a] = int64_t(std::floor(origin[a]));
+    for (uint64_t end : rays_)
+        for (int a = 0; a < 3; ++a)
+            low[a] = std::min(low[a], keyAxis(end, a)),
+            high[a] = std::max(high[a], keyAxis(end, a));
+    for (int a = 0; a < 3; ++a) {
+        corner_[a] = low[a];
+        size_[a] = high[a] - low[a] + 1;
+    }
+    row_bits_ = (size_[2] + 63) / 64 * 64;
+    seen_.assign(std::size_t(size_[0] * size_[1] * row_bits_ / 64), 0);
+    for (uint64_t end : rays_) castRay(origin, end);
+    free_keys_.clear();
+    for (uint64_t end : far_ends) mark(end);
+    // The free voxels: those marked, minus the occupied ones, in key order (which keeps the
+    // OctoMap descents of neighbouring updates in cache).
+    for (uint64_t end : obstacle_ends) unmark(end);
+    const int64_t row_words = row_bits_ / 64;
+    for (std::size_t w = 0; w < seen_.size(); ++w) {
+        if (!seen_[w]) continue;
+        const int64_t row = int64_t(w) / row_words;
+        const uint32_t x = uint32_t(row / size_[1] + corner_[0]);
+        const uint32_t y = uint32_t(row % size_[1] + corner_[1]);
+        const int64_t z0 = (int64_t(w) % row_words) * 64 + corner_[2];
+        for (uint64_t bits = seen_[w]; bits; bits &= bits - 1)
+            free_keys_.push_back(packVoxelKey(x, y, uint32_t(z0 + __builtin_ctzll(bits))));
+    }
 }
 
 }  // namespace travel
