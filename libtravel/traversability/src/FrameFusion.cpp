@@ -76,9 +76,7 @@ int64_t VoxelUpdate::bitOf(uint64_t key) const {
         i[a] = keyAxis(key, a) - corner_[a];
         if (i[a] < 0 || i[a] >= size_[a]) return -1;
     }
-    // x, then y, then z: a scan of the bitmap lists the keys in packVoxelKey order. A z row
-    // is a whole number of words, so the scan divides once per word, not per bit.
-    return (i[0] * size_[1] + i[1]) * row_bits_ + i[2];
+    return localBit(i[0], i[1], i[2]);
 }
 
 void VoxelUpdate::mark(uint64_t key) {
@@ -108,9 +106,6 @@ void VoxelUpdate::castRay(const Eigen::Vector3d& origin, uint64_t end) {
     const double length = dir.norm();
     if (!(length > 0)) return;
     dir /= length;
-    const int64_t stride[3] = {size_[1] * row_bits_, row_bits_, 1};
-    int64_t bit = key[0] * stride[0] + key[1] * stride[1] + key[2];
-    const int64_t stop_bit = stop[0] * stride[0] + stop[1] * stride[1] + stop[2];
     for (int a = 0; a < 3; ++a) {
         step[a] = dir[a] > 0 ? 1 : (dir[a] < 0 ? -1 : 0);
         if (step[a] == 0) {
@@ -121,12 +116,13 @@ void VoxelUpdate::castRay(const Eigen::Vector3d& origin, uint64_t end) {
         t_delta[a] = 1.0 / std::abs(dir[a]);
     }
     int seen_in_a_row = 0;
-    while (bit != stop_bit) {
+    while (key[0] != stop[0] || key[1] != stop[1] || key[2] != stop[2]) {
         const int a =
             t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
         if (t_max[a] > length) break;  // past the sensor: rounding, stop
-        bit += step[a] * stride[a];
+        key[a] += step[a];
         t_max[a] += t_delta[a];
+        const int64_t bit = localBit(key[0], key[1], key[2]);
         uint64_t& word = seen_[std::size_t(bit >> 6)];
         const uint64_t mask = uint64_t(1) << (bit & 63);
         if (word & mask) {
@@ -157,26 +153,32 @@ void VoxelUpdate::cast(std::size_t ground_stride, const Eigen::Vector3d& origin)
             low[a] = std::min(low[a], keyAxis(end, a)),
             high[a] = std::max(high[a], keyAxis(end, a));
     for (int a = 0; a < 3; ++a) {
-        corner_[a] = low[a];
-        size_[a] = high[a] - low[a] + 1;
+        corner_[a] = low[a] & ~int64_t(kBlock - 1);  // blocks aligned with OctoMap nodes
+        blocks_[a] = (high[a] - corner_[a]) / kBlock + 1;
+        size_[a] = blocks_[a] * kBlock;
     }
-    row_bits_ = (size_[2] + 63) / 64 * 64;
-    seen_.assign(std::size_t(size_[0] * size_[1] * row_bits_ / 64), 0);
+    seen_.assign(std::size_t(blocks_[0] * blocks_[1] * blocks_[2] * kBlockWords), 0);
     for (uint64_t end : rays_) castRay(origin, end);
     free_keys_.clear();
     for (uint64_t end : far_ends) mark(end);
-    // The free voxels: those marked, minus the occupied ones, in key order (which keeps the
-    // OctoMap descents of neighbouring updates in cache).
+    // The free voxels: those marked, minus the occupied ones, in the bitmap's order: the order
+    // of a depth-first walk of the OctoMap inside each block.
     for (uint64_t end : obstacle_ends) unmark(end);
-    const int64_t row_words = row_bits_ / 64;
     for (std::size_t w = 0; w < seen_.size(); ++w) {
         if (!seen_[w]) continue;
-        const int64_t row = int64_t(w) / row_words;
-        const uint32_t x = uint32_t(row / size_[1] + corner_[0]);
-        const uint32_t y = uint32_t(row % size_[1] + corner_[1]);
-        const int64_t z0 = (int64_t(w) % row_words) * 64 + corner_[2];
-        for (uint64_t bits = seen_[w]; bits; bits &= bits - 1)
-            free_keys_.push_back(packVoxelKey(x, y, uint32_t(z0 + __builtin_ctzll(bits))));
+        const int64_t block = int64_t(w) / kBlockWords;
+        const int64_t bx = block / (blocks_[1] * blocks_[2]), by = block / blocks_[2] % blocks_[1],
+                      bz = block % blocks_[2];
+        const int first = int(int64_t(w) % kBlockWords) * 64;
+        for (uint64_t bits = seen_[w]; bits; bits &= bits - 1) {
+            const int m = first + __builtin_ctzll(bits);  // x, y, z bits interleaved
+            const auto axis = [m](int a) {
+                return int64_t(((m >> a) & 1) | ((m >> (a + 2)) & 2) | ((m >> (a + 4)) & 4));
+            };
+            free_keys_.push_back(packVoxelKey(uint32_t(corner_[0] + bx * kBlock + axis(0)),
+                                              uint32_t(corner_[1] + by * kBlock + axis(1)),
+                                              uint32_t(corner_[2] + bz * kBlock + axis(2))));
+        }
     }
 }
 

@@ -66,8 +66,9 @@ octomap::OcTreeKey unpack(uint64_t v) {
     return octomap::OcTreeKey(uint16_t(v >> 32), uint16_t(v >> 16), uint16_t(v));
 }
 
-/// One frame's voxel updates, `free` and `occupied` sorted by packed key and disjoint, applied
-/// with one walk down the tree: consecutive keys share most of their path from the root, so
+/// One frame's voxel updates, `free` and `occupied` disjoint, applied with one walk down the
+/// tree: consecutive keys (in octree order, as VoxelUpdate lists them) share most of their
+/// path from the root, so
 /// each update descends only from the deepest node it shares with the previous one (not from
 /// the root twice, as OcTree::updateNode does with its early-abort search), and a node's
 /// occupancy (the max of its children, as updateInnerOccupancy sets it) is refreshed when the
@@ -113,14 +114,8 @@ void applyVoxelUpdates(octomap::OcTree& tree, const std::vector<uint64_t>& free,
         tree.updateNodeLogOdds(path[kDepth], log_odds);  // adds and clamps
         previous = packed;
     };
-    const float miss = tree.getProbMissLog(), hit = tree.getProbHitLog();
-    std::size_t f = 0, o = 0;
-    while (f < free.size() || o < occupied.size()) {
-        if (o == occupied.size() || (f < free.size() && free[f] < occupied[o]))
-            apply(free[f++], miss);
-        else
-            apply(occupied[o++], hit);
-    }
+    for (uint64_t key : free) apply(key, tree.getProbMissLog());
+    for (uint64_t key : occupied) apply(key, tree.getProbHitLog());
     leave(-1);
 }
 

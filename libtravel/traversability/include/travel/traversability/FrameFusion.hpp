@@ -72,7 +72,9 @@ class VoxelUpdate {
     /// Casts every ground_stride-th distinct ground ray, every obstacle ray and every far ray
     /// (whose end voxel is free too) from `origin`, the sensor in key units (coordinate /
     /// resolution + 32768, not floored). Rays are at most max_ray_voxels long. Afterwards
-    /// freeKeys() and occupiedKeys() (both sorted, distinct) (sorted, distinct) are disjoint.
+    /// freeKeys() (distinct, in
+    /// blocks of 8^3 voxels, each in octree order) and occupiedKeys() (sorted, distinct) (sorted,
+    /// distinct) are disjoint.
     void cast(std::size_t ground_stride, const Eigen::Vector3d& origin);
 
     const std::vector<uint64_t>& freeKeys() const { return free_keys_; }
@@ -89,16 +91,27 @@ class VoxelUpdate {
     void castRay(const Eigen::Vector3d& origin, uint64_t end);
     /// The voxel's bit in seen_, -1 outside the box.
     int64_t bitOf(uint64_t key) const;
+    /// The bit of the voxel (x, y, z) of the box: blocks of kBlock^3 voxels in x, y, z order,
+    /// inside a block the three coordinates' bits interleaved (x lowest, as OctoMap numbers
+    /// children), so that a scan lists each block's voxels in a depth-first walk's order.
+    int64_t localBit(int64_t x, int64_t y, int64_t z) const {
+        const int64_t block = ((x / kBlock) * blocks_[1] + y / kBlock) * blocks_[2] + z / kBlock;
+        int64_t m = 0;
+        for (int b = 0; b < kBlockBits; ++b)
+            m |= (((x >> b) & 1) | (((y >> b) & 1) << 1) | (((z >> b) & 1) << 2)) << (3 * b);
+        return block * kBlockWords * 64 + m;
+    }
     void mark(uint64_t key);
     void unmark(uint64_t key);
 
     std::vector<uint64_t> free_keys_;
-    /// Bitmap of the voxels seen this frame, a box of size_ voxels from corner_, z rows padded
-    /// to row_bits_.
+    static constexpr int kBlockBits = 3, kBlock = 1 << kBlockBits;
+    static constexpr int64_t kBlockWords = int64_t(1) << (3 * kBlockBits - 6);
+    /// Bitmap of the voxels seen this frame: a box of size_ voxels (blocks_ blocks) from corner_.
     std::vector<uint64_t> seen_;
     std::vector<uint64_t> rays_;  ///< the end voxels of the rays cast this frame
     int64_t corner_[3] = {0, 0, 0};
-    int64_t size_[3] = {0, 0, 0}, row_bits_ = 0;
+    int64_t size_[3] = {0, 0, 0}, blocks_[3] = {0, 0, 0};
 };
 
 }  // namespace travel
