@@ -86,6 +86,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
             reportMount(o, map, progress);
+            stats.times.push_back(map.lastInsertTimes());
             ++stats.inserted;
             ++stats.lidar;
         } else {
@@ -167,6 +168,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         ++stats.lidar;
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
             reportMount(o, map, progress);
+            stats.times.push_back(map.lastInsertTimes());
             ++stats.inserted;
         } else
             ++stats.rejected;

@@ -34,6 +34,8 @@ struct Options {
 struct Stats {
     std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
     std::string pose_source;
+    /// Per mapped frame: segmentation, grid and OctoMap times (for the summary's medians).
+    std::vector<travel_mrpt::CTraversabilityMap::InsertTimes> times;
 };
 
 /// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.

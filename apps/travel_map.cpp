@@ -12,6 +12,7 @@
 #include <octomap/OcTree.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -222,6 +223,19 @@ int run(int argc, char** argv) {
                     map.getAsSimplePointsMap()->size());
         std::printf("  time: mapping %.2f s (%.1f ms per frame), exports %.2f s\n", map_seconds,
                     1000.0 * map_seconds / double(stats.inserted), export_seconds);
+        if (!stats.times.empty()) {
+            // Medians, not means: the first frames and a busy machine make outliers.
+            const auto median = [&](double travel_mrpt::CTraversabilityMap::InsertTimes::*field) {
+                std::vector<double> v;
+                for (const auto& t : stats.times) v.push_back(t.*field);
+                std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+                return v[v.size() / 2];
+            };
+            using Times = travel_mrpt::CTraversabilityMap::InsertTimes;
+            std::printf(
+                "  per frame (median): segmentation %.1f ms, grid %.1f ms, OctoMap %.1f ms\n",
+                median(&Times::segment_ms), median(&Times::grid_ms), median(&Times::octomap_ms));
+        }
         for (const auto& path : written) std::printf("  wrote %s\n", path.c_str());
     }
     for (const auto& [x, y] : probes) {

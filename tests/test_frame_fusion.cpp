@@ -4,6 +4,7 @@
 // travel::ObstacleMemory (the obstacle sources' memory), without MRPT or OctoMap.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "travel/traversability/FrameFusion.hpp"
@@ -101,23 +102,46 @@ TEST(FrameFusion, LastFallbackUsesTheResultsSensorHeight) {
     }
 }
 
-TEST(FrameFusion, VoxelUpdateTouchesEachVoxelOnce) {
+TEST(FrameFusion, VoxelUpdateTouchesEachVoxelOnceAndOccupiedWinsOverFree) {
+    // Rays along +x from the sensor in voxel (1000, 2000, 3000) (key units, not floored).
+    const auto key = [](uint32_t x) { return travel::packVoxelKey(x, 2000, 3000); };
     travel::VoxelUpdate update;
-    update.ground_ends = {30, 10, 20, 10};
-    update.obstacle_ends = {5, 5, 7};
-    update.far_ends = {100};
-    std::vector<uint64_t> cast_to;
-    // A "ray" to voxel e traverses voxels e - 3 .. e - 1.
-    update.cast(2, [&](uint64_t end, std::vector<uint64_t>& keys) {
-        cast_to.push_back(end);
-        for (uint64_t k = end - 3; k < end; ++k) keys.push_back(k);
-    });
-    // Ground ends 10, 20, 30 deduplicated, every 2nd cast; all obstacle and far ends.
-    EXPECT_EQ(cast_to, (std::vector<uint64_t>{10, 30, 5, 7, 100}));
-    EXPECT_EQ(update.occupiedKeys(), (std::vector<uint64_t>{5, 7}));
-    // Traversed voxels, the far end included, minus the ones hit.
-    EXPECT_EQ(update.freeKeys(),
-              (std::vector<uint64_t>{2, 3, 4, 6, 8, 9, 27, 28, 29, 97, 98, 99, 100}));
+    update.ground_ends = {key(1010), key(1010), key(1008)};  // duplicates: one ray per voxel
+    update.obstacle_ends = {key(1005), key(1005)};           // on the way to both ground ends
+    update.far_ends = {key(990)};
+    update.cast(/*ground_stride=*/1, Eigen::Vector3d(1000.5, 2000.5, 3000.5));
+
+    EXPECT_EQ(update.occupiedKeys(), (std::vector<uint64_t>{key(1005)}));
+    // Traversed voxels, the sensor's voxel and the far end included, the ground ends left out
+    // (1008 is traversed by the ray to 1010), the hit voxel 1005 not free although crossed.
+    std::vector<uint64_t> expected;
+    for (uint32_t x = 990; x <= 1009; ++x)
+        if (x != 1005) expected.push_back(key(x));
+    std::vector<uint64_t> free = update.freeKeys();
+    std::sort(free.begin(), free.end());
+    EXPECT_EQ(free, expected);
+
+    // The next frame: nothing hit there, the ray to 1010 frees 1005 again.
+    update.clear();
+    update.ground_ends = {key(1010)};
+    update.cast(1, Eigen::Vector3d(1000.5, 2000.5, 3000.5));
+    EXPECT_TRUE(update.occupiedKeys().empty());
+    EXPECT_NE(std::find(update.freeKeys().begin(), update.freeKeys().end(), key(1005)),
+              update.freeKeys().end());
+}
+
+TEST(FrameFusion, VoxelUpdateWalksDiagonalRaysWithoutGaps) {
+    // A ray across x, y and z: every step to a face neighbour, the end voxel's neighbour last.
+    travel::VoxelUpdate update;
+    update.ground_ends = {travel::packVoxelKey(1020, 2013, 2990)};
+    update.cast(1, Eigen::Vector3d(1000.3, 2000.6, 3000.2));
+    std::vector<uint64_t> keys = update.freeKeys();
+    std::sort(keys.begin(), keys.end());
+    ASSERT_EQ(keys.size(), 20u + 13u + 10u);  // one voxel per boundary crossed, end left out
+    EXPECT_TRUE(
+        std::binary_search(keys.begin(), keys.end(), travel::packVoxelKey(1000, 2000, 3000)));
+    EXPECT_FALSE(
+        std::binary_search(keys.begin(), keys.end(), travel::packVoxelKey(1020, 2013, 2990)));
 }
 
 TEST(ObstacleMemory, RecallsNearObstaclesInTheCurrentRobotFrame) {

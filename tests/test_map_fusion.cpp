@@ -25,6 +25,7 @@
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/Registration.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
 
 namespace {
 
@@ -375,6 +376,76 @@ TEST_F(MapFusion, ClearEmptiesTheMap) {
     copy.clear();
     EXPECT_TRUE(copy.isEmpty());
     EXPECT_EQ(copy.getAsSimplePointsMap()->size(), 0u);
+}
+
+TEST_F(MapFusion, InnerNodesHoldTheMaxOfTheirChildren) {
+    // The map refreshes only the inner nodes above each frame's voxels: the same values as
+    // OctoMap's whole-tree updateInnerOccupancy().
+    octomap::OcTree whole(map_->octree());
+    whole.updateInnerOccupancy();
+    std::size_t nodes = 0, differ = 0;
+    for (auto a = map_->octree().begin_tree(), b = whole.begin_tree();
+         a != map_->octree().end_tree() && b != whole.end_tree(); ++a, ++b, ++nodes)
+        differ += a->getLogOdds() != b->getLogOdds() || a.getKey() != b.getKey();
+    EXPECT_EQ(nodes, map_->octree().size());
+    EXPECT_EQ(differ, 0u);
+}
+
+/// One hand-made segmented frame: labelled points in the aligned frame (here the world axes),
+/// the sensor 2 m above its ground.
+struct HandFrame {
+    travel::AlignedCloud aligned;
+    travel_mrpt::TravelFrame frame;
+    void add(float x, float y, float z, travel::PointClass label) {
+        aligned.x.push_back(x), aligned.y.push_back(y), aligned.z.push_back(z);
+        aligned.valid.push_back(true);
+        frame.result.labels.push_back(label);
+        frame.result.cluster_id.push_back(0);
+    }
+    const travel_mrpt::TravelFrame& get() {
+        frame.result.sensor_height = 2.0;
+        frame.aligned = &aligned;
+        return frame;
+    }
+};
+
+TEST(MapVoxels, HitVoxelStaysOccupiedAndIsClearedWhenSeenFreeLater) {
+    travel_mrpt::TraversabilityMapOptions options;
+    options.ray_stride = 1;
+    CTraversabilityMap map(options);
+    // Sensor at a voxel centre (0.2 m voxels); the ray to the ground point at (10.1, 0.1, 0.1)
+    // crosses the obstacle point's voxel (5.1, 0.1, 1.1) halfway.
+    const mrpt::poses::CPose3D robot(0.1, 0.1, 2.1, 0, 0, 0);
+    const auto voxel = [&](double x, double y, double z) { return map.octree().search(x, y, z); };
+    for (int k = 0; k < 3; ++k) {
+        HandFrame f;
+        f.add(5.0f, 0.f, -1.0f, travel::PointClass::NonGround);  // 1 m above its ground
+        f.add(10.0f, 0.f, -2.0f, travel::PointClass::Ground);
+        f.add(10.0f, 0.2f, -2.0f, travel::PointClass::Ground);
+        map.fuseFrame(f.get(), robot);
+        ASSERT_NE(voxel(5.1, 0.1, 1.1), nullptr);
+        // One hit per frame and no miss, although the ground rays cross it: occupied wins.
+        EXPECT_FLOAT_EQ(voxel(5.1, 0.1, 1.1)->getLogOdds(),
+                        float(k + 1) * map.octree().getProbHitLog())
+            << "frame " << k;
+        ASSERT_NE(voxel(7.5, 0.1, 0.6), nullptr);  // beyond the hit, on the way to the ground
+        EXPECT_FALSE(map.octree().isNodeOccupied(voxel(7.5, 0.1, 0.6)));
+    }
+    // The obstacle has gone: the rays to the ground cross its voxel and clear it.
+    int frames_to_clear = 0;
+    while (map.octree().isNodeOccupied(voxel(5.1, 0.1, 1.1)) && frames_to_clear < 20) {
+        HandFrame f;
+        f.add(10.0f, 0.f, -2.0f, travel::PointClass::Ground);
+        map.fuseFrame(f.get(), robot);
+        ++frames_to_clear;
+    }
+    // 3 hits (+0.85 each) against misses of -0.41: 7 frames.
+    EXPECT_EQ(frames_to_clear, 7);
+    EXPECT_LT(map.octree().search(5.1, 0.1, 1.1)->getOccupancy(), 0.5);
+    // The root holds the max of its children, as after OctoMap's updateInnerOccupancy().
+    octomap::OcTree whole(map.octree());
+    whole.updateInnerOccupancy();
+    EXPECT_EQ(map.octree().getRoot()->getLogOdds(), whole.getRoot()->getLogOdds());
 }
 
 }  // namespace

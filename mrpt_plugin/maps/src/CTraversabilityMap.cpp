@@ -11,6 +11,7 @@
 #include <octomap/OcTree.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -52,12 +53,70 @@ mrpt::maps::CMetricMap* CTraversabilityMap::internal_CreateFromMapDefinition(
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
 /// Packs an OctoMap key into one sortable integer.
 uint64_t pack(const octomap::OcTreeKey& k) {
-    return (uint64_t(k[0]) << 32) | (uint64_t(k[1]) << 16) | uint64_t(k[2]);
+    return travel::packVoxelKey(k[0], k[1], k[2]);
 }
 octomap::OcTreeKey unpack(uint64_t v) {
     return octomap::OcTreeKey(uint16_t(v >> 32), uint16_t(v >> 16), uint16_t(v));
+}
+
+/// One frame's voxel updates, `free` and `occupied` disjoint, applied with one walk down the
+/// tree: consecutive keys (in octree order, as VoxelUpdate lists them) share most of their
+/// path from the root, so
+/// each update descends only from the deepest node it shares with the previous one (not from
+/// the root twice, as OcTree::updateNode does with its early-abort search), and a node's
+/// occupancy (the max of its children, as updateInnerOccupancy sets it) is refreshed when the
+/// walk leaves it: only the nodes above this frame's voxels, not the whole tree.
+void applyVoxelUpdates(octomap::OcTree& tree, const std::vector<uint64_t>& free,
+                       const std::vector<uint64_t>& occupied) {
+    constexpr int kDepth = 16;  // OctoMap's tree depth: keys of 16 bits
+    octomap::OcTreeNode* path[kDepth + 1];
+    bool created[kDepth + 1];
+    int valid = -1;  // path[0..valid] is the current path
+    uint64_t previous = 0;
+    const auto leave = [&](int depth) {  // refresh the inner nodes below `depth` on the path
+        for (; valid > depth; --valid)
+            if (valid < kDepth) path[valid]->updateOccupancyChildren();
+    };
+    const auto apply = [&](uint64_t packed, float log_odds) {
+        const octomap::OcTreeKey key = unpack(packed);
+        if (!tree.getRoot()) {  // the root is the tree's to create: the first update of a tree
+            tree.updateNode(key, log_odds, /*lazy_eval=*/false);
+            return;
+        }
+        if (valid < 0) {
+            path[0] = tree.getRoot(), created[0] = false, valid = 0;
+        } else {
+            // Deepest shared node: the child index at depth d uses key bit (15 - d).
+            const uint64_t differ = packed ^ previous;
+            const uint32_t bits = uint32_t((differ >> 32) | (differ >> 16) | differ) & 0xFFFF;
+            leave(bits ? kDepth - 1 - (31 - __builtin_clz(bits)) : kDepth);
+        }
+        for (int d = valid; d < kDepth; ++d) {
+            octomap::OcTreeNode* node = path[d];
+            const unsigned child = octomap::computeChildIdx(key, kDepth - 1 - d);
+            bool just_created = false;
+            if (!tree.nodeChildExists(node, child)) {
+                if (!tree.nodeHasChildren(node) && !created[d])
+                    tree.expandNode(node);  // a pruned node: its children inherit its value
+                else
+                    tree.createNodeChild(node, child), just_created = true;
+            }
+            path[d + 1] = tree.getNodeChild(node, child), created[d + 1] = just_created;
+        }
+        valid = kDepth;
+        tree.updateNodeLogOdds(path[kDepth], log_odds);  // adds and clamps
+        previous = packed;
+    };
+    for (uint64_t key : free) apply(key, tree.getProbMissLog());
+    for (uint64_t key : occupied) apply(key, tree.getProbHitLog());
+    leave(-1);
 }
 
 }  // namespace
@@ -65,7 +124,6 @@ octomap::OcTreeKey unpack(uint64_t v) {
 struct CTraversabilityMap::Scratch {
     travel::RayEnds ends;
     travel::VoxelUpdate voxels;
-    octomap::KeyRay ray;
 };
 
 CTraversabilityMap::CTraversabilityMap(const TraversabilityMapOptions& options)
@@ -123,8 +181,11 @@ bool CTraversabilityMap::internal_insertObservation(
     const mrpt::poses::CPose3D pose = robotPose ? *robotPose : mrpt::poses::CPose3D();
     if (robotPose) filter_->setRobotPose(pose, obs.timestamp);
     last_rejection_.clear();
+    const auto start = Clock::now();
     if (!filter_->filter(obs, *frame_, &last_rejection_)) return false;
+    const double segment_ms = msSince(start);
     fuseFrame(*frame_, pose);
+    last_times_.segment_ms = segment_ms;
     return true;
 }
 
@@ -141,7 +202,10 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
                         float(sensor_in_world.z())),
         mrpt::Clock::toDouble(frame.timestamp)};
     Scratch& s = *scratch_;
+    const auto grid_start = Clock::now();
     travel::fuseFrame(placed, options_, grid_, s.ends);
+    last_times_.grid_ms = msSince(grid_start);
+    const auto octomap_start = Clock::now();
 
     // The ray ends as OctoMap keys; the voxels along the rays are carved free, the obstacle
     // ends marked occupied, each voxel once.
@@ -155,14 +219,14 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
     toKeys(s.ends.ground, s.voxels.ground_ends);
     toKeys(s.ends.obstacle, s.voxels.obstacle_ends);
     toKeys(s.ends.far, s.voxels.far_ends);
-    const octomap::point3d o(placed.origin.x(), placed.origin.y(), placed.origin.z());
-    s.voxels.cast(std::size_t(options_.ray_stride), [&](uint64_t end, std::vector<uint64_t>& out) {
-        if (!octree_->computeRayKeys(o, octree_->keyToCoord(unpack(end)), s.ray)) return;
-        for (const octomap::OcTreeKey& k : s.ray) out.push_back(pack(k));
-    });
-    for (uint64_t k : s.voxels.freeKeys()) octree_->updateNode(unpack(k), false, true);
-    for (uint64_t k : s.voxels.occupiedKeys()) octree_->updateNode(unpack(k), true, true);
-    octree_->updateInnerOccupancy();
+    // The sensor in key units: OctoMap's key is floor(coordinate / resolution) + 32768.
+    const double inv_res = 1.0 / options_.octomap_resolution;
+    const Eigen::Vector3d origin = placed.origin.cast<double>() * inv_res +
+                                   Eigen::Vector3d::Constant(double(octree_->coordToKey(0.0)));
+    s.voxels.cast(std::size_t(options_.ray_stride), origin);
+    applyVoxelUpdates(*octree_, s.voxels.freeKeys(), s.voxels.occupiedKeys());
+    last_times_.octomap_ms = msSince(octomap_start);
+    last_times_.segment_ms = 0;
 
     ++frames_inserted_;
     obstacle_points_dirty_ = true;

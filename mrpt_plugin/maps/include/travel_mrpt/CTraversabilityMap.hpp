@@ -70,6 +70,13 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     /// Why the last insertObservation() returned false (empty after a success).
     const std::string& lastRejection() const { return last_rejection_; }
 
+    /// Wall-clock times of the last successful insertion, in ms: TRAVEL segmentation, the 2-D
+    /// grid, and the OctoMap update (voxel keys, ray casting, node updates).
+    struct InsertTimes {
+        double segment_ms = 0, grid_ms = 0, octomap_ms = 0;
+    };
+    const InsertTimes& lastInsertTimes() const { return last_times_; }
+
     /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid.
     void fuseFrame(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
 
@@ -111,6 +118,7 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     std::unique_ptr<TravelFrame> frame_;
     std::size_t frames_inserted_ = 0;
     std::string last_rejection_;
+    InsertTimes last_times_;
 
     // Per-frame scratch, reused: voxel keys of ray end points and of the traversed voxels.
     struct Scratch;

@@ -50,47 +50,68 @@ struct RayEnds {
 void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGrid& grid,
                RayEnds& ends);
 
-/// One frame's update of a voxel occupancy map (OctoMap) with every voxel touched once: one ray
-/// per distinct end voxel (not per point), traversed voxels free unless hit in this frame.
-/// Voxels are keys packed into one sortable integer by the caller.
+/// A voxel key: integer voxel coordinates (x, y, z), each in 0..65535, as OctoMap's OcTreeKey
+/// (coordinate / resolution + 32768, floored). Packed into one integer: 16 bits per axis.
+inline uint64_t packVoxelKey(uint32_t x, uint32_t y, uint32_t z) {
+    return (uint64_t(x) << 32) | (uint64_t(y) << 16) | uint64_t(z);
+}
+
+/// One frame's update of a voxel occupancy map (OctoMap) the way fast mappers do it: every voxel
+/// updated once per frame (not once per point), free space carved along one ray per distinct
+/// end voxel, a voxel hit in this frame occupied even when other rays of the frame cross it
+/// (occupied wins over free). Rays are walked in voxel-key space (Amanatides & Woo) and
+/// deduplicated in a bitmap around the sensor, not by sorting every traversed key.
 class VoxelUpdate {
   public:
-    /// The frame's end voxels; the caller fills them (any order, duplicates allowed).
+    /// The frame's end voxels (packVoxelKey); the caller fills them (any order, duplicates
+    /// allowed). Obstacle ends are marked occupied; far ends (rays cut at max_ray_length) free.
     std::vector<uint64_t> ground_ends, obstacle_ends, far_ends;
 
     void clear() { ground_ends.clear(), obstacle_ends.clear(), far_ends.clear(); }
 
-    /// Casts every ground_stride-th ground ray, every obstacle ray and every far ray (whose end
-    /// was traversed too): castRay(end, keys) appends the voxels from the sensor to `end`.
-    /// Afterwards freeKeys() and occupiedKeys() are sorted and disjoint.
-    template <class CastRay>
-    void cast(std::size_t ground_stride, CastRay&& castRay) {
-        sortUnique(ground_ends), sortUnique(obstacle_ends), sortUnique(far_ends);
-        free_keys_.clear();
-        for (std::size_t k = 0; k < ground_ends.size(); k += ground_stride)
-            castRay(ground_ends[k], free_keys_);
-        for (uint64_t end : obstacle_ends) castRay(end, free_keys_);
-        for (uint64_t end : far_ends) {
-            castRay(end, free_keys_);
-            free_keys_.push_back(end);
-        }
-        sortUnique(free_keys_);
-        free_keys_.erase(std::remove_if(free_keys_.begin(), free_keys_.end(),
-                                        [&](uint64_t k) {
-                                            return std::binary_search(obstacle_ends.begin(),
-                                                                      obstacle_ends.end(), k);
-                                        }),
-                         free_keys_.end());
-    }
+    /// Casts every ground_stride-th distinct ground ray, every obstacle ray and every far ray
+    /// (whose end voxel is free too) from `origin`, the sensor in key units (coordinate /
+    /// resolution + 32768, not floored). Rays are at most max_ray_voxels long. Afterwards
+    /// freeKeys() (distinct, in
+    /// blocks of 8^3 voxels, each in octree order) and occupiedKeys() (sorted, distinct) (sorted,
+    /// distinct) are disjoint.
+    void cast(std::size_t ground_stride, const Eigen::Vector3d& origin);
+
     const std::vector<uint64_t>& freeKeys() const { return free_keys_; }
     const std::vector<uint64_t>& occupiedKeys() const { return obstacle_ends; }
 
+    /// A ray walked back from its end stops after this many voxels in a row already carved by
+    /// this frame's earlier rays: the rest of its way to the sensor is shared with them. 8
+    /// keeps 94.5 % of the free voxels of full rays on the HDL-64E drive at 55 % of the cost
+    /// (docs/map.md).
+    static constexpr int kMaxSeenInARow = 8;
+
   private:
-    static void sortUnique(std::vector<uint64_t>& v) {
-        std::sort(v.begin(), v.end());
-        v.erase(std::unique(v.begin(), v.end()), v.end());
+    /// Marks the voxels from the origin's voxel up to (without) `end` as seen this frame.
+    void castRay(const Eigen::Vector3d& origin, uint64_t end);
+    /// The voxel's bit in seen_, -1 outside the box.
+    int64_t bitOf(uint64_t key) const;
+    /// The bit of the voxel (x, y, z) of the box: blocks of kBlock^3 voxels in x, y, z order,
+    /// inside a block the three coordinates' bits interleaved (x lowest, as OctoMap numbers
+    /// children), so that a scan lists each block's voxels in a depth-first walk's order.
+    int64_t localBit(int64_t x, int64_t y, int64_t z) const {
+        const int64_t block = ((x / kBlock) * blocks_[1] + y / kBlock) * blocks_[2] + z / kBlock;
+        int64_t m = 0;
+        for (int b = 0; b < kBlockBits; ++b)
+            m |= (((x >> b) & 1) | (((y >> b) & 1) << 1) | (((z >> b) & 1) << 2)) << (3 * b);
+        return block * kBlockWords * 64 + m;
     }
+    void mark(uint64_t key);
+    void unmark(uint64_t key);
+
     std::vector<uint64_t> free_keys_;
+    static constexpr int kBlockBits = 3, kBlock = 1 << kBlockBits;
+    static constexpr int64_t kBlockWords = int64_t(1) << (3 * kBlockBits - 6);
+    /// Bitmap of the voxels seen this frame: a box of size_ voxels (blocks_ blocks) from corner_.
+    std::vector<uint64_t> seen_;
+    std::vector<uint64_t> rays_;  ///< the end voxels of the rays cast this frame
+    int64_t corner_[3] = {0, 0, 0};
+    int64_t size_[3] = {0, 0, 0}, blocks_[3] = {0, 0, 0};
 };
 
 }  // namespace travel
