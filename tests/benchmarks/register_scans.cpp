@@ -1,30 +1,27 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
-// Build: g++ -O2 -std=c++17 -I/usr/include/eigen3 scripts/register_scans.cpp -o register_scans
-// Use:   register_scans DIR/*.pcd > poses.txt  (KITTI format, LiDAR poses, frame 0 = identity)
-// Frame-to-frame point-to-plane ICP over PCD scans -> KITTI pose file (LiDAR poses).
+// Build: cmake --build build --target register_scans (beside bench_travel)
+// Use:   build/tests/benchmarks/register_scans DIR/*.pcd > poses.txt  (KITTI format, LiDAR poses,
+// frame 0 = identity) Frame-to-frame point-to-plane ICP over PCD scans -> KITTI pose file (LiDAR
+// poses).
 #include <Eigen/Dense>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <nanoflann.hpp>
 #include <string>
+
 #include <unordered_map>
 #include <vector>
+#include "travel/io/ScanIO.hpp"
 using V = Eigen::Vector3d;
+// Points of a scan in any format the apps read (travel::readScan), 3-50 m from the sensor.
 static std::vector<V> load(const std::string& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::string line;
-    size_t n = 0;
-    while (std::getline(f, line)) {
-        if (line.rfind("POINTS", 0) == 0) n = std::stoul(line.substr(7));
-        if (line.rfind("DATA", 0) == 0) break;
-    }
-    std::vector<float> buf(4 * n);
-    f.read((char*)buf.data(), buf.size() * 4);
+    travel::PointCloud cloud;
+    travel::readScan(p, cloud);
     std::vector<V> out;
-    for (size_t i = 0; i < n; ++i) {
-        V q(buf[4 * i], buf[4 * i + 1], buf[4 * i + 2]);
-        double r = q.head<2>().norm();
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const V q(cloud.x[i], cloud.y[i], cloud.z[i]);
+        const double r = q.head<2>().norm();
         if (r > 3 && r < 50) out.push_back(q);
     }
     return out;
