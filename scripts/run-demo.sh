@@ -15,7 +15,7 @@ NAME=test_velodyne_VLP16
 
 # Only what the demo runs: the app and the plugin module for RawLogViewer (the test command
 # builds the rest).
-"$ROOT_DIR/scripts/setup.sh" --target travel-rawlog --target travel_mrpt_plugin
+"$ROOT_DIR/scripts/setup.sh" --demo --target travel-rawlog --target travel_mrpt_plugin
 
 dataset=""
 for dir in /usr/share/mrpt/datasets /usr/local/share/mrpt/datasets; do

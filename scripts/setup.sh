@@ -6,6 +6,8 @@
 #   scripts/setup.sh                 install missing packages, then build everything
 #   scripts/setup.sh --target T ...  install missing packages, then build only target(s) T
 #   scripts/setup.sh --no-build      install missing packages only
+#   scripts/setup.sh --demo ...      only the packages and targets of the apps and the plugin
+#                                    (no tests, benchmarks, fuzzers or Python module)
 set -euo pipefail
 
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,7 +17,11 @@ PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libmrpt-maps-dev libmrpt-nav-dev libmrpt-gui-dev libmrpt-tclap-dev
   libmrpt-hwdrivers-dev
-  liboctomap-dev mrpt-common libgtest-dev googletest libbenchmark-dev libnanoflann-dev
+  liboctomap-dev mrpt-common libnanoflann-dev
+)
+# Only for the test suite, the benchmarks, the fuzzers and the Python module (not with --demo).
+TEST_PACKAGES=(
+  libgtest-dev googletest libbenchmark-dev
   clang libclang-rt-14-dev
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-open3d
 )
@@ -24,21 +30,24 @@ log() { printf '[setup] %s\n' "$*"; }
 die() { printf '[setup] error: %s\n' "$*" >&2; exit 1; }
 
 build=1
+demo=0
 targets=()
 while (($# > 0)); do
   case "$1" in
     --no-build) build=0 ;;
+    --demo) demo=1 ;;
     --target)
       (($# > 1)) || die "--target needs a target name (e.g. travel-rawlog)"
       targets+=(--target "$2"); shift ;;
-    -h|--help) sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) die "unknown option '$1' (options: --no-build, --target NAME)" ;;
+    -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option '$1' (options: --no-build, --demo, --target NAME)" ;;
   esac
   shift
 done
 
 # ---- Packages ------------------------------------------------------------------------------
 command -v dpkg-query >/dev/null 2>&1 || die "dpkg-query not found: this script supports Debian bookworm (apt) only"
+((demo)) || PACKAGES+=("${TEST_PACKAGES[@]}")
 missing=()
 for pkg in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed'; then
@@ -71,6 +80,12 @@ if ((build == 0)); then
 fi
 
 configure=(cmake -S "$ROOT_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release)
+# Stated every time: a build folder configured by --demo is switched back by a full setup.
+if ((demo)); then
+  configure+=(-DTRAVEL_BUILD_TESTS=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
+else
+  configure+=(-DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_BENCHMARKS=ON -DTRAVEL_BUILD_PYTHON=ON)
+fi
 # The generator of an existing build directory cannot change; choose Ninja only for a new one.
 [[ -f "$BUILD_DIR/CMakeCache.txt" ]] || configure+=(-G Ninja)
 log "configuring: ${configure[*]}"
