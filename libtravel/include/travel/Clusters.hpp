@@ -25,6 +25,14 @@ struct ClusterSummary {
     /// highest point above it [m].
     float ground_z = 0.f;
     float height_above_ground = 0.f;
+    /// Tracking across frames (travel::Tracker fills these; all zero when nothing tracks):
+    /// the id of the confirmed track this cluster continues (0 = none yet), the track's
+    /// velocity over the ground expressed in this frame's aligned axes [m/s] (ego-motion
+    /// removed) with its 1-sigma per axis, and whether it moves (decided with hysteresis).
+    uint32_t track_id = 0;
+    Eigen::Vector3f velocity{0.f, 0.f, 0.f};
+    Eigen::Vector3f velocity_sigma{0.f, 0.f, 0.f};
+    bool moving = false;
 };
 
 }  // namespace travel
