@@ -262,11 +262,13 @@ struct MaxFramesFlag {
 /// (OrderedWork.hpp). Default: the number of cores; 0 is a usage error.
 struct JobsFlag {
     mutable TCLAP::ValueArg<long> arg;  // TCLAP's getValue() is not const
-    /// `what`: what the workers process, as the app's --help names it ("scans").
-    JobsFlag(CommandLine& line, const std::string& what)
+    /// `what`: what the workers process, as the app's --help names it ("scans"); `how`: how
+    /// the threads share the work, if not one pipeline each.
+    JobsFlag(CommandLine& line, const std::string& what,
+             const std::string& how = "one pipeline each")
         : arg("j", "jobs",
-              "Process " + what +
-                  " on N threads, one pipeline each; output identical to -j 1 "
+              "Process " + what + " on N threads, " + how +
+                  "; output identical to -j 1 "
                   "and in input order (default: the number of cores, here " +
                   std::to_string(defaultJobs()) + ")",
               false, static_cast<long>(defaultJobs()), "N", line.cmd) {

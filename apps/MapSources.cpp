@@ -6,11 +6,16 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 
 #include "Interrupt.hpp"
+#include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
@@ -19,6 +24,7 @@
 
 namespace fs = std::filesystem;
 using mrpt::poses::CPose3D;
+using Clock = std::chrono::steady_clock;
 
 namespace travel::apps {
 
@@ -43,11 +49,14 @@ std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
 }
 
 namespace {
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
 // TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the
 // ground), on the one frame that has it.
-void reportMount(const Options& o, const travel_mrpt::CTraversabilityMap& map,
-                 ProgressLine& progress) {
-    const travel::MountNote& note = map.lastFrame().result.mount;
+void reportMount(const Options& o, const travel_mrpt::TravelFrame& frame, ProgressLine& progress) {
+    const travel::MountNote& note = frame.result.mount;
     if (note && o.verbosity != Verbosity::Quiet)
         progress.note(mountNoteLine("travel-map", "", note));
 }
@@ -62,6 +71,8 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     ProgressLine progress("travel-map", 0, o.verbosity);
     bool warned_no_pose = false;
     std::size_t lidar_seen = 0;
+    double read_ms = 0;  // reading since the last mapped frame
+    Clock::time_point last_fused = Clock::now();
     // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
     // the robot pose, anything else is a LiDAR candidate.
     const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
@@ -85,8 +96,10 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
                           "frames without a pose are mapped at the identity pose");
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
-            reportMount(o, map, progress);
-            stats.times.push_back(map.lastInsertTimes());
+            reportMount(o, map.lastFrame(), progress);
+            stats.times.push_back({read_ms, map.lastInsertTimes(), msSince(last_fused)});
+            read_ms = 0;
+            last_fused = Clock::now();
             ++stats.inserted;
             ++stats.lidar;
         } else {
@@ -94,7 +107,9 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
         }
     };
     while (!(o.max_frames > 0 && long(stats.inserted) >= o.max_frames)) {
+        const auto read_start = Clock::now();
         const auto record = reader.next();
+        read_ms += msSince(read_start);
         if (!record) break;
         ++stats.records;
         if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(record))
@@ -142,39 +157,83 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
     const std::size_t count =
         o.max_frames > 0 ? std::min(files.size(), std::size_t(o.max_frames)) : files.size();
     ProgressLine progress("travel-map", count, o.verbosity);
-    travel::PointCloud cloud;
-    auto obs = mrpt::obs::CObservationPointCloud::Create();
-    auto points = mrpt::maps::CPointsMapXYZI::Create();
-    obs->pointcloud = points;
-    obs->sensorLabel = "velodyne";
-    for (std::size_t k = 0; k < files.size(); ++k) {
-        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) break;
-        ++stats.records;
+
+    // Each scan is read straight into travel's cloud and segmented (map.segment), then fused
+    // (map.fuseFrame): with -j >= 2 the scans are read and segmented one by one, in order, on
+    // worker threads taking turns (one at a time: the filter's state goes from frame to frame)
+    // while the calling thread fuses the previous frames in order; so the map is the one of -j 1.
+    struct Scan {
+        travel_mrpt::TravelFrame frame;  // frame.cloud: the scan as read
+        travel::AlignedCloud aligned;    // the frame's aligned cloud, kept until it is fused
         std::optional<CPose3D> pose;
-        if (pose_file) {
-            pose = pose_file->at(0.1 * double(k), k);
-            if (!pose) {
-                ++stats.no_pose;
-                continue;
-            }
+        bool segmented = false;
+        double read_ms = 0;
+    };
+    std::mutex turn_mutex;
+    std::condition_variable turn_changed;
+    std::size_t turn = 0;             // the scan whose turn it is to be read and segmented
+    std::atomic<bool> enough{false};  // --max-frames reached: the remaining scans are skipped
+    const auto produce = [&](unsigned, std::size_t k, Scan& scan) {
+        {
+            std::unique_lock<std::mutex> lock(turn_mutex);
+            turn_changed.wait(lock, [&] { return turn == k; });
         }
-        travel::readScan(files[k], cloud, o.format);  // errors name the file
-        points->clear();
-        points->reserve(cloud.size());
-        for (std::size_t i = 0; i < cloud.size(); ++i)
-            points->insertPointFast(cloud.x[i], cloud.y[i], cloud.z[i]);
-        points->mark_as_modified();
-        obs->timestamp = mrpt::Clock::fromDouble(0.1 * double(k));  // KITTI: 10 Hz
+        struct NextTurn {  // also when reading fails: the error surfaces in order, when consumed
+            std::mutex& m;
+            std::condition_variable& c;
+            std::size_t& t;
+            ~NextTurn() {
+                {
+                    std::lock_guard<std::mutex> lock(m);
+                    ++t;
+                }
+                c.notify_all();
+            }
+        } next_turn{turn_mutex, turn_changed, turn};
+        scan.segmented = false;
+        scan.pose.reset();
+        if (enough) return;
+        if (pose_file) {
+            scan.pose = pose_file->at(0.1 * double(k), k);
+            if (!scan.pose) return;
+        }
+        const auto read_start = Clock::now();
+        travel::readScan(files[k], scan.frame.cloud, o.format);  // errors name the file
+        scan.read_ms = msSince(read_start);
+        // The cloud is segmented in place (TravelFilter copies it into frame.cloud: itself).
+        scan.segmented = map.segment(scan.frame.cloud, scan.pose ? *scan.pose : CPose3D(),
+                                     mrpt::Clock::fromDouble(0.1 * double(k)),  // KITTI: 10 Hz
+                                     scan.frame, o.jobs > 1 ? &scan.aligned : nullptr, "velodyne");
+    };
+    Clock::time_point last_fused = Clock::now();
+    const auto consume = [&](std::size_t k, Scan& scan) {
+        if (enough) return;
+        ++stats.records;
+        if (pose_file && !scan.pose) {
+            ++stats.no_pose;
+            return;
+        }
         ++stats.lidar;
-        if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
-            reportMount(o, map, progress);
-            stats.times.push_back(map.lastInsertTimes());
+        if (scan.segmented) {
+            map.fuseFrame(scan.frame, scan.pose ? *scan.pose : CPose3D());
+            reportMount(o, scan.frame, progress);
+            travel_mrpt::CTraversabilityMap::InsertTimes times = map.lastInsertTimes();
+            times.convert_ms = scan.frame.convert_ms;
+            times.segment_ms = scan.frame.process_ms;
+            stats.times.push_back({scan.read_ms, times, msSince(last_fused)});
+            last_fused = Clock::now();
             ++stats.inserted;
         } else
             ++stats.rejected;
+        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) enough = true;
         progress.update(k + 1);
         throwIfInterrupted();  // nothing is written before the map is complete
-    }
+    };
+    // Two threads take turns at reading + segmenting, so that one is ready with the next scan
+    // while the other waits for a free slot; more would only wait.
+    forEachInOrder<Scan>(
+        files.size(), std::min(o.jobs, 2u), [] { return false; }, [](unsigned) {}, produce,
+        consume);
     progress.finish();
     stats.pose_source = pose_file ? "pose file " + o.poses : "none (identity poses)";
 }

@@ -28,14 +28,26 @@ struct Options {
     long max_frames = 0;
     travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
     Verbosity verbosity = Verbosity::Normal;
+    /// -j: with >= 2, scans are read and segmented on one thread while the previous ones are
+    /// fused on the calling thread (the map is the same as with 1).
+    unsigned jobs = 1;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
+};
+
+/// Wall-clock times of one mapped frame [ms].
+struct FrameTimes {
+    double read_ms = 0;  ///< reading the scan file / the rawlog records up to the observation
+    travel_mrpt::CTraversabilityMap::InsertTimes map;  ///< convert, segment, grid, OctoMap
+    /// From the end of the previous frame's fusion to the end of this one's: the time a frame
+    /// costs the whole program (with -j 2 the stages of consecutive frames overlap).
+    double interval_ms = 0;
 };
 
 struct Stats {
     std::size_t records = 0, lidar = 0, inserted = 0, rejected = 0, no_pose = 0;
     std::string pose_source;
-    /// Per mapped frame: segmentation, grid and OctoMap times (for the summary's medians).
-    std::vector<travel_mrpt::CTraversabilityMap::InsertTimes> times;
+    /// Per mapped frame (for the summary's medians).
+    std::vector<FrameTimes> times;
 };
 
 /// Poses for LiDAR frames from a pose file: TUM by timestamp, KITTI by LiDAR frame index.

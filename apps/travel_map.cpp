@@ -10,6 +10,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <octomap/OcTree.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -55,6 +56,14 @@ void applyGridFlags(const Options& o, travel::MapSection& map) {
         map.min_x = v[0], map.max_x = v[1], map.min_y = v[2], map.max_y = v[3];
     }
     if (o.resolution > 0) map.resolution = o.resolution;
+}
+
+/// CPU time of the process so far, every thread [s].
+double cpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 /// The map's options from the sections travel, filter and map of the configuration.
@@ -105,6 +114,10 @@ int run(int argc, char** argv) {
                                        "", "FILE", cmd);
     const travel::apps::MaxFramesFlag max_frames(line, "LiDAR frames");
     const travel::apps::MemoryLimitFlag max_memory(cmd);
+    const travel::apps::JobsFlag jobs(
+        line, "scan folders",
+        "one reading and segmenting the next scans while the calling thread fuses the previous "
+        "ones (more than 2 do not help: both stages go frame by frame; rawlogs: 1)");
     TCLAP::MultiArg<std::string> probe(
         "", "probe",
         "Print the state of the grid cell at world X,Y after mapping (repeatable; a line "
@@ -118,6 +131,7 @@ int run(int argc, char** argv) {
     o.poses = poses.getValue();
     o.calib = calib.getValue();
     o.max_frames = max_frames.count();
+    o.jobs = jobs.count();
     o.verbosity = travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     const bool print = o.verbosity != travel::apps::Verbosity::Quiet;
     std::vector<std::pair<double, double>> probes;
@@ -168,11 +182,13 @@ int run(int argc, char** argv) {
     travel::apps::createFolder(o.output_dir);
 
     Stats stats;
+    const double cpu_start = cpuSeconds();
     if (kitti)
         travel::apps::mapKitti(o, *scans, map, stats, pose_file);
     else
         travel::apps::mapRawlog(o, map, stats, pose_file);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double map_cpu_seconds = cpuSeconds() - cpu_start;
     if (stats.inserted == 0 && stats.no_pose > 0)
         throw std::runtime_error(o.poses + ": no pose for any of the " +
                                  std::to_string(stats.no_pose) +
@@ -221,20 +237,29 @@ int run(int argc, char** argv) {
         std::printf("  OctoMap: %zu leaves of %.3g m, %zu occupied voxels\n",
                     map.octree().getNumLeafNodes(), map.options().octomap_resolution,
                     map.getAsSimplePointsMap()->size());
-        std::printf("  time: mapping %.2f s (%.1f ms per frame), exports %.2f s\n", map_seconds,
-                    1000.0 * map_seconds / double(stats.inserted), export_seconds);
+        std::printf(
+            "  time: mapping %.2f s (%.1f ms per frame; CPU %.1f ms per frame, all "
+            "threads), exports %.2f s\n",
+            map_seconds, 1000.0 * map_seconds / double(stats.inserted),
+            1000.0 * map_cpu_seconds / double(stats.inserted), export_seconds);
         if (!stats.times.empty()) {
             // Medians, not means: the first frames and a busy machine make outliers.
-            const auto median = [&](double travel_mrpt::CTraversabilityMap::InsertTimes::*field) {
+            const auto median = [&](auto get) {
                 std::vector<double> v;
-                for (const auto& t : stats.times) v.push_back(t.*field);
+                for (const auto& t : stats.times) v.push_back(get(t));
                 std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
                 return v[v.size() / 2];
             };
-            using Times = travel_mrpt::CTraversabilityMap::InsertTimes;
+            using T = travel::apps::FrameTimes;
             std::printf(
-                "  per frame (median): segmentation %.1f ms, grid %.1f ms, OctoMap %.1f ms\n",
-                median(&Times::segment_ms), median(&Times::grid_ms), median(&Times::octomap_ms));
+                "  per frame (median, wall): read %.1f ms, convert %.1f ms, segmentation %.1f ms, "
+                "grid %.1f ms, OctoMap %.1f ms; whole frame %.1f ms (-j %u)\n",
+                median([](const T& t) { return t.read_ms; }),
+                median([](const T& t) { return t.map.convert_ms; }),
+                median([](const T& t) { return t.map.segment_ms; }),
+                median([](const T& t) { return t.map.grid_ms; }),
+                median([](const T& t) { return t.map.octomap_ms; }),
+                median([](const T& t) { return t.interval_ms; }), kitti ? o.jobs : 1u);
         }
         for (const auto& path : written) std::printf("  wrote %s\n", path.c_str());
     }

@@ -2,6 +2,8 @@
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -13,6 +15,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <optional>
 #include <sstream>
 
@@ -181,11 +185,29 @@ bool CTraversabilityMap::internal_insertObservation(
     const mrpt::poses::CPose3D pose = robotPose ? *robotPose : mrpt::poses::CPose3D();
     if (robotPose) filter_->setRobotPose(pose, obs.timestamp);
     last_rejection_.clear();
-    const auto start = Clock::now();
     if (!filter_->filter(obs, *frame_, &last_rejection_)) return false;
-    const double segment_ms = msSince(start);
     fuseFrame(*frame_, pose);
-    last_times_.segment_ms = segment_ms;
+    last_times_.convert_ms = frame_->convert_ms;
+    last_times_.segment_ms = frame_->process_ms;
+    return true;
+}
+
+bool CTraversabilityMap::segment(const travel::PointCloud& cloud,
+                                 const mrpt::poses::CPose3D& robotPose, mrpt::Clock::time_point t,
+                                 TravelFrame& frame, travel::AlignedCloud* keep,
+                                 const std::string& sensorLabel,
+                                 const mrpt::poses::CPose3D& sensorPose) {
+    if (cloud.empty()) {
+        last_rejection_ = "'" + sensorLabel + "': empty point cloud";
+        return false;
+    }
+    last_rejection_.clear();
+    filter_->setRobotPose(robotPose, t);  // as insertObservation(obs, robotPose)
+    filter_->filter(cloud, sensorPose, t, sensorLabel, frame);
+    if (keep) {
+        *keep = *frame.aligned;
+        frame.aligned = keep;
+    }
     return true;
 }
 
@@ -226,7 +248,7 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
     s.voxels.cast(std::size_t(options_.ray_stride), origin);
     applyVoxelUpdates(*octree_, s.voxels.freeKeys(), s.voxels.occupiedKeys());
     last_times_.octomap_ms = msSince(octomap_start);
-    last_times_.segment_ms = 0;
+    last_times_.convert_ms = last_times_.segment_ms = 0;
 
     ++frames_inserted_;
     obstacle_points_dirty_ = true;
@@ -290,11 +312,25 @@ void CTraversabilityMap::saveMetricMapRepresentationToFile(const std::string& pr
 
 // ---- Serialization: options as ini text, the grid arrays, the OctoMap as .bt bytes ----
 
-uint8_t CTraversabilityMap::serializeGetVersion() const {
-    return 0;
-}
+namespace {
+/// The first bytes of a .travelgrid file (saveTo), then its format version.
+constexpr const char* kGridFileMagic = "TRAVEL traversability grid";
+constexpr uint32_t kGridFileVersion = 1;
 
-void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
+/// MRPT's exception texts span many lines (a banner, then the message): the reader's messages
+/// keep one, led by the file name.
+std::string firstLine(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line))
+        if (line.find_first_not_of(" =\t\r") != std::string::npos &&
+            line.find("MRPT exception") == std::string::npos)
+            return line;
+    return text;
+}
+}  // namespace
+
+void CTraversabilityMap::writeGridState(mrpt::serialization::CArchive& out) const {
     mrpt::config::CConfigFileMemory text;
     options_.saveToConfigFile(text, "traversabilityMap");
     out << text.getContent();
@@ -303,13 +339,9 @@ void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
     for (auto* v : arrays.counts) out << *v;
     for (auto* v : arrays.doubles) out << *v;
     out << uint64_t(frames_inserted_);
-    std::ostringstream bt;
-    octree_->writeBinaryConst(bt);
-    out << bt.str();
 }
 
-void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+void CTraversabilityMap::readGridState(mrpt::serialization::CArchive& in) {
     std::string text;
     in >> text;
     TraversabilityMapOptions options;
@@ -327,11 +359,98 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     uint64_t frames = 0;
     in >> frames;
     frames_inserted_ = std::size_t(frames);
+    obstacle_points_dirty_ = true;
+}
+
+uint8_t CTraversabilityMap::serializeGetVersion() const {
+    return 0;
+}
+
+void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
+    writeGridState(out);
+    std::ostringstream bt;
+    octree_->writeBinaryConst(bt);
+    out << bt.str();
+}
+
+void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+    if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    readGridState(in);
     std::string bt;
     in >> bt;
     std::istringstream bt_in(bt);
     if (!octree_->readBinary(bt_in))
         throw std::runtime_error("CTraversabilityMap: corrupt OctoMap data");
+    obstacle_points_dirty_ = true;
+}
+
+void CTraversabilityMap::saveTo(const std::string& prefix) const {
+    // Written beside and renamed, so that a failed save never leaves half a file under the name.
+    const auto commit = [](const std::string& part, const std::string& path) {
+        if (std::rename(part.c_str(), path.c_str()) != 0)
+            throw std::runtime_error(path + ": cannot write (rename from " + part + " failed)");
+    };
+    const std::string grid_path = prefix + ".travelgrid", bt_path = prefix + ".bt";
+    {
+        mrpt::io::CFileGZOutputStream out;
+        if (!out.open(grid_path + ".part")) throw std::runtime_error(grid_path + ": cannot write");
+        auto archive = mrpt::serialization::archiveFrom(out);
+        archive << std::string(kGridFileMagic) << kGridFileVersion;
+        writeGridState(archive);
+        out.close();
+    }
+    commit(grid_path + ".part", grid_path);
+    {
+        std::ofstream out(bt_path + ".part", std::ios::binary);
+        if (!out || !octree_->writeBinaryConst(out) || !out.flush())
+            throw std::runtime_error(bt_path + ": cannot write");
+    }
+    commit(bt_path + ".part", bt_path);
+}
+
+void CTraversabilityMap::loadFrom(const std::string& prefix) {
+    const std::string grid_path = prefix + ".travelgrid", bt_path = prefix + ".bt";
+    // Into a new map first: a bad file leaves this one as it was.
+    CTraversabilityMap loaded;
+    {
+        mrpt::io::CFileGZInputStream in;
+        if (!in.open(grid_path)) throw std::runtime_error(grid_path + ": cannot open");
+        try {
+            auto archive = mrpt::serialization::archiveFrom(in);
+            std::string magic;
+            uint32_t version = 0;
+            // A wrong file: compare the magic's length before reading a string of any length.
+            uint32_t length = 0;
+            archive >> length;
+            if (length != std::string(kGridFileMagic).size())
+                throw std::runtime_error("not a traversability grid file (saveTo)");
+            magic.resize(length);
+            archive.ReadBuffer(magic.data(), length);
+            if (magic != kGridFileMagic)
+                throw std::runtime_error("not a traversability grid file (saveTo)");
+            archive >> version;
+            if (version != kGridFileVersion)
+                throw std::runtime_error("unknown format version " + std::to_string(version));
+            loaded.readGridState(archive);
+        } catch (const std::exception& e) {
+            throw std::runtime_error(grid_path + ": " + firstLine(e.what()));
+        }
+    }
+    {
+        std::ifstream in(bt_path, std::ios::binary);
+        if (!in) throw std::runtime_error(bt_path + ": cannot open");
+        if (!loaded.octree_->readBinary(in))
+            throw std::runtime_error(bt_path + ": not an OctoMap binary (.bt) file, or truncated");
+        if (std::abs(loaded.octree_->getResolution() - loaded.options_.octomap_resolution) > 1e-9)
+            throw std::runtime_error(bt_path + ": voxels of " +
+                                     std::to_string(loaded.octree_->getResolution()) +
+                                     " m, but the grid file says octomap_resolution=" +
+                                     std::to_string(loaded.options_.octomap_resolution));
+    }
+    setOptions(loaded.options_);
+    grid_ = std::move(loaded.grid_);
+    octree_ = std::move(loaded.octree_);
+    frames_inserted_ = loaded.frames_inserted_;
     obstacle_points_dirty_ = true;
 }
 

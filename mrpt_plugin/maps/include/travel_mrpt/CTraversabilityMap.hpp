@@ -36,6 +36,10 @@
 namespace octomap {
 class OcTree;
 }
+namespace travel {
+struct PointCloud;
+struct AlignedCloud;
+}  // namespace travel
 
 namespace travel_mrpt {
 
@@ -70,15 +74,37 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     /// Why the last insertObservation() returned false (empty after a success).
     const std::string& lastRejection() const { return last_rejection_; }
 
-    /// Wall-clock times of the last successful insertion, in ms: TRAVEL segmentation, the 2-D
-    /// grid, and the OctoMap update (voxel keys, ray casting, node updates).
+    /// Wall-clock times of the last successful insertion, in ms: conversion of the observation
+    /// to travel's cloud, TRAVEL segmentation, the 2-D grid, and the OctoMap update (voxel keys,
+    /// ray casting, node updates). After fuseFrame() alone: grid and OctoMap only.
     struct InsertTimes {
-        double segment_ms = 0, grid_ms = 0, octomap_ms = 0;
+        double convert_ms = 0, segment_ms = 0, grid_ms = 0, octomap_ms = 0;
     };
     const InsertTimes& lastInsertTimes() const { return last_times_; }
 
+    /// insertObservation() in two halves, for a cloud already in travel's form (own drivers,
+    /// scan files) and for callers that overlap the halves on two threads (travel-map -j 2):
+    /// segment() runs the filter on `cloud` (sensor frame, the sensor at sensorPose on the
+    /// robot) taken at robotPose and time t, into `frame`; fuseFrame(frame, robotPose) fuses
+    /// it. Frames are segmented in time order and fused in the same order. segment() uses only
+    /// the filter, fuseFrame() only the grid and OctoMap, so one thread may segment the next
+    /// frame while another fuses this one; the filter's aligned cloud is overwritten by its
+    /// next frame, so such callers pass `keep`: the frame's aligned cloud is copied there and
+    /// frame.aligned points to it. Returns false (and lastRejection()) for an empty cloud.
+    bool segment(const travel::PointCloud& cloud, const mrpt::poses::CPose3D& robotPose,
+                 mrpt::Clock::time_point t, TravelFrame& frame,
+                 travel::AlignedCloud* keep = nullptr, const std::string& sensorLabel = "lidar",
+                 const mrpt::poses::CPose3D& sensorPose = {});
     /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid.
     void fuseFrame(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
+
+    /// The map's state in two files, for a later run to start from: prefix.bt (the OctoMap,
+    /// octomap::OcTree::readBinary) and prefix.travelgrid (the options, as ini text, and every
+    /// field of the traversability grid; gzip). Throws std::runtime_error naming the file.
+    void saveTo(const std::string& prefix) const;
+    /// Replaces options, grid and OctoMap by those saveTo(prefix) wrote (the filter restarts).
+    /// Throws std::runtime_error naming the file when one is missing, truncated or corrupt.
+    void loadFrom(const std::string& prefix);
 
     // ---- CMetricMap ----
     bool isEmpty() const override;
@@ -110,6 +136,9 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
         return false;
     }
     void resetOctree();
+    /// Options, grid arrays and frame count (serialization and saveTo's grid file).
+    void writeGridState(mrpt::serialization::CArchive& out) const;
+    void readGridState(mrpt::serialization::CArchive& in);
 
     TraversabilityMapOptions options_;
     TraversabilityGrid grid_;
