@@ -5,6 +5,8 @@
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include <time.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -18,6 +20,7 @@
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel/traversability/FrameFusion.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
@@ -51,6 +54,13 @@ std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
 namespace {
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// CPU time of the calling thread [ms].
+double threadCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 // TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the
@@ -97,7 +107,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
         }
         if (map.insertObservation(*obs, pose ? *pose : CPose3D())) {
             reportMount(o, map.lastFrame(), progress);
-            stats.times.push_back({read_ms, map.lastInsertTimes(), msSince(last_fused)});
+            stats.times.push_back({read_ms, map.lastInsertTimes(), msSince(last_fused), {}});
             read_ms = 0;
             last_fused = Clock::now();
             ++stats.inserted;
@@ -158,16 +168,19 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         o.max_frames > 0 ? std::min(files.size(), std::size_t(o.max_frames)) : files.size();
     ProgressLine progress("travel-map", count, o.verbosity);
 
-    // Each scan is read straight into travel's cloud and segmented (map.segment), then fused
-    // (map.fuseFrame): with -j >= 2 the scans are read and segmented one by one, in order, on
-    // worker threads taking turns (one at a time: the filter's state goes from frame to frame)
-    // while the calling thread fuses the previous frames in order; so the map is the one of -j 1.
+    // Each scan is read straight into travel's cloud, segmented and fused into the grid on the
+    // producing thread (map.segment, map.fuseGrid), then its rays update the OctoMap on the
+    // calling thread (map.fuseVoxels). With -j >= 2 two producing threads take turns, one at a
+    // time and in order (the filter's and the grid's state go from frame to frame), while the
+    // calling thread updates the OctoMap with the previous frames in order: the map is the one
+    // of -j 1. The OctoMap update is the larger half (docs/map.md).
     struct Scan {
         travel_mrpt::TravelFrame frame;  // frame.cloud: the scan as read
-        travel::AlignedCloud aligned;    // the frame's aligned cloud, kept until it is fused
+        travel::RayEnds rays;            // filled by fuseGrid, for fuseVoxels
         std::optional<CPose3D> pose;
         bool segmented = false;
-        double read_ms = 0;
+        FrameTimes times;
+        double produce_cpu_ms = 0;
     };
     std::mutex turn_mutex;
     std::condition_variable turn_changed;
@@ -197,13 +210,20 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
             scan.pose = pose_file->at(0.1 * double(k), k);
             if (!scan.pose) return;
         }
+        const double cpu_start = threadCpuMs();
         const auto read_start = Clock::now();
         travel::readScan(files[k], scan.frame.cloud, o.format);  // errors name the file
-        scan.read_ms = msSince(read_start);
+        scan.times.read_ms = msSince(read_start);
+        const CPose3D pose = scan.pose ? *scan.pose : CPose3D();
         // The cloud is segmented in place (TravelFilter copies it into frame.cloud: itself).
-        scan.segmented = map.segment(scan.frame.cloud, scan.pose ? *scan.pose : CPose3D(),
+        scan.segmented = map.segment(scan.frame.cloud, pose,
                                      mrpt::Clock::fromDouble(0.1 * double(k)),  // KITTI: 10 Hz
-                                     scan.frame, o.jobs > 1 ? &scan.aligned : nullptr, "velodyne");
+                                     scan.frame, "velodyne");
+        if (scan.segmented) {
+            scan.times.map.segment_ms = scan.frame.process_ms;
+            scan.times.map.grid_ms = map.fuseGrid(scan.frame, pose, scan.rays);
+        }
+        scan.produce_cpu_ms = threadCpuMs() - cpu_start;
     };
     Clock::time_point last_fused = Clock::now();
     const auto consume = [&](std::size_t k, Scan& scan) {
@@ -215,13 +235,14 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         }
         ++stats.lidar;
         if (scan.segmented) {
-            map.fuseFrame(scan.frame, scan.pose ? *scan.pose : CPose3D());
+            const double cpu_start = threadCpuMs();
+            scan.times.map.octomap_ms = map.fuseVoxels(scan.rays);
             reportMount(o, scan.frame, progress);
-            travel_mrpt::CTraversabilityMap::InsertTimes times = map.lastInsertTimes();
-            times.convert_ms = scan.frame.convert_ms;
-            times.segment_ms = scan.frame.process_ms;
-            stats.times.push_back({scan.read_ms, times, msSince(last_fused)});
+            scan.times.interval_ms = msSince(last_fused);
             last_fused = Clock::now();
+            scan.times.cpu_ms[0] = scan.produce_cpu_ms;
+            scan.times.cpu_ms[1] = threadCpuMs() - cpu_start;
+            stats.times.push_back(scan.times);
             ++stats.inserted;
         } else
             ++stats.rejected;
@@ -229,8 +250,8 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         progress.update(k + 1);
         throwIfInterrupted();  // nothing is written before the map is complete
     };
-    // Two threads take turns at reading + segmenting, so that one is ready with the next scan
-    // while the other waits for a free slot; more would only wait.
+    // Two producing threads, so that one is ready with the next scan while the other waits for
+    // a free slot; more would only wait.
     forEachInOrder<Scan>(
         files.size(), std::min(o.jobs, 2u), [] { return false; }, [](unsigned) {}, produce,
         consume);

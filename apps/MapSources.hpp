@@ -28,8 +28,8 @@ struct Options {
     long max_frames = 0;
     travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
     Verbosity verbosity = Verbosity::Normal;
-    /// -j: with >= 2, scans are read and segmented on one thread while the previous ones are
-    /// fused on the calling thread (the map is the same as with 1).
+    /// -j: with >= 2, scans are read, segmented and fused into the grid on one thread while
+    /// the calling thread updates the OctoMap with the previous ones (the map is the same).
     unsigned jobs = 1;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
@@ -41,6 +41,9 @@ struct FrameTimes {
     /// From the end of the previous frame's fusion to the end of this one's: the time a frame
     /// costs the whole program (with -j 2 the stages of consecutive frames overlap).
     double interval_ms = 0;
+    /// CPU time [ms] of the thread that read, segmented and fused the frame into the grid, and
+    /// of the one that updated the OctoMap (scan folders only; 0 for rawlogs).
+    double cpu_ms[2] = {0, 0};
 };
 
 struct Stats {

@@ -18,6 +18,7 @@ void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGr
     const float max_ray = float(map.max_ray_length);
     const float sensor_height = float(result.sensor_height);
     ends.clear();
+    ends.origin = frame.origin;
     const auto addEnd = [&](const Eigen::Vector3f& p, std::vector<Eigen::Vector3f>& near_list) {
         const float range = (p - frame.origin).norm();
         if (range > max_ray)  // too long to trust its end: carve up to max_ray only

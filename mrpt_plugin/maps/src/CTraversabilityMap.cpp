@@ -194,8 +194,7 @@ bool CTraversabilityMap::internal_insertObservation(
 
 bool CTraversabilityMap::segment(const travel::PointCloud& cloud,
                                  const mrpt::poses::CPose3D& robotPose, mrpt::Clock::time_point t,
-                                 TravelFrame& frame, travel::AlignedCloud* keep,
-                                 const std::string& sensorLabel,
+                                 TravelFrame& frame, const std::string& sensorLabel,
                                  const mrpt::poses::CPose3D& sensorPose) {
     if (cloud.empty()) {
         last_rejection_ = "'" + sensorLabel + "': empty point cloud";
@@ -204,16 +203,20 @@ bool CTraversabilityMap::segment(const travel::PointCloud& cloud,
     last_rejection_.clear();
     filter_->setRobotPose(robotPose, t);  // as insertObservation(obs, robotPose)
     filter_->filter(cloud, sensorPose, t, sensorLabel, frame);
-    if (keep) {
-        *keep = *frame.aligned;
-        frame.aligned = keep;
-    }
     return true;
 }
 
 void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
                                    const mrpt::poses::CPose3D& robotPose) {
+    last_times_.grid_ms = fuseGrid(frame, robotPose, scratch_->ends);
+    last_times_.octomap_ms = fuseVoxels(scratch_->ends);
+    last_times_.convert_ms = last_times_.segment_ms = 0;
+}
+
+double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose,
+                                    travel::RayEnds& rays) {
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
+    const auto start = Clock::now();
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
     const travel::PlacedFrame placed{
@@ -223,35 +226,34 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
         Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),
                         float(sensor_in_world.z())),
         mrpt::Clock::toDouble(frame.timestamp)};
-    Scratch& s = *scratch_;
-    const auto grid_start = Clock::now();
-    travel::fuseFrame(placed, options_, grid_, s.ends);
-    last_times_.grid_ms = msSince(grid_start);
-    const auto octomap_start = Clock::now();
+    travel::fuseFrame(placed, options_, grid_, rays);
+    ++frames_inserted_;
+    return msSince(start);
+}
 
+double CTraversabilityMap::fuseVoxels(const travel::RayEnds& rays) {
+    const auto start = Clock::now();
     // The ray ends as OctoMap keys; the voxels along the rays are carved free, the obstacle
     // ends marked occupied, each voxel once.
-    s.voxels.clear();
+    travel::VoxelUpdate& voxels = scratch_->voxels;
+    voxels.clear();
     octomap::OcTreeKey key;
     const auto toKeys = [&](const std::vector<Eigen::Vector3f>& points,
                             std::vector<uint64_t>& keys) {
         for (const Eigen::Vector3f& p : points)
             if (octree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) keys.push_back(pack(key));
     };
-    toKeys(s.ends.ground, s.voxels.ground_ends);
-    toKeys(s.ends.obstacle, s.voxels.obstacle_ends);
-    toKeys(s.ends.far, s.voxels.far_ends);
+    toKeys(rays.ground, voxels.ground_ends);
+    toKeys(rays.obstacle, voxels.obstacle_ends);
+    toKeys(rays.far, voxels.far_ends);
     // The sensor in key units: OctoMap's key is floor(coordinate / resolution) + 32768.
     const double inv_res = 1.0 / options_.octomap_resolution;
-    const Eigen::Vector3d origin = placed.origin.cast<double>() * inv_res +
+    const Eigen::Vector3d origin = rays.origin.cast<double>() * inv_res +
                                    Eigen::Vector3d::Constant(double(octree_->coordToKey(0.0)));
-    s.voxels.cast(std::size_t(options_.ray_stride), origin);
-    applyVoxelUpdates(*octree_, s.voxels.freeKeys(), s.voxels.occupiedKeys());
-    last_times_.octomap_ms = msSince(octomap_start);
-    last_times_.convert_ms = last_times_.segment_ms = 0;
-
-    ++frames_inserted_;
+    voxels.cast(std::size_t(options_.ray_stride), origin);
+    applyVoxelUpdates(*octree_, voxels.freeKeys(), voxels.occupiedKeys());
     obstacle_points_dirty_ = true;
+    return msSince(start);
 }
 
 bool CTraversabilityMap::isEmpty() const {

@@ -38,7 +38,7 @@ class OcTree;
 }
 namespace travel {
 struct PointCloud;
-struct AlignedCloud;
+struct RayEnds;
 }  // namespace travel
 
 namespace travel_mrpt {
@@ -82,21 +82,27 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     };
     const InsertTimes& lastInsertTimes() const { return last_times_; }
 
-    /// insertObservation() in two halves, for a cloud already in travel's form (own drivers,
-    /// scan files) and for callers that overlap the halves on two threads (travel-map -j 2):
-    /// segment() runs the filter on `cloud` (sensor frame, the sensor at sensorPose on the
-    /// robot) taken at robotPose and time t, into `frame`; fuseFrame(frame, robotPose) fuses
-    /// it. Frames are segmented in time order and fused in the same order. segment() uses only
-    /// the filter, fuseFrame() only the grid and OctoMap, so one thread may segment the next
-    /// frame while another fuses this one; the filter's aligned cloud is overwritten by its
-    /// next frame, so such callers pass `keep`: the frame's aligned cloud is copied there and
-    /// frame.aligned points to it. Returns false (and lastRejection()) for an empty cloud.
+    /// insertObservation() for a cloud already in travel's form (own drivers, scan files), in
+    /// two halves: segment() runs the filter on `cloud` (sensor frame, the sensor at
+    /// sensorPose on the robot) taken at robotPose and time t, into `frame`; fuseFrame(frame,
+    /// robotPose) fuses it (before the next segment(): frame.aligned is the filter's buffer).
+    /// Frames are segmented in time order. segment() uses only the filter. Returns false (and
+    /// lastRejection()) for an empty cloud.
     bool segment(const travel::PointCloud& cloud, const mrpt::poses::CPose3D& robotPose,
                  mrpt::Clock::time_point t, TravelFrame& frame,
-                 travel::AlignedCloud* keep = nullptr, const std::string& sensorLabel = "lidar",
+                 const std::string& sensorLabel = "lidar",
                  const mrpt::poses::CPose3D& sensorPose = {});
     /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid.
+    /// The same as fuseGrid() then fuseVoxels().
     void fuseFrame(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
+    /// fuseFrame() in two halves, for callers that overlap them on two threads: fuseGrid()
+    /// fuses the frame into the 2-D grid and collects its rays in `rays` (world frame);
+    /// fuseVoxels(rays) updates the OctoMap from them. fuseGrid() uses only the grid,
+    /// fuseVoxels() only the OctoMap: each may run on its own thread, each in frame order.
+    /// They return their wall time in ms (lastInsertTimes() is fuseFrame()'s).
+    double fuseGrid(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose,
+                    travel::RayEnds& rays);
+    double fuseVoxels(const travel::RayEnds& rays);
 
     /// The map's state in two files, for a later run to start from: prefix.bt (the OctoMap,
     /// octomap::OcTree::readBinary) and prefix.travelgrid (the options, as ini text, and every

@@ -32,8 +32,9 @@ struct PlacedFrame {
     double time_s = 0;  ///< stamped on the grid cells the frame updates
 };
 
-/// World-frame ray end points of one frame.
+/// World-frame rays of one frame: from `origin` (the sensor) to the end points.
 struct RayEnds {
+    Eigen::Vector3f origin = Eigen::Vector3f::Zero();
     std::vector<Eigen::Vector3f> ground, obstacle;  ///< within max_ray_length of the sensor
     /// Longer rays (ground or obstacle), cut at max_ray_length: they carve free space only.
     std::vector<Eigen::Vector3f> far;
