@@ -72,10 +72,10 @@ class VoxelUpdate {
 
     /// Casts every ground_stride-th distinct ground ray, every obstacle ray and every far ray
     /// (whose end voxel is free too) from `origin`, the sensor in key units (coordinate /
-    /// resolution + 32768, not floored). Rays are at most max_ray_voxels long. Afterwards
-    /// freeKeys() (distinct, in
-    /// blocks of 8^3 voxels, each in octree order) and occupiedKeys() (sorted, distinct) (sorted,
-    /// distinct) are disjoint.
+    /// resolution + 32768, not floored). "Distinct" and "every n-th" go by the order of a
+    /// bitmap of the box the frame's rays span (blocks of 8^3 voxels, each in octree order; no
+    /// sorting). Afterwards freeKeys() and occupiedKeys() (both distinct, in that order) are
+    /// disjoint.
     void cast(std::size_t ground_stride, const Eigen::Vector3d& origin);
 
     const std::vector<uint64_t>& freeKeys() const { return free_keys_; }
@@ -96,20 +96,28 @@ class VoxelUpdate {
     /// inside a block the three coordinates' bits interleaved (x lowest, as OctoMap numbers
     /// children), so that a scan lists each block's voxels in a depth-first walk's order.
     int64_t localBit(int64_t x, int64_t y, int64_t z) const {
-        const int64_t block = ((x / kBlock) * blocks_[1] + y / kBlock) * blocks_[2] + z / kBlock;
-        int64_t m = 0;
-        for (int b = 0; b < kBlockBits; ++b)
-            m |= (((x >> b) & 1) | (((y >> b) & 1) << 1) | (((z >> b) & 1) << 2)) << (3 * b);
+        const int64_t block =
+            ((x >> kBlockBits) * blocks_[1] + (y >> kBlockBits)) * blocks_[2] + (z >> kBlockBits);
+        const int64_t m = kSpread[x & (kBlock - 1)] | (kSpread[y & (kBlock - 1)] << 1) |
+                          (kSpread[z & (kBlock - 1)] << 2);
         return block * kBlockWords * 64 + m;
     }
+    /// Lists the voxels set in `bits` (a bitmap of the box) in the bitmap's order into `keys`
+    /// and clears `bits`.
+    void takeKeys(std::vector<uint64_t>& bits, std::vector<uint64_t>& keys) const;
+    /// Leaves each key of `keys` once, in the bitmap's order (ends_ is the scratch bitmap).
+    void distinct(std::vector<uint64_t>& keys);
     void mark(uint64_t key);
     void unmark(uint64_t key);
 
     std::vector<uint64_t> free_keys_;
     static constexpr int kBlockBits = 3, kBlock = 1 << kBlockBits;
     static constexpr int64_t kBlockWords = int64_t(1) << (3 * kBlockBits - 6);
+    /// kSpread[v]: the 3 bits of v at bit positions 0, 3, 6 (one axis of a Morton code).
+    static constexpr int64_t kSpread[kBlock] = {0, 1, 8, 9, 64, 65, 72, 73};
     /// Bitmap of the voxels seen this frame: a box of size_ voxels (blocks_ blocks) from corner_.
     std::vector<uint64_t> seen_;
+    std::vector<uint64_t> ends_;  ///< a bitmap of the box, empty between uses
     std::vector<uint64_t> rays_;  ///< the end voxels of the rays cast this frame
     int64_t corner_[3] = {0, 0, 0};
     int64_t size_[3] = {0, 0, 0}, blocks_[3] = {0, 0, 0};
