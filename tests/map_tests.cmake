@@ -37,6 +37,17 @@ if(TARGET travel-map)
       -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_map
       -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_map.cmake)
   set_tests_properties(apps.travel_map_cli PROPERTIES TIMEOUT 300)
+  # -j 2: byte-identical outputs to -j 1 (generated scans; the HDL-64E drive when present).
+  # make_synthetic_scans is defined later in tests/CMakeLists.txt (same if(TRAVEL_BUILD_MRPT)).
+  add_test(NAME apps.travel_map_jobs
+    COMMAND ${CMAKE_COMMAND}
+      -DTRAVEL_MAP=$<TARGET_FILE:travel-map>
+      -DMAKE_SCANS=$<TARGET_FILE:make_synthetic_scans>
+      -DPOSES=${PROJECT_SOURCE_DIR}/share/bench/kitti_raw_pcd_poses.txt
+      -DDATA_DIR=${TRAVEL_DATA_DIR}
+      -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_map_jobs
+      -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_map_jobs.cmake)
+  set_tests_properties(apps.travel_map_jobs PROPERTIES TIMEOUT 300)
 endif()
 
 # See mrpt_plugin/CMakeLists.txt: UBSan's alignment check misreads MRPT's opengl class layout.

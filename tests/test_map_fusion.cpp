@@ -369,6 +369,108 @@ TEST_F(MapFusion, SerializationRoundTrip) {
     EXPECT_ANY_THROW(cut_in.ReadObject());
 }
 
+/// Every field of every grid cell, the options and the OctoMap's leaves (keys, depths and
+/// log-odds) of two maps agree.
+void expectSameMaps(const CTraversabilityMap& a, const CTraversabilityMap& b) {
+    mrpt::config::CConfigFileMemory text_a, text_b;
+    a.options().saveToConfigFile(text_a, "map");
+    b.options().saveToConfigFile(text_b, "map");
+    EXPECT_EQ(text_a.getContent(), text_b.getContent());
+    EXPECT_EQ(a.asString(), b.asString());
+    const auto& ga = a.grid();
+    const auto& gb = b.grid();
+    ASSERT_EQ(ga.cellCount(), gb.cellCount());
+    const auto same = [](float x, float y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+    std::size_t differ = 0;
+    for (long c = 0; c < long(ga.cellCount()); ++c)
+        differ += a.state(c) != b.state(c) || ga.observed(c) != gb.observed(c) ||
+                  !same(ga.logodds(c), gb.logodds(c)) ||
+                  !same(ga.groundHeight(c), gb.groundHeight(c)) ||
+                  !same(ga.groundSpread(c), gb.groundSpread(c)) ||
+                  !same(ga.slopeDeg(c), gb.slopeDeg(c)) ||
+                  !same(ga.stepHeight(c), gb.stepHeight(c)) || ga.lastSeen(c) != gb.lastSeen(c);
+    EXPECT_EQ(differ, 0u);
+    ASSERT_EQ(a.octree().getNumLeafNodes(), b.octree().getNumLeafNodes());
+    std::size_t leaves_differ = 0;
+    for (auto i = a.octree().begin_leafs(), j = b.octree().begin_leafs();
+         i != a.octree().end_leafs() && j != b.octree().end_leafs(); ++i, ++j)
+        leaves_differ += i.getKey() != j.getKey() || i.getDepth() != j.getDepth() ||
+                         i->getLogOdds() != j->getLogOdds();
+    EXPECT_EQ(leaves_differ, 0u);
+}
+
+/// The message of what `f` throws (empty if nothing).
+template <class F>
+std::string errorOf(F f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
+    const std::string dir = mrpt::system::getTempFileName() + "_map_state";
+    std::filesystem::create_directories(dir);
+    const std::string prefix = dir + "/scene";
+    map_->saveTo(prefix);
+    EXPECT_TRUE(std::filesystem::exists(prefix + ".ot"));
+    EXPECT_TRUE(std::filesystem::exists(prefix + ".travelgrid"));
+
+    CTraversabilityMap loaded;  // default options: loadFrom takes the saved ones
+    loaded.loadFrom(prefix);
+    expectSameMaps(*map_, loaded);
+    // The .ot is OctoMap's own format (octovis, AbstractOcTree::read).
+    std::unique_ptr<octomap::AbstractOcTree> ot(octomap::AbstractOcTree::read(prefix + ".ot"));
+    ASSERT_TRUE(dynamic_cast<octomap::OcTree*>(ot.get()));
+    EXPECT_EQ(ot->size(), map_->octree().size());
+
+    // The next run starts from it: two more sweeps fused into the loaded map and into a copy of
+    // the original give the same map.
+    CTraversabilityMap continued(*map_);
+    const auto poses = travel_map_test::robotPoses();
+    for (std::size_t k : {std::size_t(0), poses.size() - 1}) {
+        const auto obs = travel_map_test::sweep(*scene_, k);
+        ASSERT_TRUE(continued.insertObservation(*obs, poses[k]));
+        ASSERT_TRUE(loaded.insertObservation(*obs, poses[k]));
+    }
+    expectSameMaps(continued, loaded);
+
+    // Bad input: an error naming the file; the map keeps its contents.
+    const std::string before = loaded.asString();
+    const std::string missing = dir + "/missing";
+    EXPECT_NE(errorOf([&] { loaded.loadFrom(missing); }).find(missing + ".travelgrid"),
+              std::string::npos);
+    const auto copyTo = [&](const std::string& to) {
+        std::filesystem::copy_file(prefix + ".ot", to + ".ot");
+        std::filesystem::copy_file(prefix + ".travelgrid", to + ".travelgrid");
+    };
+    const std::string no_tree = dir + "/no_tree";
+    copyTo(no_tree);
+    std::filesystem::remove(no_tree + ".ot");
+    EXPECT_NE(errorOf([&] { loaded.loadFrom(no_tree); }).find(no_tree + ".ot: cannot open"),
+              std::string::npos);
+    const std::string cut = dir + "/cut";
+    copyTo(cut);
+    for (const char* suffix : {".travelgrid", ".ot"}) {
+        std::filesystem::resize_file(cut + suffix, std::filesystem::file_size(cut + suffix) / 2);
+        const std::string message = errorOf([&] { loaded.loadFrom(cut); });
+        EXPECT_NE(message.find(cut + suffix), std::string::npos) << message;
+        std::filesystem::copy_file(prefix + suffix, cut + suffix,
+                                   std::filesystem::copy_options::overwrite_existing);
+    }
+    const std::string swapped = dir + "/swapped";  // each file under the other's name
+    std::filesystem::copy_file(prefix + ".ot", swapped + ".travelgrid");
+    std::filesystem::copy_file(prefix + ".travelgrid", swapped + ".ot");
+    const std::string message = errorOf([&] { loaded.loadFrom(swapped); });
+    EXPECT_NE(message.find(swapped + ".travelgrid: not a traversability grid file"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(loaded.asString(), before);
+    std::filesystem::remove_all(dir);
+}
+
 TEST_F(MapFusion, ClearEmptiesTheMap) {
     CTraversabilityMap copy(*map_);
     EXPECT_FALSE(copy.isEmpty());

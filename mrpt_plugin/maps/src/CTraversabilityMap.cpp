@@ -392,7 +392,7 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
         if (std::rename(part.c_str(), path.c_str()) != 0)
             throw std::runtime_error(path + ": cannot write (rename from " + part + " failed)");
     };
-    const std::string grid_path = prefix + ".travelgrid", bt_path = prefix + ".bt";
+    const std::string grid_path = prefix + ".travelgrid", tree_path = prefix + ".ot";
     {
         mrpt::io::CFileGZOutputStream out;
         if (!out.open(grid_path + ".part")) throw std::runtime_error(grid_path + ": cannot write");
@@ -403,15 +403,15 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
     }
     commit(grid_path + ".part", grid_path);
     {
-        std::ofstream out(bt_path + ".part", std::ios::binary);
-        if (!out || !octree_->writeBinaryConst(out) || !out.flush())
-            throw std::runtime_error(bt_path + ": cannot write");
+        std::ofstream out(tree_path + ".part", std::ios::binary);
+        if (!out || !octree_->write(out) || !out.flush())
+            throw std::runtime_error(tree_path + ": cannot write");
     }
-    commit(bt_path + ".part", bt_path);
+    commit(tree_path + ".part", tree_path);
 }
 
 void CTraversabilityMap::loadFrom(const std::string& prefix) {
-    const std::string grid_path = prefix + ".travelgrid", bt_path = prefix + ".bt";
+    const std::string grid_path = prefix + ".travelgrid", tree_path = prefix + ".ot";
     // Into a new map first: a bad file leaves this one as it was.
     CTraversabilityMap loaded;
     {
@@ -419,17 +419,16 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
         if (!in.open(grid_path)) throw std::runtime_error(grid_path + ": cannot open");
         try {
             auto archive = mrpt::serialization::archiveFrom(in);
-            std::string magic;
-            uint32_t version = 0;
             // A wrong file: compare the magic's length before reading a string of any length.
             uint32_t length = 0;
             archive >> length;
-            if (length != std::string(kGridFileMagic).size())
+            std::string magic(std::string(kGridFileMagic).size(), ' ');
+            if (length != magic.size())
                 throw std::runtime_error("not a traversability grid file (saveTo)");
-            magic.resize(length);
             archive.ReadBuffer(magic.data(), length);
             if (magic != kGridFileMagic)
                 throw std::runtime_error("not a traversability grid file (saveTo)");
+            uint32_t version = 0;
             archive >> version;
             if (version != kGridFileVersion)
                 throw std::runtime_error("unknown format version " + std::to_string(version));
@@ -439,15 +438,22 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
         }
     }
     {
-        std::ifstream in(bt_path, std::ios::binary);
-        if (!in) throw std::runtime_error(bt_path + ": cannot open");
-        if (!loaded.octree_->readBinary(in))
-            throw std::runtime_error(bt_path + ": not an OctoMap binary (.bt) file, or truncated");
-        if (std::abs(loaded.octree_->getResolution() - loaded.options_.octomap_resolution) > 1e-9)
-            throw std::runtime_error(bt_path + ": voxels of " +
-                                     std::to_string(loaded.octree_->getResolution()) +
+        std::ifstream in(tree_path, std::ios::binary);
+        if (!in) throw std::runtime_error(tree_path + ": cannot open");
+        std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
+        auto* tree = dynamic_cast<octomap::OcTree*>(any.get());
+        if (!tree || in.fail())
+            throw std::runtime_error(tree_path +
+                                     ": not an OctoMap OcTree file (.ot), or truncated");
+        if (std::abs(tree->getResolution() - loaded.options_.octomap_resolution) > 1e-9)
+            throw std::runtime_error(tree_path + ": voxels of " +
+                                     std::to_string(tree->getResolution()) +
                                      " m, but the grid file says octomap_resolution=" +
                                      std::to_string(loaded.options_.octomap_resolution));
+        any.release();
+        loaded.octree_.reset(tree);
+        loaded.octree_->setProbHit(loaded.options_.octomap_prob_hit);
+        loaded.octree_->setProbMiss(loaded.options_.octomap_prob_miss);
     }
     setOptions(loaded.options_);
     grid_ = std::move(loaded.grid_);

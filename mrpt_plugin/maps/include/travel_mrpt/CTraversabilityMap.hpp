@@ -104,12 +104,16 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
                     travel::RayEnds& rays);
     double fuseVoxels(const travel::RayEnds& rays);
 
-    /// The map's state in two files, for a later run to start from: prefix.bt (the OctoMap,
-    /// octomap::OcTree::readBinary) and prefix.travelgrid (the options, as ini text, and every
-    /// field of the traversability grid; gzip). Throws std::runtime_error naming the file.
+    /// The map's state in two files, for a later run to start from: prefix.travelgrid (the
+    /// options, as ini text, and every field of the traversability grid; gzip) and prefix.ot
+    /// (the OctoMap with each voxel's log-odds: OctoMap's .ot format, octovis opens it; a .bt
+    /// keeps only occupied / free, so an object seen once would come back as sure as a wall).
+    /// Throws std::runtime_error naming the file. (The exports for other programs, .bt and
+    /// .gridmap.gz: saveMetricMapRepresentationToFile.)
     void saveTo(const std::string& prefix) const;
     /// Replaces options, grid and OctoMap by those saveTo(prefix) wrote (the filter restarts).
-    /// Throws std::runtime_error naming the file when one is missing, truncated or corrupt.
+    /// Throws std::runtime_error naming the file when one is missing, truncated or corrupt;
+    /// the map is then left as it was.
     void loadFrom(const std::string& prefix);
 
     // ---- CMetricMap ----
