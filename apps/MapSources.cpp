@@ -8,7 +8,6 @@
 #include <time.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -178,14 +177,16 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         travel_mrpt::TravelFrame frame;  // frame.cloud: the scan as read
         travel::RayEnds rays;            // filled by fuseGrid, for fuseVoxels
         std::optional<CPose3D> pose;
-        bool segmented = false;
+        enum class State { Skipped, NoPose, Rejected, Fused } state = State::Skipped;
         FrameTimes times;
         double produce_cpu_ms = 0;
     };
     std::mutex turn_mutex;
     std::condition_variable turn_changed;
-    std::size_t turn = 0;             // the scan whose turn it is to be read and segmented
-    std::atomic<bool> enough{false};  // --max-frames reached: the remaining scans are skipped
+    std::size_t turn = 0;  // the scan whose turn it is to be read and segmented
+    // Frames fused into the grid: with --max-frames the producing side decides where to stop
+    // (it is ahead of the OctoMap). Guarded by the turns.
+    long fused = 0;
     const auto produce = [&](unsigned, std::size_t k, Scan& scan) {
         {
             std::unique_lock<std::mutex> lock(turn_mutex);
@@ -203,12 +204,16 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
                 c.notify_all();
             }
         } next_turn{turn_mutex, turn_changed, turn};
-        scan.segmented = false;
+        using State = Scan::State;
+        scan.state = State::Skipped;
         scan.pose.reset();
-        if (enough) return;
+        if (o.max_frames > 0 && fused >= o.max_frames) return;
         if (pose_file) {
             scan.pose = pose_file->at(0.1 * double(k), k);
-            if (!scan.pose) return;
+            if (!scan.pose) {
+                scan.state = State::NoPose;
+                return;
+            }
         }
         const double cpu_start = threadCpuMs();
         const auto read_start = Clock::now();
@@ -216,25 +221,28 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         scan.times.read_ms = msSince(read_start);
         const CPose3D pose = scan.pose ? *scan.pose : CPose3D();
         // The cloud is segmented in place (TravelFilter copies it into frame.cloud: itself).
-        scan.segmented = map.segment(scan.frame.cloud, pose,
-                                     mrpt::Clock::fromDouble(0.1 * double(k)),  // KITTI: 10 Hz
-                                     scan.frame, "velodyne");
-        if (scan.segmented) {
+        scan.state = State::Rejected;
+        if (map.segment(scan.frame.cloud, pose,
+                        mrpt::Clock::fromDouble(0.1 * double(k)),  // KITTI: 10 Hz
+                        scan.frame, "velodyne")) {
             scan.times.map.segment_ms = scan.frame.process_ms;
             scan.times.map.grid_ms = map.fuseGrid(scan.frame, pose, scan.rays);
+            scan.state = State::Fused;
+            ++fused;
         }
         scan.produce_cpu_ms = threadCpuMs() - cpu_start;
     };
     Clock::time_point last_fused = Clock::now();
     const auto consume = [&](std::size_t k, Scan& scan) {
-        if (enough) return;
+        using State = Scan::State;
+        if (scan.state == State::Skipped) return;
         ++stats.records;
-        if (pose_file && !scan.pose) {
+        if (scan.state == State::NoPose) {
             ++stats.no_pose;
             return;
         }
         ++stats.lidar;
-        if (scan.segmented) {
+        if (scan.state == State::Fused) {
             const double cpu_start = threadCpuMs();
             scan.times.map.octomap_ms = map.fuseVoxels(scan.rays);
             reportMount(o, scan.frame, progress);
@@ -246,7 +254,6 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
             ++stats.inserted;
         } else
             ++stats.rejected;
-        if (o.max_frames > 0 && long(stats.inserted) >= o.max_frames) enough = true;
         progress.update(k + 1);
         throwIfInterrupted();  // nothing is written before the map is complete
     };
