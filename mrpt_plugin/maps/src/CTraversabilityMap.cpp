@@ -18,6 +18,7 @@
 
 #include "travel/Errors.hpp"
 #include "travel/traversability/FrameFusion.hpp"
+#include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -122,6 +123,7 @@ void applyVoxelUpdates(octomap::OcTree& tree, const std::vector<uint64_t>& free,
 }  // namespace
 
 struct CTraversabilityMap::Scratch {
+    travel::Result static_result;  ///< the frame without its moving objects, when it has any
     travel::RayEnds ends;
     travel::VoxelUpdate voxels;
 };
@@ -194,8 +196,11 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
+    // Objects the tracker flags moving stay out of the static map (grid and OctoMap).
+    const travel::Result& static_result =
+        travel::withoutMovingClusters(frame.result, scratch_->static_result);
     const travel::PlacedFrame placed{
-        *frame.aligned, frame.result,
+        *frame.aligned, static_result,
         sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
             frame.alignedRotation.transpose(),
         Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),
