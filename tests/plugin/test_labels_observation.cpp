@@ -478,6 +478,16 @@ TEST(LabelsObservation, VisualizationDrawsValidPointsInClassColours) {
 
 // ---------------------------------------------------------------- tracking (issue 19)
 
+TEST(LabelsObservation, DescriptionListsMovingTracksOnlyWhenTracked) {
+    std::ostringstream plain, tracked;
+    smallObservation()->getDescriptionAsText(plain);
+    EXPECT_EQ(plain.str().find("tracked"), std::string::npos) << plain.str();
+    smallTrackedObservation()->getDescriptionAsText(tracked);
+    EXPECT_NE(tracked.str().find("tracked: 2 clusters, 1 moving"), std::string::npos)
+        << tracked.str();
+    EXPECT_NE(tracked.str().find("#1 -> 70001 (4.00, -1.00)"), std::string::npos) << tracked.str();
+}
+
 TEST(LabelsObservation, TracksRoundTripExactlyInVersion1) {
     travel_mrpt::registerClasses();
     const auto obs = smallTrackedObservation();
