@@ -53,15 +53,21 @@ TEST(TrackAssociation, GatesAndTieOrder) {
     far.min.x() += 5;
     far.max.x() += 5;
     const travel::AssociationGates gates;
-    EXPECT_LT(travel::gatedDistance(a, far, gates), 0);  // too far
+    EXPECT_LT(travel::gatedDistance(a, far, far.centre, gates), 0);  // too far
     travel::WorldBox huge = a;
     huge.size = 10;
-    EXPECT_LT(travel::gatedDistance(a, huge, gates), 0);  // size ratio
-    EXPECT_EQ(travel::gatedDistance(a, a, gates), 0);
+    EXPECT_LT(travel::gatedDistance(a, huge, huge.centre, gates), 0);  // size ratio
+    EXPECT_EQ(travel::gatedDistance(a, a, a.centre, gates), 0);
     // Two tracks at the same distance of one cluster: the first track takes it.
     std::vector<travel::AssociationPair> pairs;
     std::vector<int> t2c, c2t;
-    travel::associateNearest({a, a}, {a}, gates, pairs, t2c, c2t);
+    const std::vector<travel::WorldBox> tracks{a, a}, clusters{a};
+    travel::associateNearest(
+        2, 1,
+        [&](uint32_t t, uint32_t c) {
+            return travel::gatedDistance(tracks[t], clusters[c], clusters[c].centre, gates);
+        },
+        pairs, t2c, c2t);
     EXPECT_EQ(t2c[0], 0);
     EXPECT_EQ(t2c[1], -1);
     EXPECT_EQ(c2t[0], 0);
@@ -156,7 +162,7 @@ TEST(Tracker, SameInputSameIdsAndResetRestarts) {
 TEST(Tracker, TooLongClustersAreNotTracked) {
     travel::Tracker tracker;
     for (int k = 0; k < 5; ++k) {
-        std::vector<travel::ClusterSummary> clusters{box(0, 10, 40, 1)};
+        std::vector<travel::ClusterSummary> clusters{box(0, 10, 150, 1)};  // > max_object_extent
         tracker.update(0.1 * k, kIdentity, clusters);
         EXPECT_EQ(clusters[0].track_id, 0u);
     }

@@ -5,7 +5,6 @@
 // any format the apps read -> KITTI pose file (LiDAR poses, frame 0 = identity). Points 3-50 m
 // from the sensor (xy), as the committed share/bench/kitti_raw_pcd_poses.txt was made.
 // Options before the scans: --target-voxel M, --source-voxel M (other ICP settings, to compare).
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "travel/io/ScanIO.hpp"
 #include "travel/tracking/ScanRegistration.hpp"
+#include "travel/traversability/PoseFiles.hpp"
 
 int main(int argc, char** argv) {
     travel::RegistrationParams params;
@@ -41,9 +41,6 @@ int main(int argc, char** argv) {
             if (r > 3 && r < 50) points.push_back(q);
         }
         const Eigen::Isometry3d pose = odometry.add(points);
-        const Eigen::Matrix<double, 3, 4> M = pose.matrix().topRows<3>();
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 4; ++c)
-                std::printf("%.9e%s", M(r, c), (r == 2 && c == 3) ? "\n" : " ");
+        std::fputs(travel::kittiPoseLine(pose).c_str(), stdout);
     }
 }

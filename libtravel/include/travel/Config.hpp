@@ -145,33 +145,36 @@ VelocitySource velocitySourceFromString(const std::string& text);
 // The object tracker (travel::Tracker, docs/tracking.md): association gates, the constant-
 // velocity Kalman filter of each track, the life of a track and the moving flag. Key names
 // differ from every other section's, so `--set KEY=VALUE` needs no section.
-#define TRAVEL_TRACKING_LIST(X)                                                                  \
-    X(double, gate_distance, 2.0, "m", 0.01, 1e3,                                                \
-      "A cluster continues a track only if its centroid lies within this xy distance of the "    \
-      "track's predicted position")                                                              \
-    X(double, gate_box_margin, 0.5, "m", 0.0, 1e3,                                               \
-      "... and its world-frame box overlaps the track's predicted box grown by this margin")     \
-    X(double, gate_size_ratio, 0.4, "", 0.0, 1.0,                                                \
-      "... and the smaller of the two box diagonals is at least this share of the larger")       \
-    X(double, max_object_extent, 25.0, "m", 0.1, 1e4,                                            \
-      "Clusters whose oriented box is longer than this (walls, rows of buildings) are not "      \
-      "tracked (track_id 0)")                                                                    \
-    X(double, position_sigma, 0.25, "m", 1e-4, 1e3,                                              \
-      "Kalman filter: 1-sigma noise of a measured centroid, per horizontal axis")                \
-    X(double, acceleration_sigma, 2.0, "m/s^2", 1e-4, 1e3,                                       \
-      "Kalman filter: 1-sigma of the white-noise acceleration of the constant-velocity model")   \
-    X(double, initial_velocity_sigma, 5.0, "m/s", 1e-3, 1e3,                                     \
-      "Kalman filter: 1-sigma of a new track's velocity (it starts at 0)")                       \
-    X(int, confirm_hits, 3, "", 1, 1000,                                                         \
-      "A tentative track is confirmed (and gets its id) after this many associated frames; a "   \
-      "tentative track ends at its first miss")                                                  \
-    X(int, max_misses, 3, "", 1, 1000000,                                                        \
-      "A confirmed track ends after this many consecutive frames without a cluster")             \
-    X(double, moving_speed_on, 1.0, "m/s", 0.0, 1e3,                                             \
-      "A track becomes moving when its speed exceeds this for moving_frames_on frames in a row") \
-    X(int, moving_frames_on, 3, "", 1, 1000, "... that many frames")                             \
-    X(double, moving_speed_off, 0.5, "m/s", 0.0, 1e3,                                            \
-      "A moving track stops moving when its speed falls below this (hysteresis: < "              \
+#define TRAVEL_TRACKING_LIST(X)                                                                   \
+    X(double, gate_distance, 2.0, "m", 0.01, 1e3,                                                 \
+      "A cluster continues a track only if its centroid lies within this xy distance of the "     \
+      "track's predicted position")                                                               \
+    X(double, gate_box_margin, 0.5, "m", 0.0, 1e3,                                                \
+      "... and its world-frame box overlaps the track's predicted box grown by this margin")      \
+    X(double, gate_size_ratio, 0.4, "", 0.0, 1.0,                                                 \
+      "... and the smaller of the two box diagonals is at least this share of the larger")        \
+    X(double, max_object_extent, 100.0, "m", 0.1, 1e4,                                            \
+      "Clusters whose oriented box is longer than this (walls, rows of buildings) are not "       \
+      "tracked (track_id 0)")                                                                     \
+    X(double, full_box_max_length, 0.0, "m", 0.0, 1e3,                                            \
+      "Tracks up to this long are located by the centre of the largest box seen, placed on the "  \
+      "visible faces (the centroid moves with the view; 0 = off); longer ones by their centroid") \
+    X(double, position_sigma, 0.5, "m", 1e-4, 1e3,                                                \
+      "Kalman filter: 1-sigma noise of a measured centroid, per horizontal axis")                 \
+    X(double, acceleration_sigma, 0.5, "m/s^2", 1e-4, 1e3,                                        \
+      "Kalman filter: 1-sigma of the white-noise acceleration of the constant-velocity model")    \
+    X(double, initial_velocity_sigma, 5.0, "m/s", 1e-3, 1e3,                                      \
+      "Kalman filter: 1-sigma of a new track's velocity (it starts at 0)")                        \
+    X(int, confirm_hits, 1, "", 1, 1000,                                                          \
+      "A tentative track is confirmed (and gets its id) after this many associated frames; a "    \
+      "tentative track ends at its first miss")                                                   \
+    X(int, max_misses, 3, "", 1, 1000000,                                                         \
+      "A confirmed track ends after this many consecutive frames without a cluster")              \
+    X(double, moving_speed_on, 1.0, "m/s", 0.0, 1e3,                                              \
+      "A track becomes moving when its speed exceeds this for moving_frames_on frames in a row")  \
+    X(int, moving_frames_on, 3, "", 1, 1000, "... that many frames")                              \
+    X(double, moving_speed_off, 0.5, "m/s", 0.0, 1e3,                                             \
+      "A moving track stops moving when its speed falls below this (hysteresis: < "               \
       "moving_speed_on)")
 
 #define TRAVEL_SECTION_MEMBER(type, name, def, unit, lo, hi, doc) type name = def;

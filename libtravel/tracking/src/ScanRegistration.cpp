@@ -67,16 +67,10 @@ void ScanRegistration::setTarget(const std::vector<Eigen::Vector3d>& points) {
     for (std::size_t i = 0; i < target_.size(); ++i) {
         const Eigen::Vector3d& p = target_[i];
         near.clear();
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    const auto cell = cells_.find(cellKey(p, dx, dy, dz));
-                    if (cell == cells_.end()) continue;
-                    for (uint32_t j = cell->second.first; j < cell->second.second; ++j) {
-                        const double d2 = (target_[order_[j]] - p).squaredNorm();
-                        if (d2 <= r2) near.emplace_back(d2, order_[j]);
-                    }
-                }
+        forEachNeighbour(p, [&](uint32_t j) {
+            const double d2 = (target_[j] - p).squaredNorm();
+            if (d2 <= r2) near.emplace_back(d2, j);
+        });
         if (near.size() < std::size_t(k)) continue;
         const std::size_t n = std::size_t(k);
         std::partial_sort(near.begin(), near.begin() + n, near.end());
@@ -96,19 +90,13 @@ void ScanRegistration::setTarget(const std::vector<Eigen::Vector3d>& points) {
 int ScanRegistration::nearest(const Eigen::Vector3d& p, double max_distance) const {
     double best = max_distance * max_distance;
     int found = -1;
-    for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dz = -1; dz <= 1; ++dz) {
-                const auto cell = cells_.find(cellKey(p, dx, dy, dz));
-                if (cell == cells_.end()) continue;
-                for (uint32_t j = cell->second.first; j < cell->second.second; ++j) {
-                    const double d2 = (target_[order_[j]] - p).squaredNorm();
-                    if (d2 < best || (d2 == best && found >= 0 && int(order_[j]) < found)) {
-                        best = d2;
-                        found = int(order_[j]);
-                    }
-                }
-            }
+    forEachNeighbour(p, [&](uint32_t j) {
+        const double d2 = (target_[j] - p).squaredNorm();
+        if (d2 < best || (d2 == best && found >= 0 && int(j) < found)) {
+            best = d2;
+            found = int(j);
+        }
+    });
     return found;
 }
 

@@ -6,8 +6,8 @@
 namespace travel {
 
 double gatedDistance(const WorldBox& track, const WorldBox& cluster,
-                     const AssociationGates& gates) {
-    const double distance = (track.centre - cluster.centre).norm();
+                     const Eigen::Vector2d& measured, const AssociationGates& gates) {
+    const double distance = (track.centre - measured).norm();
     if (!(distance <= gates.max_distance)) return -1;
     const double m = gates.box_margin;
     for (int a = 0; a < 3; ++a)
@@ -18,22 +18,16 @@ double gatedDistance(const WorldBox& track, const WorldBox& cluster,
     return distance;
 }
 
-void associateNearest(const std::vector<WorldBox>& tracks, const std::vector<WorldBox>& clusters,
-                      const AssociationGates& gates, std::vector<AssociationPair>& pairs,
-                      std::vector<int>& track_to_cluster, std::vector<int>& cluster_to_track) {
-    pairs.clear();
-    for (uint32_t t = 0; t < tracks.size(); ++t)
-        for (uint32_t c = 0; c < clusters.size(); ++c) {
-            const double d = gatedDistance(tracks[t], clusters[c], gates);
-            if (d >= 0) pairs.push_back({d, t, c});
-        }
+void assignNearest(std::vector<AssociationPair>& pairs, std::size_t num_tracks,
+                   std::size_t num_clusters, std::vector<int>& track_to_cluster,
+                   std::vector<int>& cluster_to_track) {
     std::sort(pairs.begin(), pairs.end(), [](const AssociationPair& a, const AssociationPair& b) {
         if (a.distance != b.distance) return a.distance < b.distance;
         if (a.track != b.track) return a.track < b.track;
         return a.cluster < b.cluster;
     });
-    track_to_cluster.assign(tracks.size(), -1);
-    cluster_to_track.assign(clusters.size(), -1);
+    track_to_cluster.assign(num_tracks, -1);
+    cluster_to_track.assign(num_clusters, -1);
     for (const AssociationPair& p : pairs) {
         if (track_to_cluster[p.track] >= 0 || cluster_to_track[p.cluster] >= 0) continue;
         track_to_cluster[p.track] = static_cast<int>(p.cluster);

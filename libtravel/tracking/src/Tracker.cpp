@@ -21,6 +21,9 @@ WorldBox worldBox(const ClusterSummary& c, const Eigen::Isometry3d& world_T_alig
     box.max = mid + half;
     box.centre = (world_T_aligned * c.centroid.cast<double>()).head<2>();
     box.size = c.obb_extent.cast<double>().norm();
+    box.flat.centre = (world_T_aligned * c.obb_center.cast<double>()).head<2>();
+    box.flat.yaw = c.obb_yaw + std::atan2(R(1, 0), R(0, 0));
+    box.flat.size = c.obb_extent.head<2>().cast<double>();
     if (!(c.obb_extent.x() <= max_extent))
         box.centre.setConstant(std::numeric_limits<double>::quiet_NaN());
     return box;
@@ -48,8 +51,21 @@ void Tracker::predictTracks(double t) {
         track.box.min.head<2>() += shift;
         track.box.max.head<2>() += shift;
         track.box.centre = track.position();
-        track_boxes_.push_back(track.box);
+        // The predicted box is only as sure as the predicted position: grown by 2 sigma, so a
+        // young track (velocity still unknown) of a thin, fast object (a car's front face) is
+        // not lost on its second frame.
+        WorldBox gate_box = track.box;
+        const double grow = 2.0 * std::sqrt(std::max(track.motion.covariance()(0, 0),
+                                                     track.motion.covariance()(1, 1)));
+        gate_box.min.head<2>().array() -= grow;
+        gate_box.max.head<2>().array() += grow;
+        track_boxes_.push_back(gate_box);
     }
+}
+
+Eigen::Vector2d Tracker::positionOf(const Track& track, const WorldBox& cluster) const {
+    if (track.extent.box().size.x() > params_.full_box_max_length) return cluster.centre;
+    return track.extent.centreOf(cluster.flat, sensor_);
 }
 
 void Tracker::updateMovingFlag(Track& track) const {
@@ -86,10 +102,16 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
     for (const ClusterSummary& c : clusters)
         cluster_boxes_.push_back(worldBox(c, world_T_aligned, params_.max_object_extent));
     predictTracks(t);
+    sensor_ = world_T_aligned.translation().head<2>();
     const AssociationGates gates{params_.gate_distance, params_.gate_box_margin,
                                  params_.gate_size_ratio};
-    associateNearest(track_boxes_, cluster_boxes_, gates, pairs_, track_to_cluster_,
-                     cluster_to_track_);
+    associateNearest(
+        tracks_.size(), clusters.size(),
+        [&](uint32_t t, uint32_t c) {
+            return gatedDistance(track_boxes_[t], cluster_boxes_[c],
+                                 positionOf(tracks_[t], cluster_boxes_[c]), gates);
+        },
+        pairs_, track_to_cluster_, cluster_to_track_);
 
     for (std::size_t k = 0; k < tracks_.size(); ++k) {
         Track& track = tracks_[k];
@@ -99,7 +121,13 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
             continue;
         }
         const WorldBox& measured = cluster_boxes_[track.cluster];
-        track.motion.correct(measured.centre, params_.position_sigma);
+        // A larger view moves our idea of the object's centre, not the object: the state is
+        // re-anchored by that shift, so the velocity does not see it.
+        const Eigen::Vector2d before = positionOf(track, measured);
+        track.extent.update(measured.flat);
+        const Eigen::Vector2d position = positionOf(track, measured);
+        track.motion.shift(position - before);
+        track.motion.correct(position, params_.position_sigma);
         track.box = measured;
         track.box.centre = track.position();
         track.z = (world_T_aligned * clusters[track.cluster].centroid.cast<double>()).z();
@@ -119,7 +147,8 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         Track track;
         track.birth = next_birth_++;
         track.last_time = t;
-        track.motion.start(cluster_boxes_[c].centre, params_.position_sigma,
+        track.extent.update(cluster_boxes_[c].flat);
+        track.motion.start(positionOf(track, cluster_boxes_[c]), params_.position_sigma,
                            params_.initial_velocity_sigma);
         track.box = cluster_boxes_[c];
         track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();

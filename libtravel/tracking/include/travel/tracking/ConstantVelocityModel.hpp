@@ -20,6 +20,8 @@ class ConstantVelocityModel {
     void start(const Eigen::Vector2d& position, double position_sigma, double velocity_sigma);
     /// Moves the state `dt` seconds ahead (dt <= 0: nothing); `acceleration_sigma` [m/s^2].
     void predict(double dt, double acceleration_sigma);
+    /// Moves the position estimate by `delta` [m] (a new reference point), velocity unchanged.
+    void shift(const Eigen::Vector2d& delta) { x_.head<2>() += delta; }
     /// Fuses a measured position with 1-sigma `position_sigma` [m] per axis.
     void correct(const Eigen::Vector2d& position, double position_sigma);
 

@@ -50,6 +50,18 @@ class ScanRegistration {
     /// Index of the nearest target point within `max_distance` of p, or -1.
     int nearest(const Eigen::Vector3d& p, double max_distance) const;
     int64_t cellKey(const Eigen::Vector3d& p, int dx = 0, int dy = 0, int dz = 0) const;
+    /// f(target index) for every target point in the 27 cells around p.
+    template <class F>
+    void forEachNeighbour(const Eigen::Vector3d& p, F&& f) const {
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const auto cell = cells_.find(cellKey(p, dx, dy, dz));
+                    if (cell == cells_.end()) continue;
+                    for (uint32_t j = cell->second.first; j < cell->second.second; ++j)
+                        f(order_[j]);
+                }
+    }
 
     RegistrationParams params_;
     std::vector<Eigen::Vector3d> target_, normals_;

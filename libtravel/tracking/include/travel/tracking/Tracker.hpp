@@ -10,6 +10,8 @@
 //    1, 2, ... in the order of confirmation (within one frame, in the order of birth);
 //  - end: a tentative track at its first miss, a confirmed one after max_misses consecutive
 //    misses (meanwhile it coasts on its prediction and can be picked up again, same id);
+//  - position: the centre of the largest box the track has seen, placed on the visible faces
+//    (ObjectExtent.hpp); the centroid for tracks longer than full_box_max_length;
 //  - moving: set once the speed exceeds moving_speed_on for moving_frames_on frames in a row,
 //    cleared when it falls below moving_speed_off.
 // Deterministic: tracks are kept in birth order and every choice has a fixed tie order, so the
@@ -37,9 +39,10 @@ struct Track {
     int fast_frames = 0;           ///< consecutive frames above moving_speed_on
     double last_time = 0;          ///< [s] time of the last update
     ConstantVelocityModel motion;  ///< world-frame xy position and velocity
-    WorldBox box;      ///< last associated cluster's box, world frame (centre: filtered position)
-    double z = 0;      ///< last measured centroid height, world frame [m]
-    int cluster = -1;  ///< index of this frame's cluster in the last update() (-1: missed)
+    WorldBox box;  ///< last associated cluster's box, world frame (centre: filtered position)
+    ObjectExtent extent;  ///< the largest box seen: locates partial views
+    double z = 0;         ///< last measured centroid height, world frame [m]
+    int cluster = -1;     ///< index of this frame's cluster in the last update() (-1: missed)
 
     Eigen::Vector2d position() const { return motion.position(); }
     Eigen::Vector2d velocity() const { return motion.velocity(); }
@@ -61,11 +64,16 @@ class Tracker {
     /// The live tracks (tentative and confirmed), in birth order.
     const std::vector<Track>& tracks() const { return tracks_; }
     const TrackingParams& params() const { return params_; }
+    /// Track ids given so far (the highest id).
+    uint32_t idsGiven() const { return next_id_ - 1; }
 
   private:
     void predictTracks(double t);
     void endLostTracks();
     void updateMovingFlag(Track& track) const;
+    /// Where `track` locates `cluster`: the centre of its full box on the visible faces, or the
+    /// centroid for long tracks (full_box_max_length).
+    Eigen::Vector2d positionOf(const Track& track, const WorldBox& cluster) const;
     void fillCluster(const Track& track, const Eigen::Matrix3d& aligned_R_world,
                      ClusterSummary& cluster) const;
 
@@ -73,6 +81,7 @@ class Tracker {
     std::vector<Track> tracks_;
     uint32_t next_id_ = 1;
     uint64_t next_birth_ = 0;
+    Eigen::Vector2d sensor_{0, 0};  ///< this frame's sensor position, world xy
     // Scratch reused across frames.
     std::vector<WorldBox> track_boxes_, cluster_boxes_;
     std::vector<AssociationPair> pairs_;
