@@ -599,6 +599,11 @@ TEST(TravelFilterOptions, ExampleConfigsLoadAndAgree) {
     EXPECT_EQ(ini.options().sensor_label, ".*");
     EXPECT_DOUBLE_EQ(ini.options().params.sensor_height, 0.8);
     EXPECT_EQ(ini.options().velocity_source, VelocitySource::Auto);
+    for (const TravelFilter* f : {&yaml, &ini}) {
+        EXPECT_FALSE(f->options().track_objects);
+        EXPECT_EQ(f->options().tracking.confirm_hits, 1);
+        EXPECT_DOUBLE_EQ(f->options().tracking.gate_distance, 2.0);
+    }
 }
 
 }  // namespace

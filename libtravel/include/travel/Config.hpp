@@ -39,7 +39,11 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "Where the deskew velocity comes from: auto = IMU gyro, else odometry / pose differences; " \
       "imu = measured rates only; poses = pose differences; none = no deskew")                    \
     X(double, max_motion_age, 0.5, "s", 0.0, 1e6,                                                 \
-      "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")
+      "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")           \
+    X(bool, track_objects, false, "", 0, 1,                                                       \
+      "Track the clusters across frames (travel::Tracker, section tracking): track ids, "         \
+      "velocities, moving flags; ego-motion from the robot poses / odometry, else from "          \
+      "registering consecutive scans")
 
 // The traversability map (travel_mrpt::CTraversabilityMap), in three parts so that each stage
 // takes its own: the grid extent (GridGeometry), the OctoMap and obstacle heights (the map
