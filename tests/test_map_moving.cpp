@@ -4,6 +4,7 @@
 // map (travel::withoutMovingClusters before fusion): a moving object leaves no obstacle cell and
 // no occupied voxel, the same object parked leaves both.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <octomap/OcTree.h>
 
 #include "travel/traversability/StaticScene.hpp"
@@ -95,4 +96,15 @@ TEST(MapMovingObjects, StaticPartRelabelsOnlyMovingClustersAndCopiesNothingOther
     for (std::size_t i = 0; i < kept.labels.size(); ++i)
         EXPECT_EQ(kept.labels[i],
                   moving.frame.result.cluster_id[i] ? PointClass::Outlier : PointClass::Ground);
+}
+
+TEST(MapMovingObjects, TheMapsFilterTracksWhenItsIniSaysSo) {
+    // A CMultiMetricMap .ini section: the filter key and a tracking key beside the map's.
+    mrpt::config::CConfigFileMemory ini(
+        "[MAP_traversabilityMap_00_creationOpts]\ntrack_objects = true\nconfirm_hits = 2\n");
+    travel_mrpt::TraversabilityMapOptions options;
+    options.loadFromConfigFile(ini, "MAP_traversabilityMap_00_creationOpts");
+    CTraversabilityMap map(options);
+    EXPECT_TRUE(map.filter().options().track_objects);
+    EXPECT_EQ(map.filter().options().tracking.confirm_hits, 2);
 }
