@@ -136,6 +136,12 @@ void printSummary(const Options& o, const Totals& t, long records, double second
     std::printf("  clusters: %zu (%.1f per frame); frames levelled %zu, deskewed %zu\n", t.clusters,
                 t.frames ? static_cast<double>(t.clusters) / t.frames : 0.0, t.levelled,
                 t.deskewed);
+    if (t.tracked)
+        std::printf(
+            "  tracking: frames tracked %zu (ego-motion from poses %zu, from scan registration "
+            "%zu), tracks %u, tracked clusters %zu, moving %zu\n",
+            t.tracked, t.tracked_with_poses, t.tracked - t.tracked_with_poses, t.tracks,
+            t.tracked_clusters, t.moving_clusters);
     if (t.frames) {
         std::printf(
             "  ms per frame: TRAVEL median %.2f max %.2f; conversion median %.2f max %.2f\n",

@@ -49,6 +49,9 @@ void writePly(const std::string& path, const travel::AlignedCloud& aligned,
 
 struct Totals {
     std::size_t frames = 0, points = 0, skipped = 0, clusters = 0, levelled = 0, deskewed = 0;
+    /// --track: frames tracked (ego-motion from poses), tracked / moving clusters, tracks.
+    std::size_t tracked = 0, tracked_with_poses = 0, tracked_clusters = 0, moving_clusters = 0;
+    uint32_t tracks = 0;  ///< the largest track id (ids are 1, 2, ... in confirmation order)
     std::array<std::size_t, 4> per_class{};
     std::vector<double> process_ms, convert_ms;
 };
@@ -92,11 +95,10 @@ struct Options {
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
 };
 
-/// The filter's options from a loaded configuration: its travel and filter sections.
+/// The filter's options from a loaded configuration: its travel, filter and tracking sections.
 inline travel_mrpt::TravelFilterOptions filterOptionsFrom(const travel::Config& config) {
     travel_mrpt::TravelFilterOptions options;
-    options.params = config.travel;
-    static_cast<travel::FilterSection&>(options) = config.filter;
+    options.fromConfig(config);
     return options;
 }
 
@@ -161,6 +163,7 @@ class RawlogSegmenter {
         totals_.clusters += result.clusters.size();
         totals_.levelled += frame_.levelled;
         totals_.deskewed += frame_.deskewed;
+        if (frame_.tracked) addTracking(result.clusters);
         totals_.process_ms.push_back(frame_.process_ms);
         totals_.convert_ms.push_back(frame_.convert_ms);
         csv_.add(frame, obs, frame_);
@@ -206,6 +209,15 @@ class RawlogSegmenter {
         travel::apps::writePly(stem + ".ply", aligned, result);
     }
 
+    void addTracking(const std::vector<travel::ClusterSummary>& clusters) {
+        ++totals_.tracked;
+        totals_.tracked_with_poses += frame_.egoFromPoses;
+        for (const travel::ClusterSummary& c : clusters) {
+            totals_.tracked_clusters += c.track_id != 0;
+            totals_.moving_clusters += c.moving;
+            totals_.tracks = std::max(totals_.tracks, c.track_id);
+        }
+    }
     void noteOnce(const std::string& note) {
         if (notes_.insert(note).second && !options_.quiet) say(options_.app + ": note: " + note);
     }

@@ -3,15 +3,18 @@
 // travel-kitti: run TRAVEL over scans (one file, a folder, a KITTI sequence), write one .label per
 // scan (class in the lower 16 bits, cluster id in the upper 16 bits), and, given SemanticKITTI
 // labels, print ground precision / recall / F1 / accuracy per frame and their mean and std under
-// both evaluation protocols, plus the median and max milliseconds of every stage.
+// both evaluation protocols, plus the median and max milliseconds of every stage. --track: the
+// clusters keep their identity across frames (travel::FrameTracker, docs/tracking.md).
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -26,10 +29,56 @@
 #include "travel/eval/FrameEvaluation.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Segmenter.hpp"
+#include "travel/eval/TrackingMetrics.hpp"
+#include "travel/tracking/FrameTracker.hpp"
+#include "travel/traversability/PoseFiles.hpp"
+#include "travel/viz/PngFile.hpp"
+#include "travel/viz/TrackPicture.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+/// --track: the frames' poses (given or estimated), the tracker, and what the summary and the
+/// picture need. Frames arrive in input order (also with -j N).
+struct Tracking {
+    std::optional<travel::PoseTrajectory> given;  ///< the sequence's poses.txt (LiDAR frames)
+    std::unique_ptr<travel::FrameTracker> tracker;
+    std::ofstream poses;
+    std::vector<travel::eval::TrackedFrame> frames;
+    std::vector<travel::viz::TrackFrame> picture;
+    std::vector<double> ms;
+    std::vector<uint32_t> track_of_cluster;
+
+    /// Tracks frame `f` (time 0.1 f: KITTI's 10 Hz) and writes its pose line.
+    void add(std::size_t f, const travel::PointCloud& cloud, travel::eval::Segmentation& s) {
+        const auto start = std::chrono::steady_clock::now();
+        const Eigen::Isometry3d* pose = given ? &given->poses[f] : nullptr;
+        const Eigen::Isometry3d world_T_sensor =
+            tracker->update(0.1 * double(f), cloud, s.labels, s.aligned_rotation, s.clusters, pose);
+        ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+        poses << travel::kittiPoseLine(world_T_sensor);
+        frames.push_back({s.clusters, tracker->worldTAligned()});
+        travel::viz::TrackFrame view;
+        view.ego_x = float(world_T_sensor.translation().x());
+        view.ego_y = float(world_T_sensor.translation().y());
+        track_of_cluster.assign(s.clusters.size() + 1, 0u);
+        for (const travel::ClusterSummary& c : s.clusters) {
+            track_of_cluster[c.id] = c.track_id;
+            if (!c.track_id) continue;
+            const Eigen::Vector3d p = frames.back().world_T_aligned * c.centroid.cast<double>();
+            const Eigen::Vector3d v =
+                frames.back().world_T_aligned.linear() * c.velocity.cast<double>();
+            view.tracks.push_back(
+                {c.track_id, float(p.x()), float(p.y()), float(v.x()), float(v.y()), c.moving});
+        }
+        picture.push_back(std::move(view));
+    }
+    /// The upper 16 bits of a point's label: its cluster's track id.
+    uint32_t trackId(uint32_t cluster_id) const { return track_of_cluster[cluster_id]; }
+};
 
 struct StageSeries {
     const char* name;
@@ -68,7 +117,21 @@ int run(int argc, char** argv) {
         "gpf+slr, tgs+slr, tgs+euclidean, gpf+euclidean (baselines written from their papers; "
         "see README)",
         false, "travel", "NAME", cmd);
+    TCLAP::SwitchArg track(
+        "", "track",
+        "Track the clusters across frames (method travel): the upper 16 bits of each label are "
+        "the point's track id instead of its cluster id (0 = no confirmed track; ids above 65535 "
+        "wrap), and <output>/poses.txt gets one KITTI pose line per scan (LiDAR pose in the first "
+        "scan's frame: the sequence's poses.txt with calib.txt when there is one, else point-to-"
+        "plane ICP of consecutive scans' non-ground points). Frames are tracked in input order, "
+        "so -j N changes nothing. Section tracking: of the configuration (docs/tracking.md)",
+        cmd);
+    TCLAP::ValueArg<std::string> track_png(
+        "", "track-png", "With --track: a bird's-eye picture of the tracks (world frame) to FILE",
+        false, "", "FILE", cmd);
     if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
+    if (track_png.isSet() && !track.getValue())
+        throw travel::apps::usageError("--track-png needs --track");
 
     const travel::Config configuration = flags.config.load();
     if (flags.config.print(configuration)) return 0;
@@ -83,7 +146,23 @@ int run(int argc, char** argv) {
     std::vector<std::string> files = scans.files;
     const std::string labels_dir = labels.isSet() ? labels.getValue() : scans.labels_dir;
     max_frames.keepFirst(files);
+    Tracking tracking;
+    if (track.getValue()) {
+        if (method.getValue() != "travel" && method.getValue() != "travel-no-ttmf")
+            throw travel::apps::usageError(
+                "--track needs TRAVEL's clusters: --method travel or travel-no-ttmf");
+        tracking.given = travel::readSequenceLidarPoses(scans.sequence_dir);
+        if (tracking.given && tracking.given->size() < files.size())
+            throw travel::InputError(scans.sequence_dir +
+                                     "/poses.txt: " + std::to_string(tracking.given->size()) +
+                                     " poses for " + std::to_string(files.size()) + " scans");
+        tracking.tracker = std::make_unique<travel::FrameTracker>(configuration.tracking);
+    }
     travel::apps::createFolder(out);
+    if (track.getValue()) {
+        tracking.poses.open((fs::path(out) / "poses.txt").string());
+        if (!tracking.poses) throw travel::InputError("cannot write " + out + "/poses.txt");
+    }
 
     std::ofstream csv_out;
     if (csv.isSet()) {
@@ -95,7 +174,8 @@ int run(int argc, char** argv) {
                    "mean_purity,"
                    "ms_preprocess,ms_embedding,ms_node_fitting,ms_graph_search,ms_ttmf,"
                    "ms_labelling,ms_ground_total,ms_range_image,ms_horizontal,ms_vertical,"
-                   "ms_clusters,ms_objects_total,ms_total\n";
+                   "ms_clusters,ms_objects_total,ms_total"
+                << (track.getValue() ? ",tracked_clusters,moving_clusters,ms_tracking\n" : "\n");
     }
 
     travel::eval::EvaluationAccumulator totals;
@@ -147,11 +227,14 @@ int run(int argc, char** argv) {
         if (const travel::MountNote& note = frame.segmentation.mount; note && !quiet)
             progress.note(travel::apps::mountNoteLine("travel-kitti", "", note));
         const travel::PointCloud& cloud = frame.cloud;
+        if (tracking.tracker) tracking.add(f, cloud, frame.segmentation);
         const travel::eval::Segmentation& result = frame.segmentation;
 
         encoded.resize(cloud.size());
         for (std::size_t i = 0; i < cloud.size(); ++i)
-            encoded[i] = travel::encodeLabel(result.labels[i], result.cluster_id[i]);
+            encoded[i] = travel::encodeLabel(
+                result.labels[i],
+                tracking.tracker ? tracking.trackId(result.cluster_id[i]) : result.cluster_id[i]);
         travel::writeLabelFile((fs::path(out) / (stem + ".label")).string(), encoded);
 
         travel::StageTimings t = result.stages;  // per stage for TRAVEL's ground stage
@@ -209,6 +292,16 @@ int run(int argc, char** argv) {
             else
                 csv_out << ",,,,,,,";
             for (int s = 0; s < kNumStages; ++s) csv_out << ',' << stage_ms[s];
+            if (tracking.tracker) {
+                const auto& clusters = result.clusters;
+                csv_out << ','
+                        << std::count_if(clusters.begin(), clusters.end(),
+                                         [](const travel::ClusterSummary& c) { return c.track_id; })
+                        << ','
+                        << std::count_if(clusters.begin(), clusters.end(),
+                                         [](const travel::ClusterSummary& c) { return c.moving; })
+                        << ',' << tracking.ms.back();
+            }
             csv_out << '\n';
         }
         progress.update(f + 1);
@@ -217,6 +310,11 @@ int run(int argc, char** argv) {
         files.size(), jobs.count(), [&] { return !segmenters[0]->independentFrames(); }, fork,
         produce, consume);
     progress.finish();
+    if (track_png.isSet()) {
+        travel::viz::TrackPictureOptions picture;
+        travel::viz::writePng(travel::viz::renderTracks(tracking.picture, picture),
+                              track_png.getValue());
+    }
     if (verbosity == travel::apps::Verbosity::Quiet) return 0;
 
     std::printf("\n%zu scans processed (method %s, preset %s), labels written to %s\n",
@@ -253,12 +351,26 @@ int run(int argc, char** argv) {
                 o.instances, o.mean_coverage, o.mean_purity, o.split, o.merged);
         }
     }
+    if (tracking.tracker) {
+        const travel::eval::IdPersistence kept = travel::eval::idPersistence(tracking.frames);
+        std::printf(
+            "Tracking: %u tracks confirmed; poses %s, written to %s/poses.txt; clusters >= 300 "
+            "points with a cluster within 1 m in the next frame that kept their track id: %zu of "
+            "%zu (%.1f %%)\n",
+            tracking.tracker->tracker().idsGiven(),
+            tracking.given ? "from the sequence's poses.txt" : "estimated (ICP)", out.c_str(),
+            kept.kept, kept.counted, 100.0 * kept.share());
+    }
     std::printf("Milliseconds per frame (each frame on one thread):\n");
     for (const StageSeries& s : stages) {
         const double max = s.ms.empty() ? 0.0 : *std::max_element(s.ms.begin(), s.ms.end());
         if (max == 0.0) continue;  // a stage this method does not have
         std::printf("  %-13s median %7.3f  max %7.3f\n", s.name, travel::median(s.ms), max);
     }
+    if (!tracking.ms.empty())
+        std::printf("  %-13s median %7.3f  max %7.3f  (ego-motion + tracker)\n", "tracking",
+                    travel::median(tracking.ms),
+                    *std::max_element(tracking.ms.begin(), tracking.ms.end()));
     return 0;
 }
 

@@ -73,8 +73,8 @@ using travel::apps::RawlogSegmenter;
 // ------------------------------------------------------------------------------------------
 // Command line.
 
-/// The options, and in `configuration` the parameters: -p, -c, each --set, then --sensor-label
-/// and --ignore-sensor-pose.
+/// The options, and in `configuration` the parameters: -p, -c, each --set, then --sensor-label,
+/// --ignore-sensor-pose and --track.
 Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     travel::apps::CommandLine line(
         "travel-rawlog",
@@ -156,6 +156,14 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
                                  "Keep the mount_* parameters of the configuration instead of "
                                  "each observation's sensorPose",
                                  cmd);
+    TCLAP::SwitchArg track(
+        "", "track",
+        "Track the clusters across frames (the filter key track_objects; parameters: section "
+        "tracking): the labelled observations carry track ids, velocities and moving flags "
+        "(RawLogViewer colours each track alike in every frame and draws velocity arrows). "
+        "Ego-motion from the rawlog's odometry / robot poses, else from registering "
+        "consecutive scans",
+        cmd);
     const travel::apps::MemoryLimitFlag max_memory(cmd);
     Options o;
     o.exit_code = line.parse(argc, argv);
@@ -183,6 +191,7 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     configuration = flags.config.load();
     if (!o.sensor_label_regex.empty()) configuration.filter.sensor_label = o.sensor_label_regex;
     if (o.ignore_sensor_pose) configuration.filter.use_sensor_pose = false;
+    if (track.getValue()) configuration.filter.track_objects = true;
     configuration.validate();
     if (flags.config.print(configuration)) o.exit_code = 0;
     return o;

@@ -18,6 +18,10 @@ target_compile_options(make_synthetic_rawlog PRIVATE -Wall -Wextra -Wpedantic)
 travel_mrpt_test(test_travel_filter test_travel_filter.cpp)
 target_link_libraries(test_travel_filter PRIVATE mrpt::maps mrpt::obs mrpt::io mrpt::serialization)
 
+# TravelFilter's object tracking (track_objects) on the synthetic street rawlog.
+travel_mrpt_test(test_filter_tracking test_filter_tracking.cpp)
+target_link_libraries(test_filter_tracking PRIVATE travel_synthetic_rawlog mrpt::obs)
+
 travel_mrpt_test(test_moving_robot test_moving_robot.cpp)
 target_link_libraries(test_moving_robot
   PRIVATE travel_synthetic_rawlog mrpt::maps mrpt::obs mrpt::io mrpt::serialization)

@@ -12,6 +12,10 @@ target_compile_options(travel_map_test_scene PRIVATE -Wall -Wextra -Wpedantic)
 travel_mrpt_test(test_map_fusion test_map_fusion.cpp)
 target_link_libraries(test_map_fusion PRIVATE travel_map_test_scene octomap octomath)
 
+# Moving objects (tracker flag) stay out of the static map.
+travel_mrpt_test(test_map_moving test_map_moving.cpp)
+target_link_libraries(test_map_moving PRIVATE octomap octomath)
+
 travel_mrpt_test(test_map_options test_map_options.cpp)
 target_link_libraries(test_map_options PRIVATE travel_map_test_scene)
 

@@ -10,6 +10,9 @@ find_package(mrpt-system REQUIRED)
 
 # In process: filling, serialization round trips, corrupt streams, text and 3-D view.
 travel_mrpt_test(test_labels_observation plugin/test_labels_observation.cpp)
+# Serialized objects written by older versions (read-compatibility fixtures).
+target_compile_definitions(test_labels_observation PRIVATE
+  TRAVEL_PLUGIN_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/plugin/data")
 
 # Separate-process round trip. The writer links travel_mrpt; the reader does NOT: it knows the
 # class only through the plugin module it loads (its link proves the header alone suffices).

@@ -39,6 +39,8 @@ travel::LabelledFrame sampleFrame() {
     c.id = 1, c.num_points = 2, c.first_point = 1;
     c.centroid = {2.5f, 1.5f, 0.6f};
     c.ground_z = -1.7f, c.height_above_ground = 2.4f;
+    c.track_id = 70001, c.velocity = {1.5f, -0.25f, 0.f}, c.velocity_sigma = {0.1f, 0.2f, 0.3f};
+    c.moving = true;
     f.clusters.push_back(c);
     f.terrain.resolution = 1.f, f.terrain.cells_per_side = 2, f.terrain.origin_xy = -1.f;
     travel::TerrainNodeRecord node;
@@ -56,9 +58,9 @@ TEST(LabelledFrameCodec, RoundTripsEveryField) {
     const travel::LabelledFrame f = sampleFrame();
     Buffer buffer;
     travel::io::writeLabelledFrame(buffer, f);
-    // Count, 3 x (4 floats, a label, a cluster id), 1 cluster, terrain head, 1 node, rotation,
-    // 12 timings.
-    EXPECT_EQ(buffer.bytes.size(), 4 + 3 * 21 + 4 + 84 + 16 + 46 + 36 + 96);
+    // Count, 3 x (4 floats, a label, a cluster id), 1 cluster (84 bytes + 29 of tracking),
+    // terrain head, 1 node, rotation, 12 timings.
+    EXPECT_EQ(buffer.bytes.size(), 4 + 3 * 21 + 4 + 84 + 29 + 16 + 46 + 36 + 96);
     travel::LabelledFrame back;
     travel::io::readLabelledFrame(buffer, back, 100);
     EXPECT_EQ(back.x, f.x);
@@ -68,6 +70,10 @@ TEST(LabelledFrameCodec, RoundTripsEveryField) {
     ASSERT_EQ(back.clusters.size(), 1u);
     EXPECT_EQ(back.clusters[0].centroid, f.clusters[0].centroid);
     EXPECT_EQ(back.clusters[0].height_above_ground, 2.4f);
+    EXPECT_EQ(back.clusters[0].track_id, 70001u);
+    EXPECT_EQ(back.clusters[0].velocity, f.clusters[0].velocity);
+    EXPECT_EQ(back.clusters[0].velocity_sigma, f.clusters[0].velocity_sigma);
+    EXPECT_TRUE(back.clusters[0].moving);
     ASSERT_EQ(back.terrain.nodes.size(), 1u);
     EXPECT_EQ(back.terrain.nodes[0].index, 5u);
     EXPECT_TRUE(back.terrain.nodes[0].traversable);
@@ -100,6 +106,44 @@ TEST(LabelledFrameCodec, TruncatedOrCorruptStreamsThrowAndLeaveTheFrameEmpty) {
     travel::LabelledFrame uneven = sampleFrame();
     uneven.z.pop_back();
     EXPECT_THROW(travel::io::writeLabelledFrame(sizes, uneven), std::logic_error);
+}
+
+namespace {
+constexpr std::size_t kTrackBytesAt = 4 + 3 * 21 + 4 + 84;  // the cluster's tracking fields
+constexpr std::size_t kTrackBytes = 4 + 12 + 12 + 1;
+}  // namespace
+
+TEST(LabelledFrameCodec, ReadsLayoutZeroWithoutTrackingAsUntracked) {
+    // Layout 0 is layout 1 without the cluster's tracking bytes.
+    Buffer v0;
+    travel::io::writeLabelledFrame(v0, sampleFrame());
+    v0.bytes.erase(v0.bytes.begin() + long(kTrackBytesAt),
+                   v0.bytes.begin() + long(kTrackBytesAt + kTrackBytes));
+    travel::LabelledFrame back;
+    travel::io::readLabelledFrame(v0, back, 100, 0);
+    EXPECT_EQ(v0.read_at, v0.bytes.size());
+    ASSERT_EQ(back.clusters.size(), 1u);
+    const travel::ClusterSummary& c = back.clusters[0];
+    EXPECT_EQ(c.height_above_ground, 2.4f);
+    EXPECT_EQ(c.track_id, 0u);
+    EXPECT_EQ(c.velocity, Eigen::Vector3f::Zero());
+    EXPECT_EQ(c.velocity_sigma, Eigen::Vector3f::Zero());
+    EXPECT_FALSE(c.moving);
+    EXPECT_EQ(back.terrain.nodes.size(), 1u);
+    EXPECT_EQ(back.timings.ttmf, 1.5);
+}
+
+TEST(LabelledFrameCodec, RejectsUnknownLayoutsAndBadMovingFlags) {
+    Buffer whole;
+    travel::io::writeLabelledFrame(whole, sampleFrame());
+    travel::LabelledFrame back;
+    EXPECT_THROW(
+        travel::io::readLabelledFrame(whole, back, 100, travel::io::kLabelledFrameLayout + 1),
+        travel::InputError);
+    Buffer bad_flag = whole;
+    bad_flag.bytes[kTrackBytesAt + kTrackBytes - 1] = 2;  // moving is 0 or 1
+    EXPECT_THROW(travel::io::readLabelledFrame(bad_flag, back, 100), travel::InputError);
+    EXPECT_EQ(back.size(), 0u);
 }
 
 TEST(LabelledFrameCodec, StringsAreLengthPrefixed) {

@@ -229,6 +229,9 @@ TEST(TravelFilterOptions, SaveThenLoadRoundTripsEveryKey) {
     o.use_robot_attitude = false;
     o.velocity_source = VelocitySource::Poses;
     o.max_motion_age = 0.25;
+    o.track_objects = true;
+    o.tracking.gate_distance = 3.5;
+    o.tracking.max_misses = 7;
 
     mrpt::config::CConfigFileMemory written;
     o.saveToConfigFile(written, "travel");
@@ -242,12 +245,19 @@ TEST(TravelFilterOptions, SaveThenLoadRoundTripsEveryKey) {
     EXPECT_EQ(back.use_robot_attitude, o.use_robot_attitude);
     EXPECT_EQ(back.velocity_source, o.velocity_source);
     EXPECT_EQ(back.max_motion_age, o.max_motion_age);
-    // Every libtravel key is written, plus the 5 filter keys.
+    EXPECT_EQ(back.track_objects, o.track_objects);
+    EXPECT_EQ(back.tracking.gate_distance, o.tracking.gate_distance);
+    EXPECT_EQ(back.tracking.max_misses, o.tracking.max_misses);
+    // Every libtravel key is written, plus the filter and tracking keys.
     std::vector<std::string> keys;
     mrpt::config::CConfigFileMemory(text).getAllKeys("travel", keys);
-    std::size_t num_params = 0;
+    std::size_t num_params = 0, num_filter = 0, num_tracking = 0;
     travel::visitParams(o.params, [&](auto&&...) { ++num_params; });
-    EXPECT_EQ(keys.size(), num_params + 5);
+    travel::visitFields(static_cast<const travel::FilterSection&>(o),
+                        [&](auto&&...) { ++num_filter; });
+    travel::visitFields(o.tracking, [&](auto&&...) { ++num_tracking; });
+    EXPECT_EQ(num_filter, 6u);
+    EXPECT_EQ(keys.size(), num_params + num_filter + num_tracking);
 }
 
 TEST(TravelFilterOptions, LoadsFilesByExtensionAndNamesTheFile) {
@@ -599,6 +609,11 @@ TEST(TravelFilterOptions, ExampleConfigsLoadAndAgree) {
     EXPECT_EQ(ini.options().sensor_label, ".*");
     EXPECT_DOUBLE_EQ(ini.options().params.sensor_height, 0.8);
     EXPECT_EQ(ini.options().velocity_source, VelocitySource::Auto);
+    for (const TravelFilter* f : {&yaml, &ini}) {
+        EXPECT_FALSE(f->options().track_objects);
+        EXPECT_EQ(f->options().tracking.confirm_hits, 1);
+        EXPECT_DOUBLE_EQ(f->options().tracking.gate_distance, 2.0);
+    }
 }
 
 }  // namespace

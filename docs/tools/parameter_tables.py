@@ -4,7 +4,7 @@
     build/apps/travel-kitti --print-config | python3 docs/tools/parameter_tables.py
 
 rewrites the part of docs/parameters.md between the GENERATED markers: one table per section
-(travel, filter, map, nav, regress) with every key's default, unit, range and meaning, as --print-config
+(travel, filter, map, nav, regress, tracking) with every key's default, unit, range and meaning, as --print-config
 prints them. The travel section is split into the groups of libtravel/include/travel/Params.hpp
 (its `---- Group ----` comments). Pass --stdout to print the tables instead.
 """
@@ -23,6 +23,7 @@ TITLES = {
     "map": "`map:` the traversability map (`CTraversabilityMap`)",
     "nav": "`nav:` the navigation obstacle sources",
     "regress": "`regress:` the tolerances of `travel-regress` ([regression.md](regression.md))",
+    "tracking": "`tracking:` the object tracker (`travel::Tracker`, [tracking.md](tracking.md))",
 }
 
 
@@ -99,7 +100,7 @@ def render(sections):
 def main():
     sections = parse_dump(sys.stdin.read())
     if [s for s, _ in sections] != list(TITLES):
-        sys.exit("expected the sections travel, filter, map, nav, regress on stdin (--print-config)")
+        sys.exit("expected the sections travel, filter, map, nav, regress, tracking on stdin (--print-config)")
     tables = render(sections)
     if "--stdout" in sys.argv[1:]:
         sys.stdout.write(tables)

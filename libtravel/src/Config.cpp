@@ -111,6 +111,12 @@ void RegressSection::validate() const {
     checkRanges(*this);
 }
 
+void TrackingParams::validate() const {
+    checkRanges(*this);
+    require(moving_speed_off < moving_speed_on,
+            "moving_speed_off: must be < moving_speed_on [m/s] (hysteresis)");
+}
+
 void Config::validate() const {
     visitSections(*this, [](const auto& section) {
         try {

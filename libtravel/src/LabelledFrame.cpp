@@ -111,6 +111,19 @@ void LabelledFrame::describe(std::ostream& o) const {
               << c.centroid.y() << ", " << c.centroid.z() << ")  " << size.x() << " x " << size.y()
               << " x " << size.z() << "\n";
         }
+        // Tracking (travel::Tracker): only when something was tracked, so untracked frames
+        // read as before.
+        std::size_t tracked = 0, moving = 0;
+        for (const auto& c : clusters) tracked += c.track_id != 0, moving += c.moving;
+        if (tracked) {
+            o << "  tracked: " << tracked << " clusters, " << moving
+              << " moving (id -> track, velocity m/s):";
+            for (const auto& c : clusters)
+                if (c.moving)
+                    o << "  #" << c.id << " -> " << c.track_id << " (" << c.velocity.x() << ", "
+                      << c.velocity.y() << ")";
+            o << "\n";
+        }
     }
     o << std::setprecision(2) << "Terrain: " << terrain.nodes.size() << " non-empty nodes, "
       << terrain.numTraversable() << " traversable (cells of " << terrain.resolution << " m, "

@@ -18,6 +18,11 @@
 //                   so this is a lower bound of a new process's first frame (travel-kitti on one
 //                   file measures that)
 //   BM_Stage_C/<stage> each stage alone on the state the previous stages leave
+//   BM_Tracking_KITTI   travel::Tracker::update on the clusters of KITTI frames 0, 1, 2 in turn
+//                   (given poses; a reset before frame 0), i.e. the tracker alone
+//                   (docs/tracking.md)
+//   BM_Registration_KITTI the ego-motion estimate of travel-kitti --track without poses:
+//                   ScanRegistration of frame 1's non-ground points to frame 0's
 // (KITTI cases take the frame as argument: BM_Ground_KITTI/0..2; stages use frame 0.)
 // Cases whose data is missing report an error and are skipped.
 // Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
@@ -43,6 +48,7 @@
 #include "travel/eval/KittiIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
+#include "travel/tracking/FrameTracker.hpp"
 
 namespace fs = std::filesystem;
 using namespace travel;
@@ -297,6 +303,68 @@ void runStage(benchmark::State& state, CaseId id, Stage stage) {
     }
 }
 
+// Segmented KITTI frames 0-2 (clusters, labels), once.
+struct SegmentedKitti {
+    std::vector<PointCloud> clouds;
+    std::vector<Result> results;
+    Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();
+};
+const SegmentedKitti& segmentedKitti() {
+    static const SegmentedKitti s = [] {
+        SegmentedKitti out;
+        const Case& c = getCase(kKitti0);
+        if (c.cloud.size() == 0) return out;
+        Pipeline pipeline(c.params);
+        for (int f = 0; f < 3; ++f) {
+            out.clouds.push_back(getCase(static_cast<CaseId>(kKitti0 + f)).cloud);
+            Result result;
+            pipeline.process(out.clouds.back(), {}, result);
+            out.results.push_back(std::move(result));
+        }
+        out.rotation = pipeline.aligned().rotation;
+        return out;
+    }();
+    return s;
+}
+
+void runTracking(benchmark::State& state) {
+    const SegmentedKitti& kitti = segmentedKitti();
+    if (kitti.results.empty()) return state.SkipWithError("KITTI frames not found");
+    Tracker tracker;
+    std::vector<ClusterSummary> clusters;
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const std::size_t f = k % 3;
+        state.PauseTiming();
+        if (f == 0) tracker.reset();
+        clusters = kitti.results[f].clusters;
+        state.ResumeTiming();
+        tracker.update(0.1 * double(k++), Eigen::Isometry3d::Identity(), clusters);
+        benchmark::DoNotOptimize(clusters.data());
+    }
+    state.counters["clusters"] = static_cast<double>(kitti.results[0].clusters.size());
+}
+
+void runRegistration(benchmark::State& state) {
+    const SegmentedKitti& kitti = segmentedKitti();
+    if (kitti.results.empty()) return state.SkipWithError("KITTI frames not found");
+    std::vector<Eigen::Vector3d> points[2];
+    for (int f = 0; f < 2; ++f)
+        for (std::size_t i = 0; i < kitti.clouds[f].size(); ++i) {
+            const Eigen::Vector3d p(kitti.clouds[f].x[i], kitti.clouds[f].y[i],
+                                    kitti.clouds[f].z[i]);
+            if (kitti.results[f].labels[i] == PointClass::NonGround &&
+                p.head<2>().norm() <= FrameTracker::registration_range)
+                points[f].push_back(p);
+        }
+    ScanRegistration registration;
+    for (auto _ : state) {
+        registration.setTarget(points[0]);
+        benchmark::DoNotOptimize(registration.align(points[1], Eigen::Isometry3d::Identity()));
+    }
+    state.counters["points"] = static_cast<double>(points[1].size());
+}
+
 void registerAll() {
     using benchmark::RegisterBenchmark;
     struct Named {
@@ -344,6 +412,8 @@ void registerAll() {
                     runStage(s, id, static_cast<Stage>(stage));
                 })
                 ->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_Tracking_KITTI", runTracking)->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_Registration_KITTI", runRegistration)->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 #     through the plugin (travel_plugin_roundtrip_reader) and every label is compared;
 #  2. a second run on that output replaces the earlier outputs instead of duplicating them;
 #  3. the synthetic moving, tilted robot rawlog (VLP-16 rotating scans + IMU + odometry): every
-#     frame is levelled and deskewed from the IMU/odometry records, and none when disabled.
+#     frame is levelled and deskewed from the IMU/odometry records, and none when disabled;
+#     with --track every frame is tracked with the odometry as ego-motion.
 # Variables: TRAVEL_RAWLOG, READER, PLUGIN, MAKE_SYNTHETIC, CONFIG, SAMPLE, WORK_DIR.
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -93,6 +94,15 @@ expect_in("${last_output}" "records: 20, LiDAR frames processed: 10")
 expect_in("${last_output}" "frames levelled 10, deskewed 10")
 expect_read_back_through_plugin(${WORK_DIR}/moving_sf_out.rawlog ${WORK_DIR}/moving_sf.reference
   "10 labelled frames" " 0 mismatches")
+
+# --track: the clusters tracked across the 10 frames with the odometry records as ego-motion;
+# the labelled observations (version 1, with track ids) read back through the plugin.
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/moving_track.rawlog
+               ${moving_config} --track --label-reference ${WORK_DIR}/moving_track.reference)
+expect_in("${last_output}"
+  "tracking: frames tracked 10 (ego-motion from poses 10, from scan registration 0), tracks ")
+expect_read_back_through_plugin(${WORK_DIR}/moving_track.rawlog
+  ${WORK_DIR}/moving_track.reference "10 labelled frames" " 0 mismatches")
 
 # Bad inputs: a class this build does not know (a renamed class in an uncompressed copy of the
 # sample), a rawlog without any LiDAR observation, a config with an unknown key.

@@ -27,6 +27,9 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
+
+#include "travel/Pipeline.hpp"
+#include "travel_mrpt/CObservationTravelLabels.hpp"
 #endif
 
 namespace {
@@ -196,6 +199,28 @@ int main(int argc, char** argv) {
             mrpt::io::CFileOutputStream f(dir + "/fuzz_rawlog/sensoryframe_100.rawlog");
             mrpt::serialization::archiveFrom(f) << sf;
         }
+    }
+    // CObservationTravelLabels of 300 points in the current version (with tracking: track ids,
+    // velocities, moving flags); travel_labels_small.rawlog is a version-0 object (no tracking).
+    {
+        travel::Params params;
+        params.sensor_height = 1.73;
+        travel::Pipeline pipeline(params);
+        travel::Result result;
+        pipeline.process(c300, {}, result);
+        auto labels = travel_mrpt::CObservationTravelLabels::Create();
+        labels->assign(c300, result, pipeline.aligned().rotation);
+        labels->sensorLabel = "lidar_travel";
+        labels->sourceClass = "mrpt::obs::CObservationPointCloud";
+        for (std::size_t k = 0; k < labels->clusters.size(); ++k) {
+            travel::ClusterSummary& c = labels->clusters[k];
+            c.track_id = uint32_t(100 + k);
+            c.moving = k % 2 == 1;
+            c.velocity = {c.moving ? 3.f : 0.f, 0.5f, 0.f};
+            c.velocity_sigma = {0.2f, 0.2f, 0.1f};
+        }
+        mrpt::io::CFileOutputStream f(dir + "/fuzz_rawlog/travel_labels_tracked.rawlog");
+        mrpt::serialization::archiveFrom(f) << *labels;
     }
     // A CObservationVelodyneScan cut down to 2 packets, if MRPT's sample dataset is installed
     // (TRAVEL_VLP16_RAWLOG=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog); the seed is ~3 KB,

@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
+#include <mrpt/opengl/CArrow.h>
+#include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/opengl/CSetOfTriangles.h>
 #include <mrpt/rtti/CObject.h>
 
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 
@@ -70,6 +74,67 @@ CObservationTravelLabels::Ptr labelSyntheticScan() {
     return labels;
 }
 
+// A small hand-made observation (6 points, 2 clusters, 2 terrain nodes): the content of the
+// version-0 fixture tests/plugin/data/travel_labels_v0.bin, written by the version-0 code.
+CObservationTravelLabels::Ptr smallObservation() {
+    auto o = CObservationTravelLabels::Create();
+    o->sensorLabel = "SMALL";
+    o->sourceClass = "mrpt::obs::CObservationPointCloud";
+    o->timestamp = mrpt::Clock::fromDouble(1700000001.5);
+    o->sensorPose = mrpt::poses::CPose3D(0.5, 0.0, 1.2, 0.1, 0.0, 0.0);
+    o->x = {1.f, 2.f, 3.f, 4.f, 5.f, 6.f};
+    o->y = {0.f, 0.5f, 1.f, -1.f, -2.f, 0.f};
+    o->z = {-1.2f, 0.2f, 0.4f, 0.3f, 0.5f, 0.f};
+    o->intensity = {10.f, 20.f, 30.f, 40.f, 50.f, 0.f};
+    o->labels = {1, 2, 2, 2, 3, 0};
+    o->clusterId = {0, 1, 1, 2, 0, 0};
+    for (uint32_t k = 1; k <= 2; ++k) {
+        travel::ClusterSummary& c = o->clusters.emplace_back();
+        c.id = k;
+        c.num_points = k == 1 ? 2 : 1;
+        c.first_point = k == 1 ? 1 : 3;
+        c.centroid = {2.5f * k, 0.75f - k, 0.3f};
+        c.aabb_min = c.centroid - Eigen::Vector3f(0.5f, 0.4f, 0.3f);
+        c.aabb_max = c.centroid + Eigen::Vector3f(0.5f, 0.4f, 0.3f);
+        c.obb_yaw = 0.25f * k;
+        c.obb_center = c.centroid;
+        c.obb_extent = {1.f, 0.8f, 0.6f};
+        c.ground_z = -1.2f;
+        c.height_above_ground = 1.5f;
+    }
+    o->terrain.resolution = 4.f;
+    o->terrain.cells_per_side = 2;
+    o->terrain.origin_xy = -4.f;
+    for (uint32_t index : {0u, 5u}) {
+        travel::TerrainNodeRecord& n = o->terrain.nodes.emplace_back();
+        n.index = index;
+        n.node_class = travel::NodeClass::Terrain;
+        n.traversable = index == 0;
+        n.refitted = true;
+        n.d = 1.2f;
+        n.corner_z = {-1.2f, -1.1f, -1.3f};
+        n.mean = {1.f, 1.f, -1.2f};
+    }
+    o->timings.ground_total = 1.25;
+    o->timings.objects_total = 2.5;
+    return o;
+}
+
+// smallObservation() as the tracker leaves it: cluster 1 a moving track, cluster 2 a parked one.
+CObservationTravelLabels::Ptr smallTrackedObservation(uint32_t moving_track = 70001,
+                                                      uint32_t parked_track = 42) {
+    auto o = smallObservation();
+    travel::ClusterSummary &moving = o->clusters[0], &parked = o->clusters[1];
+    moving.track_id = moving_track;
+    moving.velocity = {4.f, -1.f, 0.f};
+    moving.velocity_sigma = {0.2f, 0.3f, 0.05f};
+    moving.moving = true;
+    parked.track_id = parked_track;
+    parked.velocity = {0.02f, 0.f, 0.f};
+    parked.velocity_sigma = {0.1f, 0.1f, 0.1f};
+    return o;
+}
+
 std::vector<uint8_t> serialize(const CObservationTravelLabels& obs) {
     mrpt::io::CMemoryStream mem;
     auto out = mrpt::serialization::archiveFrom(mem);
@@ -119,7 +184,9 @@ void expectSameObservation(const CObservationTravelLabels& a, const CObservation
                     sameBits(p.aabb_min, q.aabb_min) && sameBits(p.aabb_max, q.aabb_max) &&
                     sameBits(p.obb_yaw, q.obb_yaw) && sameBits(p.obb_center, q.obb_center) &&
                     sameBits(p.obb_extent, q.obb_extent) && sameBits(p.ground_z, q.ground_z) &&
-                    sameBits(p.height_above_ground, q.height_above_ground))
+                    sameBits(p.height_above_ground, q.height_above_ground) &&
+                    p.track_id == q.track_id && sameBits(p.velocity, q.velocity) &&
+                    sameBits(p.velocity_sigma, q.velocity_sigma) && p.moving == q.moving)
             << "cluster " << k;
     }
     EXPECT_EQ(a.terrain.resolution, b.terrain.resolution);
@@ -407,4 +474,140 @@ TEST(LabelsObservation, VisualizationDrawsValidPointsInClassColours) {
     mrpt::opengl::TTriangle first;
     triangles->getTriangle(0, first);
     EXPECT_LT(first.a(0), 255);  // translucent
+}
+
+// ---------------------------------------------------------------- tracking (issue 19)
+
+TEST(LabelsObservation, DescriptionListsMovingTracksOnlyWhenTracked) {
+    std::ostringstream plain, tracked;
+    smallObservation()->getDescriptionAsText(plain);
+    EXPECT_EQ(plain.str().find("tracked"), std::string::npos) << plain.str();
+    smallTrackedObservation()->getDescriptionAsText(tracked);
+    EXPECT_NE(tracked.str().find("tracked: 2 clusters, 1 moving"), std::string::npos)
+        << tracked.str();
+    EXPECT_NE(tracked.str().find("#1 -> 70001 (4.00, -1.00)"), std::string::npos) << tracked.str();
+}
+
+TEST(LabelsObservation, TracksRoundTripExactlyInVersion1) {
+    travel_mrpt::registerClasses();
+    const auto obs = smallTrackedObservation();
+    const std::vector<uint8_t> bytes = serialize(*obs);
+    // MRPT's object header: class-name length byte (| 0x80), the name, the version byte.
+    const std::string name = "travel_mrpt::CObservationTravelLabels";
+    ASSERT_GT(bytes.size(), name.size() + 1);
+    EXPECT_EQ(bytes[1 + name.size()], 1) << "serialization version";
+    const auto back = deserialize(bytes);
+    expectSameObservation(*obs, *back);
+    EXPECT_EQ(back->clusters[0].track_id, 70001u);
+    EXPECT_TRUE(back->clusters[0].moving);
+    EXPECT_EQ(back->clusters[1].velocity, obs->clusters[1].velocity);
+}
+
+TEST(LabelsObservation, ReadsVersion0FilesWithTrackingFieldsZero) {
+    // Written by the version-0 code (before tracking) from smallObservation().
+    travel_mrpt::registerClasses();
+    std::ifstream file(std::string(TRAVEL_PLUGIN_TEST_DATA) + "/travel_labels_v0.bin",
+                       std::ios::binary);
+    ASSERT_TRUE(file) << "fixture missing";
+    const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(file), {}};
+    ASSERT_EQ(bytes[1 + std::string("travel_mrpt::CObservationTravelLabels").size()], 0);
+    const auto back = deserialize(bytes);
+    expectSameObservation(*smallObservation(), *back);  // tracking fields compared: all zero
+    for (const auto& c : back->clusters) {
+        EXPECT_EQ(c.track_id, 0u);
+        EXPECT_FALSE(c.moving);
+    }
+    // An unknown newer version is refused with a message naming the class.
+    std::vector<uint8_t> future = bytes;
+    future[1 + std::string("travel_mrpt::CObservationTravelLabels").size()] = 9;
+    try {
+        deserialize(future);
+        ADD_FAILURE() << "version 9 accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown version 9"), std::string::npos) << e.what();
+    }
+}
+
+namespace {
+
+std::vector<mrpt::opengl::CArrow::Ptr> velocityArrows(mrpt::opengl::CSetOfObjects& view) {
+    std::vector<mrpt::opengl::CArrow::Ptr> arrows;
+    const auto aligned = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(
+        view.getByName("travel_aligned_frame"));
+    if (!aligned) return arrows;
+    const auto set = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(
+        aligned->getByName("travel_velocity_arrows"));
+    if (!set) return arrows;
+    for (const auto& object : *set)
+        if (auto arrow = std::dynamic_pointer_cast<mrpt::opengl::CArrow>(object))
+            arrows.push_back(arrow);
+    return arrows;
+}
+
+uint32_t rgbOf(const mrpt::img::TColor& c) {
+    return (uint32_t(c.R) << 16) | (uint32_t(c.G) << 8) | c.B;
+}
+
+// Colour of the first drawn point of cluster `id` (drawn points: the valid ones, in order).
+uint32_t drawnClusterColour(const CObservationTravelLabels& o,
+                            const mrpt::opengl::CSetOfObjects& view, uint32_t id) {
+    const auto points = view.getByClass<mrpt::opengl::CPointCloudColoured>();
+    std::size_t drawn = 0;
+    for (std::size_t i = 0; i < o.size(); ++i) {
+        if (o.labels[i] == 0) continue;
+        if (o.clusterId[i] == id) return rgbOf(points->getPointColor(drawn));
+        ++drawn;
+    }
+    return 0xFFFFFFFF;
+}
+
+}  // namespace
+
+TEST(LabelsObservation, ViewDrawsOneArrowPerMovingClusterAndTrackColours) {
+    // Untracked: no arrow, cluster colours by cluster id (unchanged from before tracking).
+    mrpt::opengl::CSetOfObjects plain;
+    const auto untracked = smallObservation();
+    untracked->getVisualizationInto(plain);
+    EXPECT_TRUE(velocityArrows(plain).empty());
+    EXPECT_EQ(drawnClusterColour(*untracked, plain, 1), travel_mrpt::clusterColour(1));
+
+    // Frame A: cluster 1 = moving track 70001, cluster 2 = parked track 42 (no arrow: slow).
+    const auto a = smallTrackedObservation(70001, 42);
+    mrpt::opengl::CSetOfObjects view_a;
+    a->getVisualizationInto(view_a);
+    const auto arrows_a = velocityArrows(view_a);
+    ASSERT_EQ(arrows_a.size(), 1u);
+    EXPECT_EQ(arrows_a[0]->getName(), "track 70001");
+    EXPECT_EQ(rgbOf(arrows_a[0]->getColor_u8()), travel_mrpt::clusterColour(70001));
+
+    // Frame B: the same two tracks, now under swapped cluster ids, and the parked one slowly
+    // moving (0.5 m/s): an arrow each.
+    auto b = smallTrackedObservation(42, 70001);
+    std::swap(b->clusters[0].velocity, b->clusters[1].velocity);  // 70001 still moves
+    std::swap(b->clusters[0].moving, b->clusters[1].moving);
+    b->clusters[0].velocity = {0.5f, 0.f, 0.f};
+    mrpt::opengl::CSetOfObjects view_b;
+    b->getVisualizationInto(view_b);
+    EXPECT_EQ(velocityArrows(view_b).size(), 2u);
+
+    // Same track -> same colour in both frames, for points, boxes and arrows; different tracks
+    // differ.
+    EXPECT_EQ(drawnClusterColour(*a, view_a, 1), drawnClusterColour(*b, view_b, 2));  // 70001
+    EXPECT_EQ(drawnClusterColour(*a, view_a, 2), drawnClusterColour(*b, view_b, 1));  // 42
+    EXPECT_NE(drawnClusterColour(*a, view_a, 1), drawnClusterColour(*a, view_a, 2));
+    EXPECT_EQ(drawnClusterColour(*a, view_a, 1), travel_mrpt::clusterColour(70001));
+    const auto boxColours = [](mrpt::opengl::CSetOfObjects& view) {
+        std::vector<uint32_t> colours;
+        const auto aligned = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(
+            view.getByName("travel_aligned_frame"));
+        for (const auto& object : *aligned)
+            if (auto box = std::dynamic_pointer_cast<mrpt::opengl::CBox>(object))
+                colours.push_back(rgbOf(box->getColor_u8()));
+        return colours;
+    };
+    const auto boxes_a = boxColours(view_a), boxes_b = boxColours(view_b);
+    ASSERT_EQ(boxes_a.size(), 2u);
+    ASSERT_EQ(boxes_b.size(), 2u);
+    EXPECT_EQ(boxes_a[0], boxes_b[1]);
+    EXPECT_EQ(boxes_a[1], boxes_b[0]);
 }

@@ -26,7 +26,8 @@ namespace {
 constexpr int kMaxPresetDepth = 8;
 
 const std::vector<std::string>& sectionNames() {
-    static const std::vector<std::string> names = {"travel", "filter", "map", "nav", "regress"};
+    static const std::vector<std::string> names = {"travel", "filter",  "map",
+                                                   "nav",    "regress", "tracking"};
     return names;
 }
 
@@ -122,7 +123,8 @@ class Applier {
 
     void applySectionName(const std::string& name, const Location& at) {
         if (isSection(name)) return;
-        fail(at, "unknown section '" + name + "' (sections: travel, filter, map, nav, regress)" +
+        fail(at, "unknown section '" + name +
+                     "' (sections: travel, filter, map, nav, regress, tracking)" +
                      fields::didYouMean(name, sectionNames()));
     }
 
@@ -137,7 +139,7 @@ class Applier {
         if (!root.IsMap()) {
             fail(locationOf(root.Mark()),
                  "expected 'key: value' lines or the sections travel:, filter:, map:, nav:, "
-                 "regress:");
+                 "regress:, tracking:");
         }
         for (const auto& item : root) {
             const std::string key = scalarKey(item.first);
@@ -411,7 +413,7 @@ std::string configToYaml(const Config& config) {
     std::string yaml =
         "# TRAVEL configuration: one section per stage (travel: ground segmentation, filter: the\n"
         "# MRPT observation filter, map: the traversability map, nav: the obstacle sources,\n"
-        "# regress: the tolerances of travel-regress).\n"
+        "# regress: the tolerances of travel-regress, tracking: the object tracker).\n"
         "# Every key is optional: a missing key keeps its default. A first key `preset: NAME`\n"
         "# starts from share/presets/NAME.yaml.\n";
     visitSections(config, [&](const auto& section) {

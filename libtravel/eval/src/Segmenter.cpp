@@ -138,6 +138,11 @@ class MethodSegmenter final : public Segmenter {
         out.stages = pipeline_ ? result_.timings : StageTimings{};
         out.mount = pipeline_ ? result_.mount : MountNote{};
         out.sensor_height = params.sensor_height;
+        out.aligned_rotation = aligned->rotation;
+        if (method_.objects == Objects::TravelAos)
+            out.clusters = result_.clusters;
+        else
+            out.clusters.clear();
         if (method_.objects == Objects::TravelAos) {
             // The pipeline times its own stages; the copies above are not part of them.
             out.ground_ms = result_.timings.ground_total;

@@ -1,7 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Every option of TRAVEL, in five named sections of one configuration (YAML `travel:`,
-// `filter:`, `map:`, `nav:`, `regress:`; ini [travel], [filter], [map], [nav], [regress]). Each
+// Every option of TRAVEL, in six named sections of one configuration (YAML `travel:`,
+// `filter:`, `map:`, `nav:`, `regress:`, `tracking:`; ini [travel], [filter], [map], [nav],
+// [regress], [tracking]). Each
 // section is declared once, like Params: X(type, name, default, unit, min, max, description). For
 // std::string and enum options the unit slot lists the allowed values ("a|b|c"; "" = any text) and
 // min/max are unused; an enum's values are listed in declaration order. Each stage receives its own
@@ -38,7 +39,11 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "Where the deskew velocity comes from: auto = IMU gyro, else odometry / pose differences; " \
       "imu = measured rates only; poses = pose differences; none = no deskew")                    \
     X(double, max_motion_age, 0.5, "s", 0.0, 1e6,                                                 \
-      "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")
+      "Motion data older than this (before the LiDAR frame) is not used (must be > 0)")           \
+    X(bool, track_objects, false, "", 0, 1,                                                       \
+      "Track the clusters across frames (travel::Tracker, section tracking): track ids, "         \
+      "velocities, moving flags; ego-motion from the robot poses / odometry, else from "          \
+      "registering consecutive scans")
 
 // The traversability map (travel_mrpt::CTraversabilityMap), in three parts so that each stage
 // takes its own: the grid extent (GridGeometry), the OctoMap and obstacle heights (the map
@@ -141,6 +146,41 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "Most run / golden ratio of the median TRAVEL time per frame (0 = timing not checked: it " \
       "depends on the machine)")
 
+// The object tracker (travel::Tracker, docs/tracking.md): association gates, the constant-
+// velocity Kalman filter of each track, the life of a track and the moving flag. Key names
+// differ from every other section's, so `--set KEY=VALUE` needs no section.
+#define TRAVEL_TRACKING_LIST(X)                                                                   \
+    X(double, gate_distance, 2.0, "m", 0.01, 1e3,                                                 \
+      "A cluster continues a track only if its centroid lies within this xy distance of the "     \
+      "track's predicted position")                                                               \
+    X(double, gate_box_margin, 0.5, "m", 0.0, 1e3,                                                \
+      "... and its world-frame box overlaps the track's predicted box grown by this margin")      \
+    X(double, gate_size_ratio, 0.4, "", 0.0, 1.0,                                                 \
+      "... and the smaller of the two box diagonals is at least this share of the larger")        \
+    X(double, max_object_extent, 100.0, "m", 0.1, 1e4,                                            \
+      "Clusters whose oriented box is longer than this (walls, rows of buildings) are not "       \
+      "tracked (track_id 0)")                                                                     \
+    X(double, full_box_max_length, 0.0, "m", 0.0, 1e3,                                            \
+      "Tracks up to this long are located by the centre of the largest box seen, placed on the "  \
+      "visible faces (the centroid moves with the view; 0 = off); longer ones by their centroid") \
+    X(double, position_sigma, 0.5, "m", 1e-4, 1e3,                                                \
+      "Kalman filter: 1-sigma noise of a measured centroid, per horizontal axis")                 \
+    X(double, acceleration_sigma, 0.5, "m/s^2", 1e-4, 1e3,                                        \
+      "Kalman filter: 1-sigma of the white-noise acceleration of the constant-velocity model")    \
+    X(double, initial_velocity_sigma, 5.0, "m/s", 1e-3, 1e3,                                      \
+      "Kalman filter: 1-sigma of a new track's velocity (it starts at 0)")                        \
+    X(int, confirm_hits, 1, "", 1, 1000,                                                          \
+      "A tentative track is confirmed (and gets its id) after this many associated frames; a "    \
+      "tentative track ends at its first miss")                                                   \
+    X(int, max_misses, 3, "", 1, 1000000,                                                         \
+      "A confirmed track ends after this many consecutive frames without a cluster")              \
+    X(double, moving_speed_on, 1.0, "m/s", 0.0, 1e3,                                              \
+      "A track becomes moving when its speed exceeds this for moving_frames_on frames in a row")  \
+    X(int, moving_frames_on, 3, "", 1, 1000, "... that many frames")                              \
+    X(double, moving_speed_off, 0.5, "m/s", 0.0, 1e3,                                             \
+      "A moving track stops moving when its speed falls below this (hysteresis: < "               \
+      "moving_speed_on)")
+
 #define TRAVEL_SECTION_MEMBER(type, name, def, unit, lo, hi, doc) type name = def;
 
 struct FilterSection {
@@ -184,6 +224,13 @@ struct RegressSection {
     void validate() const;
 };
 
+/// The tracker's section (travel::Tracker).
+struct TrackingParams {
+    TRAVEL_TRACKING_LIST(TRAVEL_SECTION_MEMBER)
+    /// Ranges, then moving_speed_off < moving_speed_on. Throws ConfigError naming the key.
+    void validate() const;
+};
+
 #undef TRAVEL_SECTION_MEMBER
 
 /// The whole configuration: one struct per section.
@@ -193,6 +240,7 @@ struct Config {
     MapSection map;
     NavSection nav;
     RegressSection regress;
+    TrackingParams tracking;
     /// Every section's validate(); the message names the section ("map.max_x: ...").
     void validate() const;
 };
@@ -221,10 +269,12 @@ TRAVEL_DEFINE_VISITOR(GridFusionParams, TRAVEL_MAP_FUSION_LIST, "map")
 TRAVEL_DEFINE_VISITOR(MapSection, TRAVEL_MAP_LIST, "map")
 TRAVEL_DEFINE_VISITOR(NavSection, TRAVEL_NAV_LIST, "nav")
 TRAVEL_DEFINE_VISITOR(RegressSection, TRAVEL_REGRESS_LIST, "regress")
+TRAVEL_DEFINE_VISITOR(TrackingParams, TRAVEL_TRACKING_LIST, "tracking")
 #undef TRAVEL_DEFINE_VISITOR
 #undef TRAVEL_SECTION_VISIT
 
-/// f(section) for each section of `config`, in file order (travel, filter, map, nav, regress).
+/// f(section) for each section of `config`, in file order (travel, filter, map, nav, regress,
+/// tracking).
 template <class C, class F>
 void visitSections(C& config, F&& f) {
     f(config.travel);
@@ -232,6 +282,7 @@ void visitSections(C& config, F&& f) {
     f(config.map);
     f(config.nav);
     f(config.regress);
+    f(config.tracking);
 }
 
 }  // namespace travel

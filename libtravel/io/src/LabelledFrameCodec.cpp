@@ -100,13 +100,21 @@ struct FieldIo {
         if constexpr (std::is_const_v<T>) {
             if constexpr (kVector)
                 writeVec3(*out, value);
+            else if constexpr (std::is_same_v<Value, bool>)
+                writePod(*out, uint8_t(value ? 1 : 0));
             else
                 writePod(*out, value);
         } else {
-            if constexpr (kVector)
+            if constexpr (kVector) {
                 value = readVec3(*in, what);
-            else
+            } else if constexpr (std::is_same_v<Value, bool>) {
+                const auto byte = readPod<uint8_t>(*in, what);
+                if (byte > 1)
+                    corrupt(std::string(what) + " " + std::to_string(byte) + " (expected 0 or 1)");
+                value = byte == 1;
+            } else {
                 value = readPod<Value>(*in, what);
+            }
         }
     }
 };
@@ -124,6 +132,15 @@ void clusterFields(FieldIo io, Cluster& c) {
     io(c.obb_extent, "cluster oriented box");
     io(c.ground_z, "cluster ground height");
     io(c.height_above_ground, "cluster height");
+}
+
+// Layout 1 onwards: what travel::Tracker adds to a cluster.
+template <class Cluster>
+void clusterTrackFields(FieldIo io, Cluster& c) {
+    io(c.track_id, "cluster track id");
+    io(c.velocity, "cluster velocity");
+    io(c.velocity_sigma, "cluster velocity sigma");
+    io(c.moving, "cluster moving flag");
 }
 
 // A node: index, class and flags (checked on reading), then these plane fields.
@@ -159,7 +176,10 @@ TerrainNodeRecord readNode(ByteSource& in) {
     return n;
 }
 
-void readFrame(ByteSource& in, LabelledFrame& f, std::size_t max_points) {
+void readFrame(ByteSource& in, LabelledFrame& f, std::size_t max_points, uint8_t layout) {
+    if (layout > kLabelledFrameLayout)
+        corrupt("layout " + std::to_string(layout) + " (this build reads 0.." +
+                std::to_string(kLabelledFrameLayout) + ")");
     const auto n = readPod<uint32_t>(in, "point count");
     if (n > max_points)
         corrupt("point count " + std::to_string(n) + " above the limit of " +
@@ -182,7 +202,9 @@ void readFrame(ByteSource& in, LabelledFrame& f, std::size_t max_points) {
     f.clusters.clear();
     f.clusters.reserve(std::min<std::size_t>(num_clusters, kReadSlice));
     for (uint32_t k = 0; k < num_clusters; ++k) {
-        clusterFields(FieldIo{nullptr, &in}, f.clusters.emplace_back());
+        ClusterSummary& c = f.clusters.emplace_back();
+        clusterFields(FieldIo{nullptr, &in}, c);
+        if (layout >= 1) clusterTrackFields(FieldIo{nullptr, &in}, c);  // else: untracked
         if (f.clusters.back().id != k + 1)
             corrupt("cluster " + std::to_string(k) + " has id " +
                     std::to_string(f.clusters.back().id) + " (expected " + std::to_string(k + 1) +
@@ -262,7 +284,10 @@ void writeLabelledFrame(ByteSink& out, const LabelledFrame& f) {
     writePodArray(out, f.clusterId);
 
     writePod(out, static_cast<uint32_t>(f.clusters.size()));
-    for (const ClusterSummary& c : f.clusters) clusterFields(FieldIo{&out, nullptr}, c);
+    for (const ClusterSummary& c : f.clusters) {
+        clusterFields(FieldIo{&out, nullptr}, c);
+        clusterTrackFields(FieldIo{&out, nullptr}, c);
+    }
 
     writePod(out, f.terrain.resolution);
     writePod(out, f.terrain.cells_per_side);
@@ -274,9 +299,10 @@ void writeLabelledFrame(ByteSink& out, const LabelledFrame& f) {
     for (const auto field : kTimingFields) writePod(out, f.timings.*field);
 }
 
-void readLabelledFrame(ByteSource& in, LabelledFrame& frame, std::size_t max_points) {
+void readLabelledFrame(ByteSource& in, LabelledFrame& frame, std::size_t max_points,
+                       uint8_t layout) {
     try {
-        readFrame(in, frame, max_points);
+        readFrame(in, frame, max_points, layout);
     } catch (...) {
         // Leave a consistent (empty) frame behind.
         for (auto* v : {&frame.x, &frame.y, &frame.z, &frame.intensity}) v->clear();

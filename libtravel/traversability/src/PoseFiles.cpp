@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -138,6 +139,28 @@ Eigen::Isometry3d readKittiCalibTr(const std::string& path) {
 void kittiCameraToLidar(PoseTrajectory& trajectory, const Eigen::Isometry3d& tr) {
     const Eigen::Isometry3d tr_inv = tr.inverse();
     for (auto& pose : trajectory.poses) pose = tr_inv * pose * tr;
+}
+
+std::optional<PoseTrajectory> readSequenceLidarPoses(const std::string& sequence_dir) {
+    if (sequence_dir.empty()) return std::nullopt;
+    const std::string poses = sequence_dir + "/poses.txt", calib = sequence_dir + "/calib.txt";
+    if (!std::ifstream(poses)) return std::nullopt;
+    PoseTrajectory trajectory = readKittiPoses(poses);
+    if (std::ifstream(calib)) kittiCameraToLidar(trajectory, readKittiCalibTr(calib));
+    return trajectory;
+}
+
+std::string kittiPoseLine(const Eigen::Isometry3d& pose) {
+    const Eigen::Matrix<double, 3, 4> M = pose.matrix().topRows<3>();
+    std::string line;
+    char number[32];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) {
+            std::snprintf(number, sizeof(number), "%.9e%s", M(r, c),
+                          (r == 2 && c == 3) ? "\n" : " ");
+            line += number;
+        }
+    return line;
 }
 
 std::optional<Eigen::Isometry3d> poseAt(const PoseTrajectory& trajectory, double t,

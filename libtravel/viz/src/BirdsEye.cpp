@@ -92,6 +92,10 @@ uint32_t clusterColour(uint32_t id) {
     return packed(paletteColour(id));
 }
 
+uint32_t clusterColour(const ClusterSummary& cluster) {
+    return clusterColour(cluster.track_id != 0 ? cluster.track_id : cluster.id);
+}
+
 uint32_t pointColour(PointClass c, uint32_t cluster_id, bool any_cluster) {
     switch (c) {
         case PointClass::Ground:

@@ -22,6 +22,7 @@
 
 #include "travel/Errors.hpp"
 #include "travel/traversability/FrameFusion.hpp"
+#include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
@@ -126,6 +127,7 @@ void applyVoxelUpdates(octomap::OcTree& tree, const std::vector<uint64_t>& free,
 }  // namespace
 
 struct CTraversabilityMap::Scratch {
+    travel::Result static_result;  ///< the frame without its moving objects, when it has any
     travel::RayEnds ends;
     travel::VoxelUpdate voxels;
 };
@@ -219,8 +221,11 @@ double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses:
     const auto start = Clock::now();
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
+    // Objects the tracker flags moving stay out of the static map (grid and OctoMap).
+    const travel::Result& static_result =
+        travel::withoutMovingClusters(frame.result, scratch_->static_result);
     const travel::PlacedFrame placed{
-        *frame.aligned, frame.result,
+        *frame.aligned, static_result,
         sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
             frame.alignedRotation.transpose(),
         Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),

@@ -12,7 +12,8 @@ void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFil
     TraversabilityMapOptions result = *this;
     const auto keys = config_text::readSection(source, section);
     travel::applySectionKeys(keys, result.travel.params, result.map(),
-                             static_cast<travel::FilterSection&>(result.travel));
+                             static_cast<travel::FilterSection&>(result.travel),
+                             result.travel.tracking);
     try {
         result.validate();
     } catch (const travel::ConfigError& e) {
@@ -29,12 +30,10 @@ void TraversabilityMapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& t
 
 void TraversabilityMapOptions::loadFromFile(const std::string& path) {
     travel::Config config;
-    config.travel = travel.params;
-    config.filter = travel;
+    travel.toConfig(config);
     config.map = map();
     travel::applyConfigFile(path, config);
-    travel.params = config.travel;
-    static_cast<travel::FilterSection&>(travel) = config.filter;
+    travel.fromConfig(config);
     map() = config.map;
 }
 

@@ -1,6 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel_mrpt/CObservationTravelLabels.hpp"
 
+#include <mrpt/opengl/CArrow.h>
 #include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -23,7 +24,9 @@ IMPLEMENTS_SERIALIZABLE(CObservationTravelLabels, CObservation, travel_mrpt)
 namespace travel_mrpt {
 namespace {
 
-constexpr uint8_t kSerializationVersion = 0;
+// Version v stores travel::io's LabelledFrame layout v: 0 without tracking, 1 with track ids,
+// velocities and moving flags (issue 19). Every older version is still read.
+constexpr uint8_t kSerializationVersion = travel::io::kLabelledFrameLayout;
 
 /// The archive as the byte stream of travel::io's LabelledFrame codec.
 struct ArchiveSink final : travel::io::ByteSink {
@@ -68,9 +71,9 @@ void CObservationTravelLabels::serializeTo(mrpt::serialization::CArchive& out) c
 }
 
 void CObservationTravelLabels::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version != kSerializationVersion)
+    if (version > kSerializationVersion)
         throw std::runtime_error("CObservationTravelLabels: unknown version " +
-                                 std::to_string(version) + " (this build reads version " +
+                                 std::to_string(version) + " (this build reads versions 0.." +
                                  std::to_string(kSerializationVersion) + ")");
     ArchiveSource source(in);
     // A failed read leaves a consistent (empty) object behind.
@@ -84,7 +87,7 @@ void CObservationTravelLabels::serializeFrom(mrpt::serialization::CArchive& in, 
             if (!std::isfinite(v)) throw travel::InputError("non-finite sensor pose");
         sensorPose = mrpt::poses::CPose3D(pose[0], pose[1], pose[2], pose[3], pose[4], pose[5]);
         travel::io::readString(source, sourceClass, "source class");
-        travel::io::readLabelledFrame(source, *this, kMaxPoints);
+        travel::io::readLabelledFrame(source, *this, kMaxPoints, version);
     } catch (const travel::InputError& e) {
         forget();
         throw std::runtime_error(std::string("CObservationTravelLabels: ") + e.what());
@@ -104,9 +107,17 @@ void CObservationTravelLabels::getDescriptionAsText(std::ostream& o) const {
 
 // ---------------------------------------------------------------- 3-D view
 
+bool CObservationTravelLabels::drawsVelocityArrow(const travel::ClusterSummary& c) {
+    return c.moving || (c.track_id != 0 && c.velocity.norm() >= kMinArrowSpeed);
+}
+
 void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
     const std::size_t n = std::min({labels.size(), x.size(), y.size(), z.size()});
     const bool any_cluster = !clusters.empty();
+    // A tracked cluster is drawn in its track's colour, the same in every frame.
+    std::vector<uint32_t> colour_of_cluster(clusters.size());
+    for (std::size_t k = 0; k < clusters.size(); ++k)
+        colour_of_cluster[k] = travel::viz::clusterColour(clusters[k]);
 
     auto points = mrpt::opengl::CPointCloudColoured::Create();
     points->setName("travel_points");
@@ -118,7 +129,9 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
         if (c == PointClass::Invalid || labels[i] > static_cast<uint8_t>(PointClass::Outlier))
             continue;  // not drawn
         const uint32_t id = i < clusterId.size() ? clusterId[i] : 0;
-        const mrpt::img::TColor t = toTColor(travel::viz::pointColour(c, id, any_cluster));
+        const bool in_cluster = c == PointClass::NonGround && id > 0 && id <= clusters.size();
+        const mrpt::img::TColor t = toTColor(
+            in_cluster ? colour_of_cluster[id - 1] : travel::viz::pointColour(c, id, any_cluster));
         points->push_back(x[i], y[i], z[i], t.R / 255.f, t.G / 255.f, t.B / 255.f);
     }
     o.insert(points);
@@ -153,15 +166,30 @@ void CObservationTravelLabels::getVisualizationInto(mrpt::opengl::CSetOfObjects&
     }
     aligned->insert(nodes);
 
-    for (const travel::ClusterSummary& c : clusters) {
+    auto arrows = mrpt::opengl::CSetOfObjects::Create();
+    arrows->setName("travel_velocity_arrows");
+    for (std::size_t k = 0; k < clusters.size(); ++k) {
+        const travel::ClusterSummary& c = clusters[k];
+        const mrpt::img::TColor colour = toTColor(colour_of_cluster[k]);
         auto box = mrpt::opengl::CBox::Create(
             mrpt::math::TPoint3D(c.aabb_min.x(), c.aabb_min.y(), c.aabb_min.z()),
             mrpt::math::TPoint3D(c.aabb_max.x(), c.aabb_max.y(), c.aabb_max.z()), true, 1.f);
         // MRPT 2.5.8 draws wireframe boxes with the border colour, not the object colour.
-        box->setColor_u8(toTColor(clusterColour(c.id)));
-        box->setBoxBorderColor(toTColor(clusterColour(c.id)));
+        box->setColor_u8(colour);
+        box->setBoxBorderColor(colour);
         aligned->insert(box);
+        if (!drawsVelocityArrow(c)) continue;
+        // From the top of the box's centre to where the object will be in kArrowSeconds (the
+        // velocity is in the aligned axes, like the box).
+        const Eigen::Vector3f from(c.centroid.x(), c.centroid.y(), c.aabb_max.z());
+        const Eigen::Vector3f to = from + c.velocity * kArrowSeconds;
+        auto arrow = mrpt::opengl::CArrow::Create(from.x(), from.y(), from.z(), to.x(), to.y(),
+                                                  to.z(), 0.25f, 0.05f, 0.15f);
+        arrow->setName("track " + std::to_string(c.track_id));
+        arrow->setColor_u8(colour);
+        arrows->insert(arrow);
     }
+    aligned->insert(arrows);
     o.insert(aligned);
 }
 

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "travel/Preprocessing.hpp"
+#include "travel/tracking/FrameTracker.hpp"
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
@@ -40,6 +41,15 @@ Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3D& pose) {
     return T;
 }
 
+/// Heading of a rotation: the angle of its x axis in the xy plane.
+double yawOf(const Eigen::Matrix3d& R) {
+    return std::atan2(R(1, 0), R(0, 0));
+}
+
+Eigen::Matrix3d yawRotation(double yaw) {
+    return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
 bool sameRotation(const mrpt::poses::CPose3D& a, const mrpt::poses::CPose3D& b) {
     return (rotationOf(a) - rotationOf(b)).cwiseAbs().maxCoeff() < 1e-12;
 }
@@ -65,6 +75,7 @@ void TravelFilter::setOptions(const TravelFilterOptions& options) {
     label_regex_ = std::regex(options_.sensor_label, std::regex::ECMAScript);
     pipelines_.clear();
     noted_no_attitude_ = noted_no_velocity_ = noted_imu_time_ = noted_odometry_time_ = false;
+    noted_track_registration_ = noted_track_time_ = false;
     motion_.setVelocitySource(options_.velocity_source);
     motion_.setMaxAge(options_.max_motion_age);
     reset();
@@ -84,6 +95,8 @@ void TravelFilter::loadConfigFile(const std::string& path) {
 
 void TravelFilter::reset() {
     motion_.reset();
+    robot_pose_ = odometry_pose_ = PoseSample{};
+    trackers_.clear();
 }
 
 void TravelFilter::noteOnce(bool& flag, const std::string& message,
@@ -213,7 +226,43 @@ void TravelFilter::segment(TravelFrame& out) {
     sensor.pipeline->process(out.cloud, input, out.result);
     out.alignedRotation = sensor.pipeline->aligned().rotation;
     out.aligned = &sensor.pipeline->aligned();
+    out.tracked = out.egoFromPoses = false;
+    if (options_.track_objects) track(out);
     out.process_ms = msSince(process_start);
+}
+
+void TravelFilter::track(TravelFrame& out) {
+    if (out.timestamp == INVALID_TIMESTAMP) {
+        noteOnce(noted_track_time_,
+                 "'" + out.sensorLabel + "' without timestamp: its clusters are not tracked",
+                 mrpt::system::LVL_WARN);
+        return;
+    }
+    auto& tracker = trackers_[out.sensorLabel];
+    if (!tracker) tracker = std::make_unique<travel::FrameTracker>(options_.tracking);
+    const std::optional<Eigen::Isometry3d> robot = egoPoseAt(out.timestamp);
+    if (robot) {
+        // The aligned frame is levelled (z up), so only the robot's yaw turns it in the world:
+        // composing a planar pose (odometry: no roll, pitch) with the levelling rotation would
+        // tilt it by the robot's attitude. The pose the tracker gets is the sensor's position
+        // and that yaw, in the sensor's axes.
+        const Eigen::Isometry3d world_T_sensor = *robot * isometryOf(out.sensorPose);
+        const Eigen::Matrix3d aligned_R_sensor = out.alignedRotation.cast<double>();
+        const Eigen::Matrix3d world_R_aligned =
+            world_T_sensor.linear() * aligned_R_sensor.transpose();
+        out.worldTSensor.linear() = yawRotation(yawOf(world_R_aligned)) * aligned_R_sensor;
+        out.worldTSensor.translation() = world_T_sensor.translation();
+        out.egoFromPoses = true;
+    } else if (!noted_track_registration_) {
+        noteOnce(noted_track_registration_,
+                 "no robot poses or odometry: tracking takes the ego-motion from registering "
+                 "consecutive scans",
+                 mrpt::system::LVL_INFO);
+    }
+    out.worldTSensor =
+        tracker->update(seconds(out.timestamp), out.cloud, out.result.labels, out.alignedRotation,
+                        out.result.clusters, robot ? &out.worldTSensor : nullptr);
+    out.tracked = true;
 }
 
 const travel::AlignedCloud& TravelFilter::aligned(const std::string& sensor_label) const {
@@ -254,6 +303,7 @@ void TravelFilter::processOdometry(const mrpt::obs::CObservationOdometry& odomet
                  mrpt::system::LVL_WARN);
         return;
     }
+    setOdometryPose(mrpt::poses::CPose3D(odometry.odometry), odometry.timestamp);
     const auto& v = odometry.velocityLocal;
     motion_.addPlanarOdometry(seconds(odometry.timestamp), odometry.odometry.x(),
                               odometry.odometry.y(), odometry.odometry.phi(),
@@ -272,6 +322,45 @@ void TravelFilter::processAction(const mrpt::obs::CActionRobotMovement2D& action
 void TravelFilter::setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t) {
     if (t == INVALID_TIMESTAMP) return;
     motion_.addRobotPose(seconds(t), isometryOf(pose));
+    robot_pose_ = {true, true, t, isometryOf(pose)};
+}
+
+void TravelFilter::setOdometryPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t) {
+    odometry_pose_ = {true, t != INVALID_TIMESTAMP, t, isometryOf(pose)};
+}
+
+std::optional<Eigen::Isometry3d> TravelFilter::egoPoseAt(mrpt::Clock::time_point t) const {
+    // Untimed samples (odometry actions without a timestamp) count as current.
+    const auto fresh = [&](const PoseSample& s) {
+        return s.valid && (!s.timed || t == INVALID_TIMESTAMP ||
+                           std::abs(seconds(t) - seconds(s.t)) <= options_.max_motion_age);
+    };
+    const PoseSample* sample = fresh(robot_pose_)      ? &robot_pose_
+                               : fresh(odometry_pose_) ? &odometry_pose_
+                                                       : nullptr;
+    if (!sample) return std::nullopt;
+    Eigen::Isometry3d pose = sample->pose;
+    if (t == INVALID_TIMESTAMP) return pose;
+    const travel::MotionEstimate motion = motion_.estimateAt(seconds(t));
+    // A measured attitude gives the roll and pitch that planar poses (odometry) lack: the sensor,
+    // high on a pitching robot, moves back and forth by tenths of a metre with them.
+    if (motion.attitude) {
+        const Eigen::Matrix3d roll_pitch = yawRotation(-yawOf(*motion.attitude)) * *motion.attitude;
+        pose.linear() = yawRotation(yawOf(pose.linear())) * roll_pitch;
+    }
+    if (!sample->timed) return pose;
+    // Carried from the sample's time to t at the robot's velocity (robot frame), to first order.
+    const double dt = seconds(t) - seconds(sample->t);
+    if (dt != 0 && motion.linear_velocity && motion.angular_velocity) {
+        const Eigen::Vector3d rotation = *motion.angular_velocity * dt;
+        Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
+        if (rotation.norm() > 0)
+            step.linear() =
+                Eigen::AngleAxisd(rotation.norm(), rotation.normalized()).toRotationMatrix();
+        step.translation() = *motion.linear_velocity * dt;
+        pose = pose * step;
+    }
+    return pose;
 }
 
 travel::MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {

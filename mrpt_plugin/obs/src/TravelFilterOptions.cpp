@@ -12,18 +12,6 @@
 namespace travel_mrpt {
 namespace {
 
-void commit(const travel::Config& config, TravelFilterOptions& options) {
-    options.params = config.travel;
-    static_cast<travel::FilterSection&>(options) = config.filter;
-}
-
-travel::Config toConfig(const TravelFilterOptions& options) {
-    travel::Config config;
-    config.travel = options.params;
-    config.filter = options;
-    return config;
-}
-
 /// A scalar as text, whatever type it holds (parsed files hold strings; maps built in code may
 /// hold numbers or booleans), single-quoted for YAML so that it reads back as the same text.
 std::string quotedScalar(const mrpt::containers::yaml::node_t& node, const std::string& key) {
@@ -77,11 +65,24 @@ std::string yamlText(const mrpt::containers::yaml& cfg) {
 
 }  // namespace
 
+void TravelFilterOptions::fromConfig(const travel::Config& config) {
+    params = config.travel;
+    static_cast<travel::FilterSection&>(*this) = config.filter;
+    tracking = config.tracking;
+}
+
+void TravelFilterOptions::toConfig(travel::Config& config) const {
+    config.travel = params;
+    config.filter = *this;
+    config.tracking = tracking;
+}
+
 void TravelFilterOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                              const std::string& section) {
     TravelFilterOptions result = *this;
     const auto keys = config_text::readSection(source, section);
-    travel::applySectionKeys(keys, result.params, static_cast<travel::FilterSection&>(result));
+    travel::applySectionKeys(keys, result.params, static_cast<travel::FilterSection&>(result),
+                             result.tracking);
     try {
         result.params.validate();
         result.validate();
@@ -94,11 +95,12 @@ void TravelFilterOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
 void TravelFilterOptions::saveToConfigFile(mrpt::config::CConfigFileBase& target,
                                            const std::string& section) const {
     config_text::writeSection(target, section, params,
-                              static_cast<const travel::FilterSection&>(*this));
+                              static_cast<const travel::FilterSection&>(*this), tracking);
 }
 
 void TravelFilterOptions::loadFromYaml(const mrpt::containers::yaml& cfg) {
-    travel::Config config = toConfig(*this);
+    travel::Config config;
+    toConfig(config);
     if (!cfg.isNullNode() && !(cfg.isMap() && cfg.asMap().empty())) {
         travel::applyConfigText(yamlText(cfg), "YAML", config);
     }
@@ -107,13 +109,14 @@ void TravelFilterOptions::loadFromYaml(const mrpt::containers::yaml& cfg) {
     } catch (const std::exception& e) {
         throw travel::ConfigError(std::string("YAML: ") + e.what());
     }
-    commit(config, *this);
+    fromConfig(config);
 }
 
 void TravelFilterOptions::loadFromFile(const std::string& path) {
-    travel::Config config = toConfig(*this);
+    travel::Config config;
+    toConfig(config);
     travel::applyConfigFile(path, config);
-    commit(config, *this);
+    fromConfig(config);
 }
 
 }  // namespace travel_mrpt

@@ -64,12 +64,23 @@ class CObservationTravelLabels : public mrpt::obs::CObservation,
     }
     void getDescriptionAsText(std::ostream& o) const override;
     /// Points coloured by class / cluster at sensorPose, traversable nodes as translucent
-    /// triangles, a wire box per cluster. Invalid points are not drawn.
+    /// triangles, a wire box per cluster. Invalid points are not drawn. A tracked cluster
+    /// (track_id != 0) takes its track's colour, travel::viz::clusterColour(cluster), so an
+    /// object keeps its colour across frames; clusters with drawsVelocityArrow() get an arrow
+    /// (a CArrow named "track <id>" in the CSetOfObjects "travel_velocity_arrows") from the top
+    /// of the box to where the object will be kArrowSeconds later.
     void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+
+    /// The arrow spans the distance covered in this time [s].
+    static constexpr float kArrowSeconds = 1.f;
+    /// Tracked clusters slower than this [m/s] (and not flagged moving) get no arrow.
+    static constexpr float kMinArrowSpeed = 0.1f;
+    /// Moving clusters, and tracked ones at kMinArrowSpeed or faster.
+    static bool drawsVelocityArrow(const travel::ClusterSummary& c);
 };
 
 /// Colours used by getVisualizationInto() (0xRRGGBB), the same as the bird's-eye pictures.
-/// Clusters use travel_mrpt::clusterColour(id).
+/// Clusters use travel::viz::clusterColour(cluster) (their track's colour when tracked).
 constexpr uint32_t kGroundColour = 0x28A528;       // green
 constexpr uint32_t kOutlierColour = 0x003CFF;      // blue
 constexpr uint32_t kUnclusteredColour = 0x787878;  // grey: non-ground, in no cluster

@@ -24,8 +24,10 @@
 #include <mrpt/system/CTimeLogger.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <map>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <string>
 
@@ -42,6 +44,10 @@ class CObservationOdometry;
 class CActionRobotMovement2D;
 }  // namespace mrpt::obs
 
+namespace travel {
+class FrameTracker;
+}
+
 namespace travel_mrpt {
 
 /// One processed LiDAR frame. Reuse the same object across calls: no allocation once warm.
@@ -57,6 +63,13 @@ struct TravelFrame {
     mrpt::Clock::time_point timestamp;
     bool levelled = false;  ///< a robot attitude was applied
     bool deskewed = false;  ///< per-point times and a sensor velocity were applied
+    /// options().track_objects: result.clusters carry track ids, velocities and moving flags
+    /// (travel::Tracker); ego-motion from the robot poses / odometry (egoFromPoses), else from
+    /// registering consecutive scans. worldTSensor: the sensor pose the tracker used (world
+    /// frame of the poses, or of the first scan when registered).
+    bool tracked = false;
+    bool egoFromPoses = false;
+    Eigen::Isometry3d worldTSensor = Eigen::Isometry3d::Identity();
     /// The sensor velocity used for deskew (sensor frame), when deskewed.
     Eigen::Vector3d sensorLinearVelocity = Eigen::Vector3d::Zero();
     Eigen::Vector3d sensorAngularVelocity = Eigen::Vector3d::Zero();
@@ -100,10 +113,21 @@ class TravelFilter : public mrpt::system::COutputLogger {
     void processOdometry(const mrpt::obs::CObservationOdometry& odometry);
     /// Velocities of a CActionRobotMovement2D when it has them (and a timestamp).
     void processAction(const mrpt::obs::CActionRobotMovement2D& action);
-    /// Robot pose in the world (pose files, SensoryFrames): attitude and velocity source.
+    /// Robot pose in the world (pose files, SensoryFrames): attitude and velocity source, and
+    /// the ego-motion of tracking.
     void setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t);
-    /// Forget the motion state (not the pipelines).
+    /// Robot pose in the odometry frame (e.g. composed CActionRobotMovement2D increments; what
+    /// processOdometry() also records): the ego-motion of tracking when no robot pose is set.
+    /// t may be INVALID_TIMESTAMP (then taken as current).
+    void setOdometryPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t);
+    /// Forget the motion state and the tracks (not the pipelines).
     void reset();
+
+    /// The robot pose the tracker uses for a frame at time t: the newest robot pose (else
+    /// odometry pose) not older than max_motion_age, with the roll and pitch of the measured
+    /// attitude when there is one (IMU; planar odometry has none), carried to t with the robot's
+    /// velocity when known; nothing when neither pose is fresh.
+    std::optional<Eigen::Isometry3d> egoPoseAt(mrpt::Clock::time_point t) const;
 
     /// The motion the filter would use for a frame at time t (robot frame), for inspection.
     travel::MotionEstimate motionAt(mrpt::Clock::time_point t) const;
@@ -120,6 +144,8 @@ class TravelFilter : public mrpt::system::COutputLogger {
     SensorPipeline& pipelineFor(const std::string& label, const mrpt::poses::CPose3D& pose);
     /// Levels, deskews and segments out.cloud (sensorPose, sensorLabel, timestamp set).
     void segment(TravelFrame& out);
+    /// Fills the clusters' tracking fields of `out` (options_.track_objects).
+    void track(TravelFrame& out);
     /// Logs `message` the first time `flag` is false, then sets it (no per-frame strings).
     void noteOnce(bool& flag, const std::string& message, mrpt::system::VerbosityLevel level);
 
@@ -127,10 +153,20 @@ class TravelFilter : public mrpt::system::COutputLogger {
     std::regex label_regex_;
     std::map<std::string, SensorPipeline> pipelines_;
     travel::MotionEstimator motion_;
+    struct PoseSample {
+        bool valid = false;
+        bool timed = false;  ///< false: t unknown, taken as current
+        mrpt::Clock::time_point t{};
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    };
+    PoseSample robot_pose_, odometry_pose_;
+    /// One tracker per sensor label (its clusters are in that sensor's aligned frame).
+    std::map<std::string, std::unique_ptr<travel::FrameTracker>> trackers_;
     mrpt::system::CTimeLogger time_logger_{true, "TravelFilter"};
     // Each cause is logged once (until the options change).
     bool noted_no_attitude_ = false, noted_no_velocity_ = false;
     bool noted_imu_time_ = false, noted_odometry_time_ = false;
+    bool noted_track_registration_ = false, noted_track_time_ = false;
     std::string why_scratch_;
 };
 

@@ -27,8 +27,16 @@ using travel::velocitySourceFromString;
 
 struct TravelFilterOptions : public mrpt::config::CLoadableOptions, public travel::FilterSection {
     travel::Params params;  ///< libtravel parameters (deskew is params.deskew)
+    /// The tracker's parameters (section `tracking`), used when track_objects is set.
+    travel::TrackingParams tracking;
 
-    /// Flat ini section: `preset`, then filter keys and libtravel parameters (same names).
+    /// The sections the filter takes from a whole configuration (travel, filter, tracking), and
+    /// back: the one place that knows which they are.
+    void fromConfig(const travel::Config& config);
+    void toConfig(travel::Config& config) const;
+
+    /// Flat ini section: `preset`, then filter and tracking keys and libtravel parameters (same
+    /// names).
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                             const std::string& section) override;
     /// Writes every key (libtravel parameters then filter keys), doubles exactly.
@@ -41,8 +49,11 @@ struct TravelFilterOptions : public mrpt::config::CLoadableOptions, public trave
     /// travel::applyConfigFile (YAML or ini with sections [travel], [filter]).
     void loadFromFile(const std::string& path);
 
-    /// The filter section's rules (bad regex, max_motion_age <= 0...).
-    void validate() const { travel::FilterSection::validate(); }
+    /// The filter section's rules (bad regex, max_motion_age <= 0...) and the tracking one's.
+    void validate() const {
+        travel::FilterSection::validate();
+        tracking.validate();
+    }
 };
 
 }  // namespace travel_mrpt

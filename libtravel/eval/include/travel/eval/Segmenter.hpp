@@ -35,6 +35,10 @@ struct Segmentation {
     /// h_s the segmenter used (TRAVEL: its estimate under `auto`, Result::sensor_height): the
     /// height protocol A's vegetation rule must use.
     double sensor_height = 0;
+    /// TRAVEL's cluster summaries (aligned frame; empty for methods without TRAVEL's object
+    /// stage), and the rotation sensor -> aligned frame they are in (every method).
+    std::vector<ClusterSummary> clusters;
+    Eigen::Matrix3f aligned_rotation = Eigen::Matrix3f::Identity();
 };
 
 class Segmenter {

@@ -36,6 +36,14 @@ Eigen::Isometry3d readKittiCalibTr(const std::string& path);
 /// KITTI cam0 poses -> LiDAR poses in the first LiDAR frame: Tr^-1 * P_k * Tr.
 void kittiCameraToLidar(PoseTrajectory& trajectory, const Eigen::Isometry3d& tr);
 
+/// The LiDAR poses of a KITTI sequence folder (travel::ScanList::sequence_dir): its poses.txt
+/// (cam0) moved into the LiDAR frame with its calib.txt when there is one (else taken as LiDAR
+/// poses). Nothing when the folder has no poses.txt.
+std::optional<PoseTrajectory> readSequenceLidarPoses(const std::string& sequence_dir);
+
+/// One line of a KITTI pose file: the row-major 3x4 [R | t], 12 numbers ("%.9e"), '\n'.
+std::string kittiPoseLine(const Eigen::Isometry3d& pose);
+
 /// Pose at time t: linear / slerp interpolation between the bracketing poses; nothing when t
 /// is outside [first - tolerance, last + tolerance] or the bracketing poses are more than
 /// max_gap seconds apart.

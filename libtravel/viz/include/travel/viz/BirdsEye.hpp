@@ -55,6 +55,11 @@ struct Picture {
 /// Returned as 0xRRGGBB.
 uint32_t clusterColour(uint32_t id);
 
+/// Colour of a cluster in the 3-D views: its track's, clusterColour(track_id), when the
+/// tracker continued a track with it (so an object keeps its colour from frame to frame), else
+/// clusterColour(id).
+uint32_t clusterColour(const ClusterSummary& cluster);
+
 /// Colour (0xRRGGBB) of a point of class `c` in every picture and 3-D view: ground green,
 /// outliers blue, non-ground in its cluster's colour, grey when in no cluster while others are
 /// clustered (`any_cluster`), red when nothing is clustered. 0 for invalid points (not drawn).

@@ -1,0 +1,91 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// Objects that keep their identity across frames (docs/tracking.md). Each frame's clusters are
+// moved into a fixed world frame, associated with the tracks (TrackAssociation.hpp), and each
+// track's constant-velocity Kalman filter (ConstantVelocityModel.hpp) gives its velocity and
+// uncertainty. Rules, with the keys of the `tracking` configuration section:
+//  - birth: a cluster no track takes starts a tentative track (clusters longer than
+//    max_object_extent are not tracked);
+//  - confirmation: after confirm_hits associated frames; only then the track gets its id,
+//    1, 2, ... in the order of confirmation (within one frame, in the order of birth);
+//  - end: a tentative track at its first miss, a confirmed one after max_misses consecutive
+//    misses (meanwhile it coasts on its prediction and can be picked up again, same id);
+//  - position: the centre of the largest box the track has seen, placed on the visible faces
+//    (ObjectExtent.hpp); the centroid for tracks longer than full_box_max_length;
+//  - moving: set once the speed exceeds moving_speed_on for moving_frames_on frames in a row,
+//    cleared when it falls below moving_speed_off.
+// Deterministic: tracks are kept in birth order and every choice has a fixed tie order, so the
+// same frames give the same ids. No MRPT, Eigen only.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "travel/Clusters.hpp"
+#include "travel/Config.hpp"
+#include "travel/tracking/ConstantVelocityModel.hpp"
+#include "travel/tracking/TrackAssociation.hpp"
+
+namespace travel {
+
+struct Track {
+    uint32_t id = 0;     ///< 0 while tentative, then 1, 2, ... (never reused)
+    uint64_t birth = 0;  ///< serial number of its birth (the tie order)
+    bool confirmed = false;
+    bool moving = false;
+    int hits = 0;                  ///< associated frames
+    int misses = 0;                ///< consecutive frames without a cluster
+    int fast_frames = 0;           ///< consecutive frames above moving_speed_on
+    double last_time = 0;          ///< [s] time of the last update
+    ConstantVelocityModel motion;  ///< world-frame xy position and velocity
+    WorldBox box;  ///< last associated cluster's box, world frame (centre: filtered position)
+    ObjectExtent extent;  ///< the largest box seen: locates partial views
+    double z = 0;         ///< last measured centroid height, world frame [m]
+    int cluster = -1;     ///< index of this frame's cluster in the last update() (-1: missed)
+
+    Eigen::Vector2d position() const { return motion.position(); }
+    Eigen::Vector2d velocity() const { return motion.velocity(); }
+};
+
+class Tracker {
+  public:
+    explicit Tracker(const TrackingParams& params = {});
+    /// Forgets every track; ids start again at 1.
+    void reset();
+
+    /// world_T_aligned: this scan's aligned frame (travel::Result's frame) in a fixed world
+    /// frame; t [s], non-decreasing. Fills track_id / velocity / velocity_sigma / moving of each
+    /// cluster (velocity in the aligned frame's axes, ego-motion removed; zero for clusters of
+    /// no confirmed track).
+    void update(double t, const Eigen::Isometry3d& world_T_aligned,
+                std::vector<ClusterSummary>& clusters);
+
+    /// The live tracks (tentative and confirmed), in birth order.
+    const std::vector<Track>& tracks() const { return tracks_; }
+    const TrackingParams& params() const { return params_; }
+    /// Track ids given so far (the highest id).
+    uint32_t idsGiven() const { return next_id_ - 1; }
+
+  private:
+    void predictTracks(double t);
+    void endLostTracks();
+    void updateMovingFlag(Track& track) const;
+    /// Where `track` locates `cluster`: the centre of its full box on the visible faces, or the
+    /// centroid for long tracks (full_box_max_length).
+    Eigen::Vector2d positionOf(const Track& track, const WorldBox& cluster) const;
+    void fillCluster(const Track& track, const Eigen::Matrix3d& aligned_R_world,
+                     ClusterSummary& cluster) const;
+
+    TrackingParams params_;
+    std::vector<Track> tracks_;
+    uint32_t next_id_ = 1;
+    uint64_t next_birth_ = 0;
+    Eigen::Vector2d sensor_{0, 0};  ///< this frame's sensor position, world xy
+    // Scratch reused across frames.
+    std::vector<WorldBox> track_boxes_, cluster_boxes_;
+    std::vector<AssociationPair> pairs_;
+    std::vector<int> track_to_cluster_, cluster_to_track_;
+};
+
+}  // namespace travel

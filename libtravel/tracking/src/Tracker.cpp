@@ -1,0 +1,176 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel/tracking/Tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace travel {
+namespace {
+
+/// The cluster's box moved into the world frame (the axis-aligned box of its rotated box);
+/// the centre is NaN for clusters too long to track, so that no gate passes.
+WorldBox worldBox(const ClusterSummary& c, const Eigen::Isometry3d& world_T_aligned,
+                  double max_extent) {
+    WorldBox box;
+    const Eigen::Matrix3d R = world_T_aligned.linear();
+    const Eigen::Vector3d lo = c.aabb_min.cast<double>(), hi = c.aabb_max.cast<double>();
+    const Eigen::Vector3d mid = world_T_aligned * (0.5 * (lo + hi));
+    const Eigen::Vector3d half = R.cwiseAbs() * (0.5 * (hi - lo));
+    box.min = mid - half;
+    box.max = mid + half;
+    box.centre = (world_T_aligned * c.centroid.cast<double>()).head<2>();
+    box.size = c.obb_extent.cast<double>().norm();
+    box.flat.centre = (world_T_aligned * c.obb_center.cast<double>()).head<2>();
+    box.flat.yaw = c.obb_yaw + std::atan2(R(1, 0), R(0, 0));
+    box.flat.size = c.obb_extent.head<2>().cast<double>();
+    if (!(c.obb_extent.x() <= max_extent))
+        box.centre.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return box;
+}
+
+}  // namespace
+
+Tracker::Tracker(const TrackingParams& params) : params_(params) {
+    params_.validate();
+}
+
+void Tracker::reset() {
+    tracks_.clear();
+    next_id_ = 1;
+    next_birth_ = 0;
+}
+
+void Tracker::predictTracks(double t) {
+    track_boxes_.clear();
+    for (Track& track : tracks_) {
+        const Eigen::Vector2d before = track.position();
+        track.motion.predict(t - track.last_time, params_.acceleration_sigma);
+        track.last_time = std::max(track.last_time, t);
+        const Eigen::Vector2d shift = track.position() - before;
+        track.box.min.head<2>() += shift;
+        track.box.max.head<2>() += shift;
+        track.box.centre = track.position();
+        // The predicted box is only as sure as the predicted position: grown by 2 sigma, so a
+        // young track (velocity still unknown) of a thin, fast object (a car's front face) is
+        // not lost on its second frame.
+        WorldBox gate_box = track.box;
+        const double grow = 2.0 * std::sqrt(std::max(track.motion.covariance()(0, 0),
+                                                     track.motion.covariance()(1, 1)));
+        gate_box.min.head<2>().array() -= grow;
+        gate_box.max.head<2>().array() += grow;
+        track_boxes_.push_back(gate_box);
+    }
+}
+
+Eigen::Vector2d Tracker::positionOf(const Track& track, const WorldBox& cluster) const {
+    if (track.extent.box().size.x() > params_.full_box_max_length) return cluster.centre;
+    return track.extent.centreOf(cluster.flat, sensor_);
+}
+
+void Tracker::updateMovingFlag(Track& track) const {
+    const double speed = track.velocity().norm();
+    track.fast_frames = speed > params_.moving_speed_on ? track.fast_frames + 1 : 0;
+    if (!track.moving && track.fast_frames >= params_.moving_frames_on) track.moving = true;
+    if (track.moving && speed < params_.moving_speed_off) track.moving = false;
+}
+
+void Tracker::endLostTracks() {
+    const int max_misses = params_.max_misses;
+    tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
+                                 [max_misses](const Track& track) {
+                                     return track.misses >= (track.confirmed ? max_misses : 1);
+                                 }),
+                  tracks_.end());
+}
+
+void Tracker::fillCluster(const Track& track, const Eigen::Matrix3d& aligned_R_world,
+                          ClusterSummary& cluster) const {
+    const Eigen::Vector3d v(track.velocity().x(), track.velocity().y(), 0.0);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    cov.topLeftCorner<2, 2>() = track.motion.velocityCovariance();
+    const Eigen::Matrix3d aligned_cov = aligned_R_world * cov * aligned_R_world.transpose();
+    cluster.track_id = track.id;
+    cluster.velocity = (aligned_R_world * v).cast<float>();
+    cluster.velocity_sigma = aligned_cov.diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>();
+    cluster.moving = track.moving;
+}
+
+void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
+                     std::vector<ClusterSummary>& clusters) {
+    cluster_boxes_.clear();
+    for (const ClusterSummary& c : clusters)
+        cluster_boxes_.push_back(worldBox(c, world_T_aligned, params_.max_object_extent));
+    predictTracks(t);
+    sensor_ = world_T_aligned.translation().head<2>();
+    const AssociationGates gates{params_.gate_distance, params_.gate_box_margin,
+                                 params_.gate_size_ratio};
+    associateNearest(
+        tracks_.size(), clusters.size(),
+        [&](uint32_t t, uint32_t c) {
+            return gatedDistance(track_boxes_[t], cluster_boxes_[c],
+                                 positionOf(tracks_[t], cluster_boxes_[c]), gates);
+        },
+        pairs_, track_to_cluster_, cluster_to_track_);
+
+    for (std::size_t k = 0; k < tracks_.size(); ++k) {
+        Track& track = tracks_[k];
+        track.cluster = track_to_cluster_[k];
+        if (track.cluster < 0) {
+            ++track.misses;
+            continue;
+        }
+        const WorldBox& measured = cluster_boxes_[track.cluster];
+        // A larger view moves our idea of the object's centre, not the object: the state is
+        // re-anchored by that shift, so the velocity does not see it.
+        const Eigen::Vector2d before = positionOf(track, measured);
+        track.extent.update(measured.flat);
+        const Eigen::Vector2d position = positionOf(track, measured);
+        track.motion.shift(position - before);
+        track.motion.correct(position, params_.position_sigma);
+        track.box = measured;
+        track.box.centre = track.position();
+        track.z = (world_T_aligned * clusters[track.cluster].centroid.cast<double>()).z();
+        ++track.hits;
+        track.misses = 0;
+        updateMovingFlag(track);
+    }
+    endLostTracks();
+    // Confirmation in birth order, so ids follow the order of birth within a frame.
+    for (Track& track : tracks_) {
+        if (track.confirmed || track.hits < params_.confirm_hits) continue;
+        track.confirmed = true;
+        track.id = next_id_++;
+    }
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+        if (cluster_to_track_[c] >= 0 || std::isnan(cluster_boxes_[c].centre.x())) continue;
+        Track track;
+        track.birth = next_birth_++;
+        track.last_time = t;
+        track.extent.update(cluster_boxes_[c].flat);
+        track.motion.start(positionOf(track, cluster_boxes_[c]), params_.position_sigma,
+                           params_.initial_velocity_sigma);
+        track.box = cluster_boxes_[c];
+        track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();
+        track.hits = 1;
+        track.cluster = static_cast<int>(c);
+        if (params_.confirm_hits <= 1) {
+            track.confirmed = true;
+            track.id = next_id_++;
+        }
+        tracks_.push_back(track);
+    }
+
+    const Eigen::Matrix3d aligned_R_world = world_T_aligned.linear().transpose();
+    for (ClusterSummary& c : clusters) {
+        c.track_id = 0;
+        c.velocity.setZero();
+        c.velocity_sigma.setZero();
+        c.moving = false;
+    }
+    for (const Track& track : tracks_)
+        if (track.confirmed && track.cluster >= 0)
+            fillCluster(track, aligned_R_world, clusters[track.cluster]);
+}
+
+}  // namespace travel
