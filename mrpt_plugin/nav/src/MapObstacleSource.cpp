@@ -1,0 +1,140 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+#include "travel_mrpt/MapObstacleSource.hpp"
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <limits>
+#include <stdexcept>
+
+#include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
+
+namespace travel_mrpt {
+
+namespace {
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+double threadCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+}
+}  // namespace
+
+MapObstacleSource::MapObstacleSource(const TraversabilityMapOptions& map,
+                                     const travel::NavSection& nav, const MapSourceOptions& options)
+    : options_(options), map_(std::make_unique<CTraversabilityMap>(map)), rule_(nav) {
+    if (!(options.horizon > 0) || !(options.margin >= 0))
+        throw std::invalid_argument("map obstacle source: horizon must be > 0 and margin >= 0");
+    obstacles_grid_.reset(map);
+    height_.assign(obstacles_grid_.cellCount(), 0.f);
+    frame_height_.assign(obstacles_grid_.cellCount(), kNaN);
+}
+
+MapObstacleSource::~MapObstacleSource() = default;
+
+bool MapObstacleSource::obstacleCell(long cell) const {
+    return obstacles_grid_.observed(cell) &&
+           obstacles_grid_.logodds(cell) > map_->options().obstacle_threshold;
+}
+
+void MapObstacleSource::plannerGrid(std::vector<travel::CellState>& states,
+                                    std::vector<float>& slopes) const {
+    const std::size_t n = obstacles_grid_.cellCount();
+    states.resize(n), slopes.resize(n);
+    const travel::TraversabilityGrid& grid = map_->grid();
+    for (std::size_t c = 0; c < n; ++c) {
+        states[c] = obstacleCell(long(c)) ? travel::CellState::Obstacle : map_->state(long(c));
+        slopes[c] = grid.observed(long(c)) ? grid.slopeDeg(long(c)) : kNaN;
+    }
+}
+
+void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+    if (frame.travel == nullptr || frame.result == nullptr || frame.aligned == nullptr)
+        throw std::invalid_argument(
+            "map obstacle source: the frame has no TravelFrame, TRAVEL result or aligned cloud");
+    const Eigen::Isometry3d& robot = frame.robotPose;
+    const double cpu_start = threadCpuMs();
+    auto start = Clock::now();
+    map_->fuseFrame(*frame.travel,
+                    mrpt::poses::CPose3D::FromRotationAndTranslation(
+                        mrpt::math::CMatrixDouble33(robot.linear()),
+                        mrpt::math::TVector3D(robot.translation().x(), robot.translation().y(),
+                                              robot.translation().z())));
+    map_ms_ = msSince(start);
+    start = Clock::now();
+
+    // TRAVEL's obstacles, levelled robot frame (xy from the robot origin, yaw only).
+    frame_points_.clear();
+    rule_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, frame_points_);
+    const double yaw = std::atan2(robot.linear()(1, 0), robot.linear()(0, 0));
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    const double rx = robot.translation().x(), ry = robot.translation().y();
+
+    // Ground of this frame (free evidence) and the obstacles, into the obstacle grid.
+    const CTraversabilityMap& m = *map_;
+    const mrpt::poses::CPose3D sensor_in_world =
+        mrpt::poses::CPose3D::FromRotationAndTranslation(
+            mrpt::math::CMatrixDouble33(robot.linear()),
+            mrpt::math::TVector3D(rx, ry, robot.translation().z())) +
+        frame.travel->sensorPose;
+    const Eigen::Matrix3f to_world = sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
+                                     frame.travel->alignedRotation.transpose();
+    const Eigen::Vector3f origin(float(sensor_in_world.x()), float(sensor_in_world.y()),
+                                 float(sensor_in_world.z()));
+    const travel::AlignedCloud& a = *frame.aligned;
+    const auto& labels = frame.result->labels;
+    obstacles_grid_.beginFrame();
+    for (std::size_t i = 0, n = std::min(a.x.size(), labels.size()); i < n; ++i) {
+        if (!a.valid[i] || labels[i] != travel::PointClass::Ground) continue;
+        const Eigen::Vector3f pw = to_world * Eigen::Vector3f(a.x[i], a.y[i], a.z[i]) + origin;
+        obstacles_grid_.addGround(pw.x(), pw.y(), pw.z(), kNaN);
+    }
+    frame_cells_.clear();
+    for (std::size_t i = 0; i < frame_points_.size(); ++i) {
+        const double wx = rx + c * frame_points_.x[i] - s * frame_points_.y[i];
+        const double wy = ry + s * frame_points_.x[i] + c * frame_points_.y[i];
+        const long cell = obstacles_grid_.cellIndex(wx, wy);
+        if (cell < 0) continue;
+        obstacles_grid_.addObstacle(wx, wy);
+        float& h = frame_height_[cell];
+        if (std::isnan(h)) frame_cells_.push_back(cell), h = frame_points_.z[i];
+        h = std::max(h, frame_points_.z[i]);
+    }
+    obstacles_grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), m.options());
+    for (long cell : frame_cells_) height_[cell] = frame_height_[cell], frame_height_[cell] = kNaN;
+
+    // The obstacle cells within the horizon, grown by the margin, into the robot frame.
+    const GridGeometry& g = m.options();
+    const double res = g.resolution, half = 0.5 * res + options_.margin;
+    const double r2 = options_.horizon * options_.horizon;
+    const int reach = int(std::ceil(options_.horizon / res));
+    const int cx = int(std::floor((rx - g.min_x) / res)),
+              cy = int(std::floor((ry - g.min_y) / res));
+    static constexpr double kCorner[5][2] = {{0, 0}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int iy = std::max(0, cy - reach); iy <= std::min(obstacles_grid_.sizeY() - 1, cy + reach);
+         ++iy)
+        for (int ix = std::max(0, cx - reach);
+             ix <= std::min(obstacles_grid_.sizeX() - 1, cx + reach); ++ix) {
+            const long cell = obstacles_grid_.cellIndex(ix, iy);
+            if (!obstacleCell(cell)) continue;
+            const double dx = obstacles_grid_.cellCenterX(ix) - rx,
+                         dy = obstacles_grid_.cellCenterY(iy) - ry;
+            if (dx * dx + dy * dy > r2) continue;
+            const float z = height_[cell];
+            for (const auto& k : kCorner) {
+                const double px = dx + k[0] * half, py = dy + k[1] * half;
+                out.push_back(float(c * px + s * py), float(-s * px + c * py), z);
+            }
+        }
+    sensing_ms_ = msSince(start);
+    cpu_ms_ = threadCpuMs() - cpu_start;
+}
+
+}  // namespace travel_mrpt
