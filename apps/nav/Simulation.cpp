@@ -196,23 +196,6 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-/// The map source's chain for this world: TRAVEL as the other sources run it, a grid over the
-/// world's extent, TRAVEL's obstacle rule with the run's nav keys (the map is the memory).
-std::unique_ptr<travel_mrpt::TravelMapNavigation> makeMapChain(const World& world,
-                                                               const SimOptions& o) {
-    travel_mrpt::TravelMapNavigationOptions c;
-    c.filter.params = o.travel;
-    c.filter.velocity_source = travel_mrpt::VelocitySource::None;
-    const Eigen::Vector4d ext = worldExtent(world);
-    c.map.min_x = ext[0] - 1.0, c.map.min_y = ext[1] - 1.0;
-    c.map.max_x = ext[2] + 1.0, c.map.max_y = ext[3] + 1.0;
-    c.map.resolution = o.map_resolution;
-    c.map.max_ray_length = o.lidar.max_range;
-    c.nav = o.nav;
-    c.nav.memory_seconds = 0.0;
-    return std::make_unique<travel_mrpt::TravelMapNavigation>(c);
-}
-
 /// The final map for the picture: the planner's view of each cell.
 void snapshotMap(const travel_mrpt::MapObstacleSource& source, RunReport& r) {
     std::vector<travel::CellState> states;
@@ -227,6 +210,20 @@ void snapshotMap(const travel_mrpt::MapObstacleSource& source, RunReport& r) {
 }
 
 }  // namespace
+
+travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world, const SimOptions& o) {
+    travel_mrpt::TravelMapNavigationOptions c;
+    c.filter.params = o.travel;
+    c.filter.velocity_source = travel_mrpt::VelocitySource::None;
+    const Eigen::Vector4d ext = worldExtent(world);
+    c.map.min_x = ext[0] - 1.0, c.map.min_y = ext[1] - 1.0;
+    c.map.max_x = ext[2] + 1.0, c.map.max_y = ext[3] + 1.0;
+    c.map.resolution = o.map_resolution;
+    c.map.max_ray_length = o.lidar.max_range;
+    c.nav = o.nav;
+    c.nav.memory_seconds = 0.0;
+    return c;
+}
 
 SimTravel::SimTravel(const travel::Params& params)
     : filter_(std::make_unique<travel_mrpt::TravelFilter>()),
@@ -258,7 +255,8 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
     auto source = makeSource(o);
     // The map source: the library's chain (filter -> map -> planner -> waypoints).
     std::unique_ptr<travel_mrpt::TravelMapNavigation> chain;
-    if (o.source == SourceKind::Map) chain = makeMapChain(world, o);
+    if (o.source == SourceKind::Map)
+        chain = std::make_unique<travel_mrpt::TravelMapNavigation>(mapChainOptions(world, o));
 
     // The navigator writes PTG caches and its log into a directory of its own, under TMPDIR
     // (else /tmp), removed at the end, on errors and on Ctrl-C (travel::apps::TempDir).

@@ -24,6 +24,7 @@
 #include "travel/Params.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel_mrpt/ObstacleSource.hpp"
+#include "travel_mrpt/TravelMapNavigation.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
 namespace travel_mrpt {
@@ -133,6 +134,12 @@ class SimTravel {
     std::unique_ptr<travel_mrpt::TravelFilter> filter_;
     std::unique_ptr<travel_mrpt::TravelFrame> frame_;
 };
+
+/// The map source's chain options for `world`: TRAVEL as the other sources run it, a grid over
+/// the world's extent (+1 m) at map_resolution, TRAVEL's obstacle rule with options.nav (the
+/// map is the memory: no memory_seconds).
+travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world,
+                                                        const SimOptions& options);
 
 /// Runs one closed loop. Throws std::runtime_error on configuration errors.
 RunReport runSimulation(const World& world, const SimOptions& options);

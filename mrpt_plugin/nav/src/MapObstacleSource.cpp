@@ -3,6 +3,7 @@
 
 #include <mrpt/poses/CPose3D.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -16,6 +17,8 @@ namespace travel_mrpt {
 
 namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+/// [m] longest stretch of a ground ray carved free before its hit (see compute()).
+constexpr double kMaxCarve = 1.0;
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -30,11 +33,14 @@ double threadCpuMs() {
 MapObstacleSource::MapObstacleSource(const TraversabilityMapOptions& map,
                                      const travel::NavSection& nav, const MapSourceOptions& options)
     : options_(options), map_(std::make_unique<CTraversabilityMap>(map)), rule_(nav) {
-    if (!(options.horizon > 0) || !(options.margin >= 0))
-        throw std::invalid_argument("map obstacle source: horizon must be > 0 and margin >= 0");
+    if (!(options.horizon > 0) || !(options.margin >= 0) || !(options.column_step > 0))
+        throw std::invalid_argument(
+            "map obstacle source: horizon and column_step must be > 0, margin >= 0");
     obstacles_grid_.reset(map);
-    height_.assign(obstacles_grid_.cellCount(), 0.f);
-    frame_height_.assign(obstacles_grid_.cellCount(), kNaN);
+    low_.assign(obstacles_grid_.cellCount(), 0.f);
+    high_.assign(obstacles_grid_.cellCount(), 0.f);
+    frame_low_.assign(obstacles_grid_.cellCount(), kNaN);
+    frame_high_.assign(obstacles_grid_.cellCount(), kNaN);
 }
 
 MapObstacleSource::~MapObstacleSource() = default;
@@ -90,11 +96,28 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
                                  float(sensor_in_world.z()));
     const travel::AlignedCloud& a = *frame.aligned;
     const auto& labels = frame.result->labels;
+    // Free evidence: a ground hit, and the cells its ray crossed lower than max_step_height
+    // above the hit (flat ground assumed between; at most kMaxCarve back): anything the robot
+    // cannot climb standing there would have stopped the ray. The rings of a LiDAR hit the
+    // ground metres apart far out: without this, cells between rings never get evidence.
+    const double res = m.options().resolution;
+    const double climb = rule_.options().max_step_height;
+    const double near2 = (options_.horizon + kMaxCarve) * (options_.horizon + kMaxCarve);
     obstacles_grid_.beginFrame();
     for (std::size_t i = 0, n = std::min(a.x.size(), labels.size()); i < n; ++i) {
         if (!a.valid[i] || labels[i] != travel::PointClass::Ground) continue;
         const Eigen::Vector3f pw = to_world * Eigen::Vector3f(a.x[i], a.y[i], a.z[i]) + origin;
         obstacles_grid_.addGround(pw.x(), pw.y(), pw.z(), kNaN);
+        const double ux = double(origin.x()) - pw.x(), uy = double(origin.y()) - pw.y();
+        const double reach2 = ux * ux + uy * uy, drop = double(origin.z()) - pw.z();
+        if (drop <= 0 || reach2 < 1e-6 ||
+            (pw.x() - rx) * (pw.x() - rx) + (pw.y() - ry) * (pw.y() - ry) > near2)
+            continue;
+        const double reach = std::sqrt(reach2);
+        const double back = std::min({climb * reach / drop, kMaxCarve, reach});
+        for (double d = res; d <= back; d += res)
+            obstacles_grid_.addGround(pw.x() + ux * d / reach, pw.y() + uy * d / reach, pw.z(),
+                                      kNaN);
     }
     frame_cells_.clear();
     for (std::size_t i = 0; i < frame_points_.size(); ++i) {
@@ -103,21 +126,26 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
         const long cell = obstacles_grid_.cellIndex(wx, wy);
         if (cell < 0) continue;
         obstacles_grid_.addObstacle(wx, wy);
-        float& h = frame_height_[cell];
-        if (std::isnan(h)) frame_cells_.push_back(cell), h = frame_points_.z[i];
-        h = std::max(h, frame_points_.z[i]);
+        const float z = frame_points_.z[i];
+        float &lo = frame_low_[cell], &hi = frame_high_[cell];
+        if (std::isnan(lo)) frame_cells_.push_back(cell), lo = hi = z;
+        lo = std::min(lo, z), hi = std::max(hi, z);
     }
     obstacles_grid_.endFrame(mrpt::Clock::toDouble(frame.timestamp), m.options());
-    for (long cell : frame_cells_) height_[cell] = frame_height_[cell], frame_height_[cell] = kNaN;
+    for (long cell : frame_cells_) {
+        low_[cell] = frame_low_[cell], high_[cell] = frame_high_[cell];
+        frame_low_[cell] = frame_high_[cell] = kNaN;
+    }
 
     // The obstacle cells within the horizon, grown by the margin, into the robot frame.
     const GridGeometry& g = m.options();
-    const double res = g.resolution, half = 0.5 * res + options_.margin;
+    const double half = 0.5 * res + options_.margin;
     const double r2 = options_.horizon * options_.horizon;
     const int reach = int(std::ceil(options_.horizon / res));
     const int cx = int(std::floor((rx - g.min_x) / res)),
               cy = int(std::floor((ry - g.min_y) / res));
-    static constexpr double kCorner[5][2] = {{0, 0}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    static constexpr double kCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    const float step = float(options_.column_step);
     for (int iy = std::max(0, cy - reach); iy <= std::min(obstacles_grid_.sizeY() - 1, cy + reach);
          ++iy)
         for (int ix = std::max(0, cx - reach);
@@ -127,10 +155,12 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
             const double dx = obstacles_grid_.cellCenterX(ix) - rx,
                          dy = obstacles_grid_.cellCenterY(iy) - ry;
             if (dx * dx + dy * dy > r2) continue;
-            const float z = height_[cell];
+            const float lo = low_[cell], hi = high_[cell];
             for (const auto& k : kCorner) {
                 const double px = dx + k[0] * half, py = dy + k[1] * half;
-                out.push_back(float(c * px + s * py), float(-s * px + c * py), z);
+                const float qx = float(c * px + s * py), qy = float(-s * px + c * py);
+                for (float z = lo; z < hi; z += step) out.push_back(qx, qy, z);
+                out.push_back(qx, qy, hi);
             }
         }
     sensing_ms_ = msSince(start);

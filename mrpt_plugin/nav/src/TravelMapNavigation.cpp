@@ -66,8 +66,7 @@ void TravelMapNavigation::setGoal(const Eigen::Vector2d& goal, double tolerance)
     path_.clear(), progress_ = 0;
 }
 
-bool TravelMapNavigation::updatePlan(mrpt::nav::CWaypointsNavigator& navigator,
-                                     const Eigen::Vector2d& robot) {
+bool TravelMapNavigation::replan(const Eigen::Vector2d& robot) {
     if (!has_goal_) return false;
     const auto start = std::chrono::steady_clock::now();
     source_->plannerGrid(states_, slopes_);
@@ -78,7 +77,7 @@ bool TravelMapNavigation::updatePlan(mrpt::nav::CWaypointsNavigator& navigator,
             progress_ = i;
     const bool first = history_.empty();
     const bool retry = path_.empty() && frames_since_plan_ >= kRetryFrames;
-    bool send = false;
+    bool changed = false;
     if (first || retry || (!path_.empty() && planner_.blocked(path_, progress_, robot))) {
         frames_since_plan_ = 0;
         std::vector<Eigen::Vector2d> path;
@@ -90,23 +89,30 @@ bool TravelMapNavigation::updatePlan(mrpt::nav::CWaypointsNavigator& navigator,
             if (first) history_.push_back({});
         }
         progress_ = 0;
-        send = !path_.empty() || first;
-    }
-    if (send) {
-        mrpt::nav::TWaypointSequence seq;
-        const std::vector<Eigen::Vector2d> points =
-            path_.empty() ? std::vector<Eigen::Vector2d>{goal_} : planner_.waypoints(path_);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const bool last = i + 1 == points.size();
-            seq.waypoints.emplace_back(points[i].x(), points[i].y(),
-                                       last ? goal_tolerance_ : options_.waypoint_tolerance,
-                                       /*allow_skip=*/!last);
-        }
-        navigator.navigateWaypoints(seq);
+        changed = !path_.empty() || first;
     }
     plan_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return send;
+    return changed;
+}
+
+std::vector<Eigen::Vector2d> TravelMapNavigation::waypoints() const {
+    return path_.empty() ? std::vector<Eigen::Vector2d>{goal_} : planner_.waypoints(path_);
+}
+
+bool TravelMapNavigation::updatePlan(mrpt::nav::CWaypointsNavigator& navigator,
+                                     const Eigen::Vector2d& robot) {
+    if (!replan(robot)) return false;
+    mrpt::nav::TWaypointSequence seq;
+    const std::vector<Eigen::Vector2d> points = waypoints();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const bool last = i + 1 == points.size();
+        seq.waypoints.emplace_back(points[i].x(), points[i].y(),
+                                   last ? goal_tolerance_ : options_.waypoint_tolerance,
+                                   /*allow_skip=*/!last);
+    }
+    navigator.navigateWaypoints(seq);
+    return true;
 }
 
 void TravelMapNavigation::saveMap(const std::string& prefix) const {

@@ -11,8 +11,9 @@
 //      frame; a cell with reported obstacle points gains logodds_obstacle, a cell with only
 //      ground points in a later frame loses logodds_ground).
 // The navigator gets, in the levelled robot frame, every cell of the obstacle grid within
-// `horizon` whose log-odds exceed obstacle_threshold, as its square grown by `margin` (corners
-// and centre), at the height TRAVEL last reported there.
+// `horizon` whose log-odds exceed obstacle_threshold, as its square grown by `margin` (its
+// corners), in a column from the lowest to the highest height above the local ground TRAVEL
+// last reported there (every column_step).
 //
 // Clearing is by free evidence only (clear-on-free): a cell is forgotten once later frames see
 // ground there (from +3.5, the clamp, 8 ground-only frames at -0.4 bring it under +0.5). No
@@ -38,6 +39,10 @@ struct MapSourceOptions {
     /// [m] each obstacle cell is reported as its square grown by this much: the navigator passes
     /// reported edges within a few cm, and a cell centre can lie half a cell inside the obstacle.
     double margin = 0.1;
+    /// [m] a cell is reported as a column from the lowest to the highest height TRAVEL last
+    /// reported in it, one layer of points every column_step: keep it at most the robot's
+    /// shortest height level, so that a wall is in every level it spans.
+    double column_step = 0.25;
 };
 
 class MapObstacleSource : public ObstacleSource {
@@ -58,8 +63,10 @@ class MapObstacleSource : public ObstacleSource {
     const travel::TraversabilityGrid& obstacleGrid() const { return obstacles_grid_; }
     /// The obstacle grid's cell holds an obstacle (log-odds above obstacle_threshold).
     bool obstacleCell(long cell) const;
-    /// Height above the local ground TRAVEL last reported in the cell [m] (0: none).
-    float obstacleHeight(long cell) const { return height_[cell]; }
+    /// Lowest and highest heights above the local ground TRAVEL reported in the cell in the
+    /// last frame that saw obstacle points there [m] (0, 0: none yet).
+    float obstacleLow(long cell) const { return low_[cell]; }
+    float obstacleHigh(long cell) const { return high_[cell]; }
     /// Per cell, what a planner needs: Obstacle where the obstacle grid says so, else the map's
     /// state (Traversable / Unknown; the map's own Obstacle cells stay Obstacle); the map's
     /// terrain slope [deg] (NaN where unknown).
@@ -80,8 +87,8 @@ class MapObstacleSource : public ObstacleSource {
     travel::TravelObstacles rule_;
     travel::ObstaclePointCloud frame_points_;  // this frame's TRAVEL obstacles, robot frame
     travel::TraversabilityGrid obstacles_grid_;
-    std::vector<float> height_;        // per cell: last reported height above the ground
-    std::vector<float> frame_height_;  // per cell: this frame's highest report (NaN: none)
+    std::vector<float> low_, high_;              // per cell: last reported heights above the ground
+    std::vector<float> frame_low_, frame_high_;  // per cell: this frame's (NaN: none)
     std::vector<long> frame_cells_;
     double map_ms_ = 0, sensing_ms_ = 0, cpu_ms_ = 0;
 };

@@ -77,6 +77,12 @@ class TravelMapNavigation {
     /// (CWaypointsNavigator::navigateWaypoints). True when waypoints were sent. When no path
     /// exists, the goal alone is sent (the reactive navigator gets as close as it can).
     bool updatePlan(mrpt::nav::CWaypointsNavigator& navigator, const Eigen::Vector2d& robot);
+    /// The decision of updatePlan() without a navigator: plans when needed; true when the
+    /// waypoints (waypoints()) changed and should be sent.
+    bool replan(const Eigen::Vector2d& robot);
+    /// The current waypoints: the path every waypoint_spacing metres, or the goal alone when
+    /// there is no path.
+    std::vector<Eigen::Vector2d> waypoints() const;
     /// The current path (cell centres, start to goal) and every path planned so far.
     const std::vector<Eigen::Vector2d>& path() const { return path_; }
     const std::vector<std::vector<Eigen::Vector2d>>& plannedPaths() const { return history_; }
