@@ -5,20 +5,29 @@
 // the planner goes around a wall and the chain re-plans when an obstacle appears on its path.
 #include <gtest/gtest.h>
 
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/nav/planners/PlannerSimple2D.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
+
+#include <chrono>
+#include <deque>
 
 #include <cmath>
 #include <fstream>
 
+#include "NavPoints.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
 #include "travel/traversability/GridPathPlanner.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 #include "travel_mrpt/TravelMapNavigation.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
 using namespace travel::navsim;
+using travel_test::countIn;
 
 namespace {
 
@@ -72,14 +81,6 @@ struct Rig {
         return p;
     }
 };
-
-/// Points inside the robot-frame box [x0, x1] x [y0, y1].
-int countIn(const travel_mrpt::ObstaclePoints& p, double x0, double x1, double y0, double y1) {
-    int n = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        n += p.x[i] >= x0 && p.x[i] <= x1 && p.y[i] >= y0 && p.y[i] <= y1;
-    return n;
-}
 
 }  // namespace
 
@@ -183,4 +184,71 @@ TEST(MapSource, ReplansWhenTheMapBlocksThePath) {
     rig.chain.saveMap(prefix);
     EXPECT_TRUE(std::ifstream(prefix + ".bt").good());
     EXPECT_TRUE(std::ifstream(prefix + "_grid.gridmap.gz").good());
+}
+
+// The measurement behind the planner choice (docs/navigation.md), not run by default
+// (--gtest_also_run_disabled_tests): the dead_end map after 10 frames from the start; this
+// planner on the grid against MRPT's PlannerSimple2D on the exported COccupancyGridMap2D.
+TEST(GridPathPlanner, DISABLED_CompareWithMrptPlannerSimple2D) {
+    const World world = loadWorld(kShare + "/worlds/dead_end.world");
+    Rig rig(world);
+    for (int i = 0; i < 10; ++i) rig.frame(world, 0.0, 0.0);
+    const auto length = [](const auto& path) {
+        double l = 0;
+        for (std::size_t i = 1; i < path.size(); ++i)
+            l += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+        return l;
+    };
+    using Clock = std::chrono::steady_clock;
+    const int runs = 20;
+    std::vector<travel::CellState> states;
+    std::vector<float> slopes;
+    travel::GridPathPlanner planner;
+    std::vector<Eigen::Vector2d> path;
+    auto t0 = Clock::now();
+    bool found = false;
+    for (int i = 0; i < runs; ++i) {
+        rig.chain.source().plannerGrid(states, slopes);
+        planner.setGrid(rig.chain.source().map().options(), states, slopes);
+        found = planner.plan({0, 0}, world.goal, path);
+    }
+    const double ours_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - t0).count() / runs;
+    std::vector<mrpt::math::TPoint2D> ours;
+    for (const auto& p : path) ours.emplace_back(p.x(), p.y());
+
+    mrpt::maps::COccupancyGridMap2D grid;
+    mrpt::nav::PlannerSimple2D mrpt_planner;
+    mrpt_planner.robotRadius = 0.35f;
+    std::deque<mrpt::math::TPoint2D> theirs;
+    bool not_found = true;
+    t0 = Clock::now();
+    for (int i = 0; i < runs; ++i) {
+        travel_mrpt::toOccupancyGrid(rig.chain.source().map(), grid);
+        mrpt_planner.computePath(grid, mrpt::poses::CPose2D(0, 0, 0),
+                                 mrpt::poses::CPose2D(world.goal.x(), world.goal.y(), 0), theirs,
+                                 not_found);
+    }
+    const double mrpt_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - t0).count() / runs;
+    // Unknown cells (0.5) counted as free.
+    mrpt_planner.occupancyThreshold = 0.51f;
+    std::deque<mrpt::math::TPoint2D> optimistic;
+    bool optimistic_not_found = true;
+    t0 = Clock::now();
+    for (int i = 0; i < runs; ++i)
+        mrpt_planner.computePath(grid, mrpt::poses::CPose2D(0, 0, 0),
+                                 mrpt::poses::CPose2D(world.goal.x(), world.goal.y(), 0),
+                                 optimistic, optimistic_not_found);
+    const double optimistic_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - t0).count() / runs;
+    std::printf("PlannerSimple2D, unknown = free: %s, %.1f m, %.2f ms (plan)\n",
+                optimistic_not_found ? "no path" : "path",
+                length(std::vector<mrpt::math::TPoint2D>(optimistic.begin(), optimistic.end())),
+                optimistic_ms);
+    std::printf(
+        "GridPathPlanner: %s, %.1f m, %.2f ms (grid + plan)\n"
+        "PlannerSimple2D: %s, %.1f m, %.2f ms (export + plan)\n",
+        found ? "path" : "no path", length(ours), ours_ms, not_found ? "no path" : "path",
+        length(std::vector<mrpt::math::TPoint2D>(theirs.begin(), theirs.end())), mrpt_ms);
 }
