@@ -100,7 +100,7 @@ TEST(NavClosedLoop, MapPlansAroundTheDeadEndWhereTravelIsTrapped) {
     for (const TrajectorySample& s : map.trajectory)  // never inside the U
         EXPECT_FALSE(s.x > 2.2 && s.x < 9.3 && std::abs(s.y) < 2.3) << s.x << " " << s.y;
 
-    const RunReport travel = runSimulation(w, options(SourceKind::Travel, 40.0));
+    const RunReport travel = runSimulation(w, options(SourceKind::Travel, 30.0));
     print("travel, dead_end", travel);
     EXPECT_NE(travel.outcome, Outcome::Goal);
     const TrajectorySample& last = travel.trajectory.back();  // still inside the U

@@ -14,6 +14,16 @@ namespace travel_mrpt {
 namespace {
 /// Frames between two attempts when no path was found (the map grows meanwhile).
 constexpr std::size_t kRetryFrames = 10;
+
+/// The planner's distances are to obstacle cell centres; the source reports each cell grown by
+/// half a cell plus its margin: the path keeps robot_radius (and comfort_radius) from what the
+/// navigator is given.
+travel::GridPlannerOptions plannerFor(const TravelMapNavigationOptions& o) {
+    travel::GridPlannerOptions p = o.planner;
+    const double growth = 0.5 * o.map.resolution + o.source.margin;
+    p.robot_radius += growth, p.comfort_radius += growth;
+    return p;
+}
 }  // namespace
 
 TravelMapNavigation::TravelMapNavigation(const TravelMapNavigationOptions& options)
@@ -21,7 +31,7 @@ TravelMapNavigation::TravelMapNavigation(const TravelMapNavigationOptions& optio
       filter_(std::make_unique<TravelFilter>(options.filter)),
       frame_(std::make_unique<TravelFrame>()),
       source_(std::make_unique<MapObstacleSource>(options.map, options.nav, options.source)),
-      planner_(options.planner) {}
+      planner_(plannerFor(options)) {}
 
 TravelMapNavigation::~TravelMapNavigation() = default;
 

@@ -46,6 +46,8 @@ struct TravelMapNavigationOptions {
     TraversabilityMapOptions map;  ///< grid extent and fusion (its `travel` part is not used)
     travel::NavSection nav;        ///< TRAVEL's obstacle rule (memory keys not used)
     MapSourceOptions source;       ///< horizon, margin
+    /// robot_radius and comfort_radius from the robot's outline; the planner adds the growth
+    /// of the reported cells (half a cell + source.margin) to both.
     travel::GridPlannerOptions planner;
     double waypoint_tolerance = 0.5;  ///< [m] allowed distance of the intermediate waypoints
 };

@@ -29,7 +29,9 @@
 namespace travel {
 
 struct GridPlannerOptions {
-    double robot_radius = 0.35;   ///< [m] cells closer than this to an obstacle are forbidden
+    /// [m] cells closer than this to an obstacle cell's centre are forbidden (the robot's
+    /// half-width and a little: the path's centre line keeps this from obstacles)
+    double robot_radius = 0.35;
     double comfort_radius = 0.8;  ///< [m] closer than this to an obstacle costs extra
     double proximity_cost = 2.0;  ///< extra cost factor at robot_radius (0 at comfort_radius)
     double unknown_cost = 0.5;    ///< extra cost factor of an unobserved cell
