@@ -146,10 +146,10 @@ int run(int argc, char** argv) {
             r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
         if (kind == SourceKind::Map)
             std::printf(
-                "    map update + sensing %.2f ms/step (median; CPU %.2f ms, max %.1f ms), "
-                "planning %.2f ms/step, %zu plans\n",
-                r.median_map_ms, r.median_map_cpu_ms, r.max_map_ms, r.mean_plan_ms,
-                r.planned_paths.size());
+                "    map update + sensing %.2f ms/step (median; map fusion %.2f ms; CPU %.2f ms; "
+                "max %.1f ms), planning %.2f ms/step, %zu plans\n",
+                r.median_map_ms, r.median_fusion_ms, r.median_map_cpu_ms, r.max_map_ms,
+                r.mean_plan_ms, r.planned_paths.size());
         std::cout << "    outputs: " << stem << ".{csv,png"
                   << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}"
                   << (options.map_prefix.empty()

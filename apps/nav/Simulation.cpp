@@ -299,7 +299,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
 
         double start_z = 0.0, max_z = -1e9;
         double wall_ms = 0.0, plan_ms = 0.0;
-        std::vector<double> map_ms, map_cpu_ms;
+        std::vector<double> map_ms, map_cpu_ms, fusion_ms;
         int steps = 0;
         const int max_steps = static_cast<int>(std::ceil(o.timeout / o.dt));
         Eigen::Vector2d last_xy = world.start.head<2>();
@@ -366,6 +366,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
                     const auto& src = chain->source();
                     map_ms.push_back(src.lastMapMs() + src.lastSensingMs());
                     map_cpu_ms.push_back(src.lastCpuMs());
+                    fusion_ms.push_back(src.lastMapMs());
                     if (o.plan) {
                         chain->updatePlan(nav, {p.x, p.y});
                         plan_ms += chain->lastPlanMs();
@@ -397,6 +398,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         if (chain) {
             report.median_map_ms = median(map_ms);
             report.median_map_cpu_ms = median(map_cpu_ms);
+            report.median_fusion_ms = median(fusion_ms);
             report.max_map_ms =
                 map_ms.empty() ? 0.0 : *std::max_element(map_ms.begin(), map_ms.end());
             report.mean_plan_ms = steps > 0 ? plan_ms / steps : 0.0;

@@ -101,6 +101,7 @@ struct RunReport {
     // Map source only.
     double median_map_ms = 0;      ///< map update + sensing per step (wall, median)
     double median_map_cpu_ms = 0;  ///< the same in thread CPU time (less sensitive to load)
+    double median_fusion_ms = 0;   ///< of which the map fusion (grid + OctoMap), wall, median
     double max_map_ms = 0;
     double mean_plan_ms = 0;  ///< planner per step (grid check, re-planning when blocked)
     std::vector<std::vector<Eigen::Vector2d>> planned_paths;  ///< every plan, in order
