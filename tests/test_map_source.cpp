@@ -161,7 +161,8 @@ TEST(GridPathPlanner, FindsAPathAroundAWall) {
 }
 
 // The chain plans straight to the goal over an empty floor; when a wall appears on that path
-// it re-plans (once the map holds the wall) and the new path keeps off the wall.
+// it re-plans (once the map holds the wall) and the new path keeps off the wall. A chain
+// started from that map knows the wall before its first frame.
 TEST(MapSource, ReplansWhenTheMapBlocksThePath) {
     const World empty = flatWorld("");
     const World walled = flatWorld("wall 4 -1.5 4 1.5 0.2 1.0\n");
@@ -176,6 +177,16 @@ TEST(MapSource, ReplansWhenTheMapBlocksThePath) {
     EXPECT_TRUE(rig.chain.replan({0, 0}));
     EXPECT_EQ(rig.chain.plans(), 2u);
     for (const auto& p : rig.chain.path())
+        if (std::abs(p.x() - 4.0) < 0.45) {
+            EXPECT_GT(std::abs(p.y()), 1.6 + 0.3);
+        }
+    // A chain started from this map plans around the wall before its first frame.
+    Rig next(empty);
+    next.chain.source().map() = rig.chain.source().map();
+    next.chain.setGoal({8, 0}, 0.4);
+    ASSERT_TRUE(next.chain.replan({0, 0}));
+    ASSERT_FALSE(next.chain.path().empty());
+    for (const auto& p : next.chain.path())
         if (std::abs(p.x() - 4.0) < 0.45) {
             EXPECT_GT(std::abs(p.y()), 1.6 + 0.3);
         }

@@ -28,6 +28,10 @@ double threadCpuMs() {
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
 }
+bool sameGeometry(const GridGeometry& a, const GridGeometry& b) {
+    return a.min_x == b.min_x && a.max_x == b.max_x && a.min_y == b.min_y && a.max_y == b.max_y &&
+           a.resolution == b.resolution;
+}
 }  // namespace
 
 MapObstacleSource::MapObstacleSource(const TraversabilityMapOptions& map,
@@ -36,7 +40,11 @@ MapObstacleSource::MapObstacleSource(const TraversabilityMapOptions& map,
     if (!(options.horizon > 0) || !(options.margin >= 0) || !(options.column_step > 0))
         throw std::invalid_argument(
             "map obstacle source: horizon and column_step must be > 0, margin >= 0");
-    obstacles_grid_.reset(map);
+    resetObstacles();
+}
+
+void MapObstacleSource::resetObstacles() {
+    obstacles_grid_.reset(map_->options());
     low_.assign(obstacles_grid_.cellCount(), 0.f);
     high_.assign(obstacles_grid_.cellCount(), 0.f);
     frame_low_.assign(obstacles_grid_.cellCount(), kNaN);
@@ -55,9 +63,18 @@ void MapObstacleSource::plannerGrid(std::vector<travel::CellState>& states,
     const std::size_t n = obstacles_grid_.cellCount();
     states.resize(n), slopes.resize(n);
     const travel::TraversabilityGrid& grid = map_->grid();
+    // A map assigned since the last update() may have another geometry: look it up by place.
+    const bool same = sameGeometry(map_->options(), obstacles_grid_.geometry());
     for (std::size_t c = 0; c < n; ++c) {
-        states[c] = obstacleCell(long(c)) ? travel::CellState::Obstacle : map_->state(long(c));
-        slopes[c] = grid.observed(long(c)) ? grid.slopeDeg(long(c)) : kNaN;
+        const long m =
+            same ? long(c)
+                 : grid.cellIndex(obstacles_grid_.cellCenterX(int(c % obstacles_grid_.sizeX())),
+                                  obstacles_grid_.cellCenterY(int(c / obstacles_grid_.sizeX())));
+        const bool known = m >= 0 && grid.observed(m);
+        states[c] = obstacleCell(long(c)) ? travel::CellState::Obstacle
+                    : known               ? map_->state(m)
+                                          : travel::CellState::Unknown;
+        slopes[c] = known ? grid.slopeDeg(m) : kNaN;
     }
 }
 
@@ -65,6 +82,8 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
     if (frame.travel == nullptr || frame.result == nullptr || frame.aligned == nullptr)
         throw std::invalid_argument(
             "map obstacle source: the frame has no TravelFrame, TRAVEL result or aligned cloud");
+    // The map may have been replaced (a previous run's): the obstacle grid follows its geometry.
+    if (!sameGeometry(map_->options(), obstacles_grid_.geometry())) resetObstacles();
     const Eigen::Isometry3d& robot = frame.robotPose;
     const double cpu_start = threadCpuMs();
     auto start = Clock::now();

@@ -82,6 +82,8 @@ class MapObstacleSource : public ObstacleSource {
     void compute(const ObstacleFrame& frame, ObstaclePoints& out) override;
 
   private:
+    void resetObstacles();  // the obstacle grid on the map's geometry, empty
+
     MapSourceOptions options_;
     std::unique_ptr<CTraversabilityMap> map_;
     travel::TravelObstacles rule_;
