@@ -2,12 +2,15 @@
 //
 // travel-nav-sim: closed-loop reactive navigation (MRPT's CReactiveNavigationSystem3D on a
 // simulated differential-drive robot) with a synthetic LiDAR on board, on the obstacles of
-// TRAVEL or of a comparison source. With no arguments: the default world, the TRAVEL source,
+// TRAVEL, of the traversability map built from TRAVEL (with a global path on it), or of a
+// comparison source. With no arguments: the default world, the TRAVEL source,
 // outputs in the current directory:
 //   <world>_<source>.reactivenavlog   the navigator's log (navlog-viewer opens it)
 //   <world>_<source>.csv              the trajectory
 //   <world>_<source>.png              the world from above with the path
-// --source all runs the three sources and also writes <world>_sources.png (side by side).
+//   <world>_map.bt, _grid.gridmap.gz, ...   the map source's map (CTraversabilityMap exports)
+// --source all runs the per-frame sources (travel, raw, threshold) and also writes
+// <world>_sources.png (side by side).
 #include <mrpt/img/CImage.h>
 
 #include <filesystem>
@@ -50,16 +53,21 @@ int run(int argc, char** argv) {
         "the world (a .world file, or a name in share/worlds; default ramp_kerb.world); -o: the "
         "output folder (default: the current one) for <world>_<source>.reactivenavlog (the "
         "navigator's log, navlog-viewer opens it), .csv (the trajectory) and .png (the world "
-        "from above with the path); --source all also writes <world>_sources.png. -p/-c/--set "
+        "from above with the path); --source map also saves the map (<world>_map.bt, "
+        "<world>_map_grid.gridmap.gz, ...) and draws it with the planned paths; --source all "
+        "runs travel, raw and threshold and also writes <world>_sources.png. -p/-c/--set "
         "configure TRAVEL (travel:) and its obstacle rule (nav:) on top of the simulation's "
         "robot and LiDAR; --nav-config is MRPT's reactive navigator .ini.",
         {"travel-nav-sim", "travel-nav-sim -i ramp_kerb.world --source all -o nav",
+         "travel-nav-sim -i dead_end.world -s map --seed 3",
          "travel-nav-sim -i my.world --set nav.max_step_height=0.1 --nav-config my_nav.ini -q"});
     TCLAP::CmdLine& cmd = line.cmd;
     const travel::apps::CommonFlags flags(line, false, "");
-    TCLAP::ValueArg<std::string> source_arg("s", "source",
-                                            "Obstacle source: travel, raw, threshold or all", false,
-                                            "travel", "NAME", cmd);
+    TCLAP::ValueArg<std::string> source_arg(
+        "s", "source",
+        "Obstacle source: travel, raw, threshold, map (the traversability map, with a global "
+        "path on it) or all (travel, raw and threshold)",
+        false, "travel", "NAME", cmd);
     TCLAP::ValueArg<std::string> nav_config_arg(
         "", "nav-config", "Reactive navigator .ini, or a name in share/configs/nav", false,
         "reactive3d_travel.ini", "FILE", cmd);
@@ -73,6 +81,10 @@ int run(int argc, char** argv) {
         "the file)",
         false, 0, "N", cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
+    TCLAP::SwitchArg no_plan_arg(
+        "", "no-plan",
+        "Map source: no global path (the goal is the reactive navigator's only target)", cmd);
+    TCLAP::SwitchArg no_map_arg("", "no-map-save", "Map source: do not save the map", cmd);
     if (const auto code = line.parse(argc, argv)) return *code;
     // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then --preset,
     // --config, each --set.
@@ -114,6 +126,8 @@ int run(int argc, char** argv) {
         options.source = kind;
         const std::string stem = (out_dir / (world.name + "_" + toString(kind))).string();
         options.navlog_file = no_log_arg.getValue() ? "" : stem + ".reactivenavlog";
+        options.plan = !no_plan_arg.getValue();
+        options.map_prefix = kind == SourceKind::Map && !no_map_arg.getValue() ? stem : "";
         const RunReport r = runSimulation(world, options);
         writeTrajectoryCsv(r, stem + ".csv");
         TopViewOptions view;
@@ -130,8 +144,18 @@ int run(int argc, char** argv) {
             toString(kind), toString(r.outcome), r.time, r.path_length, r.min_clearance,
             r.min_clearance_to.empty() ? "-" : r.min_clearance_to.c_str(), r.max_height_gain,
             r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
+        if (kind == SourceKind::Map)
+            std::printf(
+                "    map update + sensing %.2f ms/step (median; map fusion %.2f ms; CPU %.2f ms; "
+                "max %.1f ms), planning %.2f ms/step, %zu plans\n",
+                r.median_map_ms, r.median_fusion_ms, r.median_map_cpu_ms, r.max_map_ms,
+                r.mean_plan_ms, r.planned_paths.size());
         std::cout << "    outputs: " << stem << ".{csv,png"
-                  << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}\n";
+                  << (options.navlog_file.empty() ? "" : ",reactivenavlog") << "}"
+                  << (options.map_prefix.empty()
+                          ? ""
+                          : "  map: " + stem + ".bt, " + stem + "_grid.gridmap.gz, ...")
+                  << "\n";
     }
     if (panels.size() > 1) {
         mrpt::img::CImage all = panels[0], tmp;

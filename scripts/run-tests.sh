@@ -34,7 +34,7 @@ cmake --build build-asan -j2
 # The closed-loop navigation runs (tens of simulated seconds of MRPT's navigator each) take
 # minutes under ASan; they run in the plain suite above, their TRAVEL code paths are covered
 # under ASan by the obstacle-source and map tests.
-ASAN_SKIP='^(NavClosedLoop\.|Seeds/TravelOnRampKerb\.)'
+ASAN_SKIP='^(NavClosedLoop\.|Seeds/TravelOnRampKerb\.|Seeds/MapOnRampKerb\.)'
 log "test suite under sanitizers (closed-loop navigation runs: plain suite only)"
 # allocator_may_return_null: a corrupt rawlog's absurd sizes reach MRPT's allocator; the apps
 # turn the failure into a clean error (apps/MemoryLimit.hpp) instead of ASan aborting.

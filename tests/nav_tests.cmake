@@ -3,6 +3,8 @@
 if(TARGET travel_nav_sim_lib)
   travel_mrpt_test(test_nav_sources test_nav_sources.cpp)
   target_link_libraries(test_nav_sources PRIVATE travel_nav_sim_lib)
+  travel_mrpt_test(test_map_source test_map_source.cpp)
+  target_link_libraries(test_map_source PRIVATE travel_nav_sim_lib)
   travel_mrpt_test(test_nav_closed_loop test_nav_closed_loop.cpp)
   target_link_libraries(test_nav_closed_loop PRIVATE travel_nav_sim_lib mrpt::io mrpt::serialization)
   if(TRAVEL_SANITIZE)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <thread>
 
+#include "NavPoints.hpp"
 #include "nav/Collision.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
@@ -15,6 +16,7 @@
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
 using namespace travel::navsim;
+using travel_test::countIn;
 
 namespace {
 
@@ -40,14 +42,6 @@ void snapshot(const World& world, double x, double y, double yaw, Snapshot& s) {
     s.travel = std::make_unique<SimTravel>(o.travel);
     s.travel->process(s.scan.cloud, pose, mount, 0.0, s.frame);
     s.frame.sensorOnRobot = mount.cast<float>();
-}
-
-/// Obstacle points inside the robot-frame box [x0, x1] x [y0, y1].
-int countIn(const travel_mrpt::ObstaclePoints& p, double x0, double x1, double y0, double y1) {
-    int n = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        n += p.x[i] >= x0 && p.x[i] <= x1 && p.y[i] >= y0 && p.y[i] <= y1;
-    return n;
 }
 
 }  // namespace

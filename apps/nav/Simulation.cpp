@@ -25,14 +25,17 @@
 #include "travel/EnumNames.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
+#include "travel_mrpt/TravelMapNavigation.hpp"
 
 namespace travel::navsim {
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr EnumName<SourceKind> kSourceKindNames[] = {
-    {SourceKind::Travel, "travel"}, {SourceKind::Raw, "raw"}, {SourceKind::Threshold, "threshold"}};
+constexpr EnumName<SourceKind> kSourceKindNames[] = {{SourceKind::Travel, "travel"},
+                                                     {SourceKind::Raw, "raw"},
+                                                     {SourceKind::Threshold, "threshold"},
+                                                     {SourceKind::Map, "map"}};
 constexpr EnumName<Outcome> kOutcomeNames[] = {{Outcome::Goal, "goal"},
                                                {Outcome::Collision, "collision"},
                                                {Outcome::NavigatorGaveUp, "navigator-gave-up"},
@@ -158,6 +161,8 @@ std::unique_ptr<travel_mrpt::ObstacleSource> makeSource(const SimOptions& o) {
         case SourceKind::Threshold:
             s = travel_mrpt::RobotFrameBandSource::heightThreshold(o.threshold_min_z);
             break;
+        case SourceKind::Map:
+            return nullptr;  // TravelMapNavigation's
     }
     s->setMemory(o.nav);
     return s;
@@ -179,7 +184,46 @@ class Navigator : public mrpt::nav::CReactiveNavigationSystem3D {
     }
 };
 
+mrpt::poses::CPose3D toPose3D(const Eigen::Isometry3d& T) {
+    return mrpt::poses::CPose3D::FromRotationAndTranslation(
+        mrpt::math::CMatrixDouble33(T.linear()),
+        mrpt::math::TVector3D(T.translation().x(), T.translation().y(), T.translation().z()));
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+/// The final map for the picture: the planner's view of each cell.
+void snapshotMap(const travel_mrpt::MapObstacleSource& source, RunReport& r) {
+    std::vector<travel::CellState> states;
+    std::vector<float> slopes;
+    source.plannerGrid(states, slopes);
+    const travel::TraversabilityGrid& g = source.obstacleGrid();
+    r.map_min_x = g.geometry().min_x, r.map_min_y = g.geometry().min_y;
+    r.map_resolution = g.geometry().resolution;
+    r.map_size_x = g.sizeX(), r.map_size_y = g.sizeY();
+    r.map_cells.resize(states.size());
+    for (std::size_t i = 0; i < states.size(); ++i) r.map_cells[i] = uint8_t(states[i]);
+}
+
 }  // namespace
+
+travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world, const SimOptions& o) {
+    travel_mrpt::TravelMapNavigationOptions c;
+    c.filter.params = o.travel;
+    c.filter.velocity_source = travel_mrpt::VelocitySource::None;
+    const Eigen::Vector4d ext = worldExtent(world);
+    c.map.min_x = ext[0] - 1.0, c.map.min_y = ext[1] - 1.0;
+    c.map.max_x = ext[2] + 1.0, c.map.max_y = ext[3] + 1.0;
+    c.map.resolution = o.map_resolution;
+    c.map.max_ray_length = o.lidar.max_range;
+    c.nav = o.nav;
+    c.nav.memory_seconds = 0.0;
+    return c;
+}
 
 SimTravel::SimTravel(const travel::Params& params)
     : filter_(std::make_unique<travel_mrpt::TravelFilter>()),
@@ -195,13 +239,8 @@ SimTravel::~SimTravel() = default;
 void SimTravel::process(const travel::PointCloud& cloud, const Eigen::Isometry3d& robot,
                         const Eigen::Isometry3d& mount, double t,
                         travel_mrpt::ObstacleFrame& frame) {
-    const auto toPose = [](const Eigen::Isometry3d& T) {
-        return mrpt::poses::CPose3D::FromRotationAndTranslation(
-            mrpt::math::CMatrixDouble33(T.linear()),
-            mrpt::math::TVector3D(T.translation().x(), T.translation().y(), T.translation().z()));
-    };
-    filter_->setRobotPose(toPose(robot), simStamp(t));
-    filter_->filter(cloud, toPose(mount), simStamp(t), "SIM_LIDAR", *frame_);
+    filter_->setRobotPose(toPose3D(robot), simStamp(t));
+    filter_->filter(cloud, toPose3D(mount), simStamp(t), "SIM_LIDAR", *frame_);
     frame.cloud = &cloud;
     frame.result = &frame_->result;
     frame.aligned = frame_->aligned;
@@ -214,6 +253,10 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
     o.lidar.validate();
     SimTravel segmenter(o.travel);  // validates (throws travel::ConfigError)
     auto source = makeSource(o);
+    // The map source: the library's chain (filter -> map -> planner -> waypoints).
+    std::unique_ptr<travel_mrpt::TravelMapNavigation> chain;
+    if (o.source == SourceKind::Map)
+        chain = std::make_unique<travel_mrpt::TravelMapNavigation>(mapChainOptions(world, o));
 
     // The navigator writes PTG caches and its log into a directory of its own, under TMPDIR
     // (else /tmp), removed at the end, on errors and on Ctrl-C (travel::apps::TempDir).
@@ -224,7 +267,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
 
     mrpt::kinematics::CVehicleSimul_DiffDriven sim;
     sim.setCurrentGTPose(mrpt::math::TPose2D(world.start.x(), world.start.y(), world.start.z()));
-    SimRobot robot(sim, *source);
+    SimRobot robot(sim, chain ? chain->source() : *source);
     RunReport report;
     {
         // The log file is enabled after the loggers are set: enabling it logs DEBUG lines.
@@ -243,7 +286,10 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         request.target.target_coords = mrpt::math::TPose2D(world.goal.x(), world.goal.y(), 0.0);
         request.target.targetAllowedDistance = o.goal_tolerance;
         request.target.targetIsRelative = false;
-        nav.navigate(&request);
+        if (chain && o.plan)
+            chain->setGoal(world.goal, o.goal_tolerance);  // waypoints from the first frame on
+        else
+            nav.navigate(&request);
 
         // Mount: sensor straight above the robot origin.
         const Eigen::Isometry3d mount(Eigen::Translation3d(0.0, 0.0, o.sensor_height));
@@ -252,7 +298,8 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         frame.sensorOnRobot = mount.cast<float>();
 
         double start_z = 0.0, max_z = -1e9;
-        double wall_ms = 0.0;
+        double wall_ms = 0.0, plan_ms = 0.0;
+        std::vector<double> map_ms, map_cpu_ms, fusion_ms;
         int steps = 0;
         const int max_steps = static_cast<int>(std::ceil(o.timeout / o.dt));
         Eigen::Vector2d last_xy = world.start.head<2>();
@@ -312,14 +359,28 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
                 robot_pose.translation() = Eigen::Vector3d(p.x, p.y, z);
                 sim::LidarModel lidar = o.lidar;
                 sim::scan(world.scene, lidar, robot_pose * mount, scan);
-                frame.cloud = &scan.cloud;
-                if (o.source == SourceKind::Travel)
-                    segmenter.process(scan.cloud, robot_pose, mount, t, frame);
-                frame.robotOdometry = {p.x, p.y, p.phi};
-                frame.timestamp = simStamp(t);
-                source->update(frame);
                 travel_mrpt::ObstaclePoints handed;
-                source->latest(handed);
+                if (chain) {
+                    chain->processScan(scan.cloud, toPose3D(mount), toPose3D(robot_pose),
+                                       simStamp(t));
+                    const auto& src = chain->source();
+                    map_ms.push_back(src.lastMapMs() + src.lastSensingMs());
+                    map_cpu_ms.push_back(src.lastCpuMs());
+                    fusion_ms.push_back(src.lastMapMs());
+                    if (o.plan) {
+                        chain->updatePlan(nav, {p.x, p.y});
+                        plan_ms += chain->lastPlanMs();
+                    }
+                    src.latest(handed);
+                } else {
+                    frame.cloud = &scan.cloud;
+                    if (o.source == SourceKind::Travel)
+                        segmenter.process(scan.cloud, robot_pose, mount, t, frame);
+                    frame.robotOdometry = {p.x, p.y, p.phi};
+                    frame.timestamp = simStamp(t);
+                    source->update(frame);
+                    source->latest(handed);
+                }
                 s.obstacles = handed.size();
 
                 nav.navigationStep();
@@ -334,6 +395,17 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         report.time = sim.getTime();
         report.max_height_gain = max_z - start_z;
         report.mean_step_ms = steps > 0 ? wall_ms / steps : 0.0;
+        if (chain) {
+            report.median_map_ms = median(map_ms);
+            report.median_map_cpu_ms = median(map_cpu_ms);
+            report.median_fusion_ms = median(fusion_ms);
+            report.max_map_ms =
+                map_ms.empty() ? 0.0 : *std::max_element(map_ms.begin(), map_ms.end());
+            report.mean_plan_ms = steps > 0 ? plan_ms / steps : 0.0;
+            report.planned_paths = chain->plannedPaths();
+            snapshotMap(chain->source(), report);
+            if (!o.map_prefix.empty()) chain->saveMap(o.map_prefix);
+        }
         if (report.outcome == Outcome::Timeout)
             report.detail = "no goal after " + formatSeconds(o.timeout);
     }  // the navigator closes its log here

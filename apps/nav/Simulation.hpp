@@ -24,6 +24,7 @@
 #include "travel/Params.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel_mrpt/ObstacleSource.hpp"
+#include "travel_mrpt/TravelMapNavigation.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
 namespace travel_mrpt {
@@ -33,9 +34,9 @@ struct TravelFrame;
 
 namespace travel::navsim {
 
-enum class SourceKind { Travel, Raw, Threshold };
+enum class SourceKind { Travel, Raw, Threshold, Map };
 const char* toString(SourceKind kind);
-/// "travel", "raw", "threshold"; throws std::invalid_argument otherwise.
+/// "travel", "raw", "threshold", "map"; throws std::invalid_argument otherwise.
 SourceKind parseSourceKind(const std::string& name);
 
 enum class Outcome { Goal, Collision, NavigatorGaveUp, Timeout };
@@ -57,6 +58,12 @@ struct SimOptions {
     double raw_min_z = 0.03;        ///< [m] raw source: noise margin above the robot's base
     double threshold_min_z = 0.25;  ///< [m] height-threshold source
     std::string navlog_file;        ///< write the navigator's .reactivenavlog here (empty: no)
+    /// Map source: plan a global path on the map and follow it as waypoints (else the goal is
+    /// the navigator's only target, as with the other sources).
+    bool plan = true;
+    double map_resolution = 0.1;  ///< [m] map source: grid cell size (extent: the world's)
+    /// Map source: save the map here on exit (CTraversabilityMap exports; empty: no).
+    std::string map_prefix;
     /// Console: MRPT's navigator messages (travel::apps::configureMrptLogging) and the progress
     /// line (simulated time). Quiet by default (tests, library use).
     travel::apps::Verbosity verbosity = travel::apps::Verbosity::Quiet;
@@ -90,6 +97,18 @@ struct RunReport {
     double max_height_gain = 0;  ///< [m] highest terrain z reached minus the start's
     double mean_step_ms = 0;     ///< wall time per step (scan + TRAVEL + navigation)
     std::vector<TrajectorySample> trajectory;
+
+    // Map source only.
+    double median_map_ms = 0;      ///< map update + sensing per step (wall, median)
+    double median_map_cpu_ms = 0;  ///< the same in thread CPU time (less sensitive to load)
+    double median_fusion_ms = 0;   ///< of which the map fusion (grid + OctoMap), wall, median
+    double max_map_ms = 0;
+    double mean_plan_ms = 0;  ///< planner per step (grid check, re-planning when blocked)
+    std::vector<std::vector<Eigen::Vector2d>> planned_paths;  ///< every plan, in order
+    /// The map at the end: geometry and, per cell, 0 unknown, 1 traversable, 2 obstacle.
+    double map_min_x = 0, map_min_y = 0, map_resolution = 0;
+    int map_size_x = 0, map_size_y = 0;
+    std::vector<uint8_t> map_cells;
 };
 
 /// Robot base pose on the terrain (travel/sim/Scene.hpp).
@@ -116,6 +135,12 @@ class SimTravel {
     std::unique_ptr<travel_mrpt::TravelFilter> filter_;
     std::unique_ptr<travel_mrpt::TravelFrame> frame_;
 };
+
+/// The map source's chain options for `world`: TRAVEL as the other sources run it, a grid over
+/// the world's extent (+1 m) at map_resolution, TRAVEL's obstacle rule with options.nav (the
+/// map is the memory: no memory_seconds).
+travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world,
+                                                        const SimOptions& options);
 
 /// Runs one closed loop. Throws std::runtime_error on configuration errors.
 RunReport runSimulation(const World& world, const SimOptions& options);

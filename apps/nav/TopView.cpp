@@ -101,6 +101,38 @@ void renderTopView(const World& world, const std::vector<Eigen::Vector2d>& footp
             fillPolygon(img, view, o.polygon, colour);
     }
 
+    // Map source: what the map knew at the end (traversable cells tinted green, obstacle cells
+    // red) and every planned path (earlier plans pale, the last one magenta).
+    if (report != nullptr && !report->map_cells.empty()) {
+        const double res = report->map_resolution;
+        for (int v = 0; v < h; ++v)
+            for (int u = 0; u < w; ++u) {
+                const double x = ext[0] + (u + 0.5) * mpp, y = ext[3] - (v + 0.5) * mpp;
+                const int ix = int(std::floor((x - report->map_min_x) / res));
+                const int iy = int(std::floor((y - report->map_min_y) / res));
+                if (ix < 0 || iy < 0 || ix >= report->map_size_x || iy >= report->map_size_y)
+                    continue;
+                const uint8_t cell = report->map_cells[std::size_t(iy) * report->map_size_x + ix];
+                if (cell == 0) continue;
+                const uint8_t* px = img(u, v);  // BGR
+                const TColor tint = cell == 2 ? TColor(230, 20, 20) : TColor(40, 200, 60);
+                const double a = cell == 2 ? 0.6 : 0.25;
+                const auto mix = [a](uint8_t from, uint8_t to) {
+                    return static_cast<uint8_t>((1 - a) * from + a * to);
+                };
+                img.setPixel(u, v,
+                             TColor(mix(px[2], tint.R), mix(px[1], tint.G), mix(px[0], tint.B)));
+            }
+        const auto& plans = report->planned_paths;
+        for (std::size_t k = 0; k < plans.size(); ++k) {
+            const bool last = k + 1 == plans.size();
+            const TColor colour = last ? TColor(220, 0, 220) : TColor(230, 160, 230);
+            for (std::size_t i = 1; i < plans[k].size(); ++i)
+                img.line(view.u(plans[k][i - 1].x()), view.v(plans[k][i - 1].y()),
+                         view.u(plans[k][i].x()), view.v(plans[k][i].y()), colour, last ? 2 : 1);
+        }
+    }
+
     // Start (green) and goal (red ring of the goal tolerance's size).
     img.drawCircle(view.u(world.start.x()), view.v(world.start.y()), 6, TColor(0, 150, 0), 3);
     img.drawCircle(view.u(world.goal.x()), view.v(world.goal.y()),

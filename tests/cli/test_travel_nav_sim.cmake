@@ -35,6 +35,24 @@ if(leftovers)
   message(FATAL_ERROR "scratch files left behind: ${leftovers}")
 endif()
 
+# The map source: a short run saves the map beside the usual outputs and reports its cost.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env TMPDIR=${WORK_DIR}/tmp
+  ${TRAVEL_NAV_SIM} -i flat_obstacles.world -s map --timeout 3 --no-navlog
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "travel-nav-sim -s map failed:\n${out}${err}")
+endif()
+foreach(f flat_obstacles_map.csv flat_obstacles_map.png flat_obstacles_map.bt
+          flat_obstacles_map_grid.gridmap.gz flat_obstacles_map_height.gridmap.gz)
+  if(NOT EXISTS ${WORK_DIR}/${f})
+    message(FATAL_ERROR "missing output ${f}:\n${out}${err}")
+  endif()
+endforeach()
+string(FIND "${out}" "map update + sensing" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "no map timing line:\n${out}")
+endif()
+
 # Errors name what is wrong.
 expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/nowhere.world)
 expect_failure_mentioning("unknown obstacle source 'lidar'" ${TRAVEL_NAV_SIM} --source lidar

@@ -38,6 +38,8 @@ class CSimplePointsMap;
 
 namespace travel_mrpt {
 
+struct TravelFrame;
+
 /// What a source needs from one LiDAR frame (pointers stay owned by the caller).
 struct ObstacleFrame {
     const travel::PointCloud* cloud = nullptr;  ///< sensor frame
@@ -51,6 +53,10 @@ struct ObstacleFrame {
     /// Robot pose in the odometry frame (x, y [m], yaw [rad]): moves the memory between frames.
     Eigen::Vector3d robotOdometry = Eigen::Vector3d::Zero();
     mrpt::Clock::time_point timestamp{};
+    /// The map source (MapObstacleSource): the filter's whole frame (sensor pose, alignment)
+    /// and the robot's 3-D pose in the map's world frame, where the frame is fused.
+    const TravelFrame* travel = nullptr;
+    Eigen::Isometry3d robotPose = Eigen::Isometry3d::Identity();
 };
 
 /// Robot-centric obstacle points (structure of arrays) and the time of their frame.
