@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <stdexcept>
 
 #include "NavPoints.hpp"
 #include "nav/Simulation.hpp"
@@ -190,11 +191,22 @@ TEST(MapSource, ReplansWhenTheMapBlocksThePath) {
         if (std::abs(p.x() - 4.0) < 0.45) {
             EXPECT_GT(std::abs(p.y()), 1.6 + 0.3);
         }
-    // The map saves its exports (the next run can start from them).
+    // The map saves its exports, and the next run starts from the saved files: it plans around
+    // the wall before its first frame.
     const std::string prefix = ::testing::TempDir() + "/map_source_test";
     rig.chain.saveMap(prefix);
     EXPECT_TRUE(std::ifstream(prefix + ".bt").good());
     EXPECT_TRUE(std::ifstream(prefix + "_grid.gridmap.gz").good());
+    Rig loaded(empty);
+    EXPECT_THROW(loaded.chain.loadMap(prefix + "_missing"), std::runtime_error);
+    loaded.chain.loadMap(prefix);
+    EXPECT_EQ(loaded.chain.source().map().framesInserted(),
+              rig.chain.source().map().framesInserted());
+    loaded.chain.setGoal({8, 0}, 0.4);
+    ASSERT_TRUE(loaded.chain.replan({0, 0}));
+    ASSERT_EQ(loaded.chain.path().size(), next.chain.path().size());
+    for (std::size_t i = 0; i < loaded.chain.path().size(); ++i)
+        EXPECT_EQ(loaded.chain.path()[i], next.chain.path()[i]) << "path cell " << i;
 }
 
 // The measurement behind the planner choice (docs/navigation.md), not run by default

@@ -420,8 +420,10 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
     // Into a new map first: a bad file leaves this one as it was.
     CTraversabilityMap loaded;
     {
+        // CFileGZInputStream::open throws MRPT's own exception for a missing file: ask first.
         mrpt::io::CFileGZInputStream in;
-        if (!in.open(grid_path)) throw std::runtime_error(grid_path + ": cannot open");
+        if (!std::ifstream(grid_path, std::ios::binary) || !in.open(grid_path))
+            throw std::runtime_error(grid_path + ": cannot open");
         try {
             auto archive = mrpt::serialization::archiveFrom(in);
             // A wrong file: compare the magic's length before reading a string of any length.

@@ -104,15 +104,12 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
 
     // Ground of this frame (free evidence) and the obstacles, into the obstacle grid.
     const CTraversabilityMap& m = *map_;
-    const mrpt::poses::CPose3D sensor_in_world =
-        mrpt::poses::CPose3D::FromRotationAndTranslation(
-            mrpt::math::CMatrixDouble33(robot.linear()),
-            mrpt::math::TVector3D(rx, ry, robot.translation().z())) +
-        frame.travel->sensorPose;
-    const Eigen::Matrix3f to_world = sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
-                                     frame.travel->alignedRotation.transpose();
-    const Eigen::Vector3f origin(float(sensor_in_world.x()), float(sensor_in_world.y()),
-                                 float(sensor_in_world.z()));
+    const AlignedInWorld placed =
+        alignedInWorld(*frame.travel, mrpt::poses::CPose3D::FromRotationAndTranslation(
+                                          mrpt::math::CMatrixDouble33(robot.linear()),
+                                          mrpt::math::TVector3D(rx, ry, robot.translation().z())));
+    const Eigen::Matrix3f& to_world = placed.rotation;
+    const Eigen::Vector3f& origin = placed.origin;
     const travel::AlignedCloud& a = *frame.aligned;
     const auto& labels = frame.result->labels;
     // Free evidence: a ground hit, and the cells its ray crossed lower than max_step_height

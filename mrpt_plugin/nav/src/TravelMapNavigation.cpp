@@ -126,7 +126,12 @@ bool TravelMapNavigation::updatePlan(mrpt::nav::CWaypointsNavigator& navigator,
 }
 
 void TravelMapNavigation::saveMap(const std::string& prefix) const {
+    source_->map().saveTo(prefix);
     source_->map().saveMetricMapRepresentationToFile(prefix);
+}
+
+void TravelMapNavigation::loadMap(const std::string& prefix) {
+    source_->map().loadFrom(prefix);
 }
 
 }  // namespace travel_mrpt

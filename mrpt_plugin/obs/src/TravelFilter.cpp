@@ -367,4 +367,14 @@ travel::MotionEstimate TravelFilter::motionAt(mrpt::Clock::time_point t) const {
     return motion_.estimateAt(seconds(t));
 }
 
+AlignedInWorld alignedInWorld(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose) {
+    const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
+    AlignedInWorld out;
+    out.rotation = sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
+                   frame.alignedRotation.transpose();
+    out.origin = Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),
+                                 float(sensor_in_world.z()));
+    return out;
+}
+
 }  // namespace travel_mrpt

@@ -91,9 +91,15 @@ class TravelMapNavigation {
     std::size_t plans() const { return history_.size(); }
     double lastPlanMs() const { return plan_ms_; }
 
-    /// CTraversabilityMap::saveMetricMapRepresentationToFile: prefix.bt, prefix_grid.gridmap.gz,
-    /// prefix_height.gridmap.gz and pictures.
+    /// Saves the map on exit: CTraversabilityMap::saveTo (prefix.travelgrid and prefix.ot, what
+    /// loadMap() reads back) and saveMetricMapRepresentationToFile (prefix.bt,
+    /// prefix_grid.gridmap.gz, prefix_height.gridmap.gz and pictures, for OctoMap's and MRPT's
+    /// tools). Throws std::runtime_error naming the file it could not write.
     void saveMap(const std::string& prefix) const;
+    /// Starts from the map a previous run saved with saveMap(prefix) (CTraversabilityMap::
+    /// loadFrom): the planner knows its cells before the first frame. Throws std::runtime_error
+    /// naming the missing, truncated or corrupt file; the map is then left as it was.
+    void loadMap(const std::string& prefix);
 
   private:
     void publish(const mrpt::poses::CPose3D& robotPose);

@@ -76,6 +76,16 @@ struct TravelFrame {
     double convert_ms = 0, process_ms = 0;
 };
 
+/// Where a frame's aligned cloud lies in a world frame, with the robot at `robotPose`:
+/// p_world = rotation * p_aligned + origin (aligned -> sensor is alignedRotation^T, then the
+/// sensor's pose on the robot, then the robot's). The one home of this placement: the map layer
+/// and the map obstacle source both call it.
+struct AlignedInWorld {
+    Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();
+    Eigen::Vector3f origin = Eigen::Vector3f::Zero();
+};
+AlignedInWorld alignedInWorld(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
+
 class TravelFilter : public mrpt::system::COutputLogger {
   public:
     TravelFilter();
