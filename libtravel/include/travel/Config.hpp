@@ -172,7 +172,7 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "A confirmed track ends after this many consecutive frames without a cluster")              \
     X(double, moving_speed_on, 1.0, "m/s", 0.0, 1e3,                                              \
       "A track becomes moving when its speed exceeds this for moving_frames_on frames in a row")  \
-    X(int, moving_frames_on, 3, "", 1, 1000, "... that many frames")                              \
+    X(int, moving_frames_on, 5, "", 1, 1000, "... that many frames")                              \
     X(double, moving_speed_off, 0.5, "m/s", 0.0, 1e3,                                             \
       "A moving track stops moving when its speed falls below this (hysteresis: < "               \
       "moving_speed_on)")
