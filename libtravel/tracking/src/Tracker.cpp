@@ -103,8 +103,9 @@ void Tracker::attachFragments(const std::vector<ClusterSummary>& clusters) {
             const int main = track_to_cluster_[k];
             if (main < 0 || !tracks_[k].confirmed) continue;
             const WorldBox& gate = track_boxes_[k];
-            if ((centre.array() < gate.min.head<2>().array()).any() ||
-                (centre.array() > gate.max.head<2>().array()).any())
+            const double m = params_.gate_box_margin;
+            if ((centre.array() < gate.min.head<2>().array() - m).any() ||
+                (centre.array() > gate.max.head<2>().array() + m).any())
                 continue;
             cluster_to_track_[c] = static_cast<int>(k);
             if (clusters[c].num_points > clusters[main].num_points)
