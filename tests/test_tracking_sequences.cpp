@@ -10,8 +10,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "travel/Pipeline.hpp"
 #include "travel/eval/TrackingMetrics.hpp"
@@ -252,6 +255,19 @@ TEST(TrackingReal, LargeClustersKeepTheirIdAndPosesAgreeWithRegistration) {
         "%.2f m (%.2f %%)\n",
         kept.kept, kept.counted, 100 * kept.share(), 100 * kept.shareOfTracked(), end_error, driven,
         100 * end_error / driven);
+    // The committed registration of this drive (share/bench, made by register_scans): xy.
+    std::ifstream committed(fs::path(TRAVEL_SHARE_DIR_FOR_TESTS) / "bench/kitti_raw_pcd_poses.txt");
+    std::string line, last;
+    while (std::getline(committed, line))
+        if (!line.empty()) last = line;
+    std::istringstream numbers(last);
+    double m[12] = {};
+    for (double& v : m) numbers >> v;
+    const double committed_gap =
+        (pose.translation().head<2>() - Eigen::Vector2d(m[3], m[7])).norm();
+    std::printf("  xy end point %.3f m from share/bench/kitti_raw_pcd_poses.txt (%.2f %%)\n",
+                committed_gap, 100 * committed_gap / driven);
     EXPECT_GE(kept.share(), 0.9);
     EXPECT_LT(end_error, 0.05 * driven);
+    EXPECT_LT(committed_gap, 0.05 * driven);
 }
