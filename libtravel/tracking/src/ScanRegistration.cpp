@@ -38,10 +38,14 @@ std::vector<Eigen::Vector3d> voxelFilter(const std::vector<Eigen::Vector3d>& poi
     return out;
 }
 
-int64_t ScanRegistration::cellKey(const Eigen::Vector3d& p, int dx, int dy, int dz) const {
+int64_t ScanRegistration::cellKey(int64_t ix, int64_t iy, int64_t iz) {
+    return packKey(ix, iy, iz);
+}
+
+int64_t ScanRegistration::cellKey(const Eigen::Vector3d& p) const {
     const double s = params_.neighbour_radius;
-    return packKey(int64_t(std::floor(p.x() / s)) + dx, int64_t(std::floor(p.y() / s)) + dy,
-                   int64_t(std::floor(p.z() / s)) + dz);
+    return packKey(int64_t(std::floor(p.x() / s)), int64_t(std::floor(p.y() / s)),
+                   int64_t(std::floor(p.z() / s)));
 }
 
 void ScanRegistration::setTarget(const std::vector<Eigen::Vector3d>& points) {
@@ -72,7 +76,7 @@ bool ScanRegistration::normalAt(uint32_t i) {
     const double r2 = params_.neighbour_radius * params_.neighbour_radius;
     const Eigen::Vector3d& p = target_[i];
     near_.clear();
-    forEachNeighbour(p, [&](uint32_t j) {
+    forEachNeighbour(p, params_.neighbour_radius, [&](uint32_t j) {
         const double d2 = (target_[j] - p).squaredNorm();
         if (d2 <= r2) near_.emplace_back(d2, j);
     });
@@ -95,7 +99,7 @@ bool ScanRegistration::normalAt(uint32_t i) {
 int ScanRegistration::nearest(const Eigen::Vector3d& p, double max_distance) const {
     double best = max_distance * max_distance;
     int found = -1;
-    forEachNeighbour(p, [&](uint32_t j) {
+    forEachNeighbour(p, max_distance, [&](uint32_t j) {
         const double d2 = (target_[j] - p).squaredNorm();
         if (d2 < best || (d2 == best && found >= 0 && int(j) < found)) {
             best = d2;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -66,14 +67,28 @@ class ScanRegistration {
     bool normalAt(uint32_t i);
     /// Index of the nearest target point within `max_distance` of p, or -1.
     int nearest(const Eigen::Vector3d& p, double max_distance) const;
-    int64_t cellKey(const Eigen::Vector3d& p, int dx = 0, int dy = 0, int dz = 0) const;
-    /// f(target index) for every target point in the 27 cells around p.
+    int64_t cellKey(const Eigen::Vector3d& p) const;
+    static int64_t cellKey(int64_t ix, int64_t iy, int64_t iz);
+    /// f(target index) for every target point in the cells (of the 27 around p) that reach
+    /// within `radius` (<= neighbour_radius) of p: a cell on one side is skipped when p is
+    /// farther than radius from that face.
     template <class F>
-    void forEachNeighbour(const Eigen::Vector3d& p, F&& f) const {
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    const auto cell = cells_.find(cellKey(p, dx, dy, dz));
+    void forEachNeighbour(const Eigen::Vector3d& p, double radius, F&& f) const {
+        const double s = params_.neighbour_radius;
+        int64_t base[3];
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            const double cell = std::floor(p[a] / s);
+            base[a] = int64_t(cell);
+            const double offset = p[a] - cell * s;  // in [0, s)
+            lo[a] = offset < radius ? -1 : 0;
+            hi[a] = s - offset <= radius ? 1 : 0;
+        }
+        for (int dx = lo[0]; dx <= hi[0]; ++dx)
+            for (int dy = lo[1]; dy <= hi[1]; ++dy)
+                for (int dz = lo[2]; dz <= hi[2]; ++dz) {
+                    const auto cell =
+                        cells_.find(cellKey(base[0] + dx, base[1] + dy, base[2] + dz));
                     if (cell == cells_.end()) continue;
                     for (uint32_t j = cell->second.first; j < cell->second.second; ++j)
                         f(order_[j]);
