@@ -100,7 +100,8 @@ int run(int argc, char** argv) {
         "scored).",
         {"travel-kitti -i data/sequences/00 -o out/00",
          "travel-kitti -i scan.pcd -o out -p vlp16 --set sensor_height=1.2",
-         "travel-kitti -i hdl32_000000.bin -f nuscenes -o out -p hdl32 -q -j 1"});
+         "travel-kitti -i hdl32_000000.bin -f nuscenes -o out -p hdl32 -q -j 1",
+         "travel-kitti -i data/kitti_raw_pcd -o out --track --track-png out/tracks.png"});
     TCLAP::CmdLine& cmd = line.cmd;
     const travel::apps::CommonFlags flags(line, false, "hdl64");
     TCLAP::ValueArg<std::string> labels(

@@ -10,8 +10,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "travel/Pipeline.hpp"
 #include "travel/eval/TrackingMetrics.hpp"
@@ -148,7 +151,7 @@ TEST(TrackingSynthetic, FiguresWithGivenPoses) {
     const SimRun run = runSim(true);
     printFigures("given poses", run);
     EXPECT_GE(run.mot.mota(), 0.88);
-    EXPECT_LE(run.mot.id_switches, 5u);
+    EXPECT_LE(run.mot.id_switches, 2u);
     EXPECT_LE(run.mot.misses, 5u);
     for (const uint32_t pedestrian : {21u, 22u}) {
         const auto& errors = run.velocity_error.at(pedestrian);
@@ -163,16 +166,25 @@ TEST(TrackingSynthetic, FiguresWithGivenPoses) {
     }
 }
 
-// The acceptance criteria of issue 19 that are NOT met yet (docs/tracking.md, "Limits"): parked
-// cars 1, 2 and 4 change id once each (their cluster splits or degenerates near the end of the
-// sequence), and the cars' velocity errors exceed 0.3 m/s while the visible faces change (the
-// centroid of the visible part is the measurement). Run with --gtest_also_run_disabled_tests.
-TEST(TrackingSynthetic, DISABLED_AcceptanceParkedKeepOneIdCarsVelocityWithin0_3) {
+// Issue 19's acceptance, parked objects: one id through every frame they are visible (a split
+// cluster's fragments continue the track: Tracker::attachFragments). With given poses and ICP.
+TEST(TrackingSynthetic, AcceptanceParkedKeepOneId) {
+    for (const bool given_poses : {true, false}) {
+        const SimRun run = runSim(given_poses);
+        for (const auto& [object, ids] : run.mot.track_ids)
+            if (isParked(object)) {
+                EXPECT_EQ(ids.size(), 1u)
+                    << "parked object " << object << " changed id, given poses " << given_poses;
+            }
+    }
+}
+
+// Issue 19's acceptance, moving cars' velocity within 0.3 m/s: NOT met yet (docs/tracking.md,
+// "Limits"): the oncoming car's visible faces change as it passes (the centroid of the visible
+// part is the measurement), and the crossing car is occluded for 4 frames and found again as a
+// new track that starts at rest. Run with --gtest_also_run_disabled_tests.
+TEST(TrackingSynthetic, DISABLED_AcceptanceCarsVelocityWithin0_3) {
     const SimRun run = runSim(true);
-    for (const auto& [object, ids] : run.mot.track_ids)
-        if (isParked(object)) {
-            EXPECT_EQ(ids.size(), 1u) << "parked object " << object << " changed id";
-        }
     for (const uint32_t car : {11u, 12u}) {
         const auto& errors = run.velocity_error.at(car);
         for (std::size_t k = 10; k < errors.size(); ++k)
@@ -252,6 +264,19 @@ TEST(TrackingReal, LargeClustersKeepTheirIdAndPosesAgreeWithRegistration) {
         "%.2f m (%.2f %%)\n",
         kept.kept, kept.counted, 100 * kept.share(), 100 * kept.shareOfTracked(), end_error, driven,
         100 * end_error / driven);
+    // The committed registration of this drive (share/bench, made by register_scans): xy.
+    std::ifstream committed(fs::path(TRAVEL_SHARE_DIR_FOR_TESTS) / "bench/kitti_raw_pcd_poses.txt");
+    std::string line, last;
+    while (std::getline(committed, line))
+        if (!line.empty()) last = line;
+    std::istringstream numbers(last);
+    double m[12] = {};
+    for (double& v : m) numbers >> v;
+    const double committed_gap =
+        (pose.translation().head<2>() - Eigen::Vector2d(m[3], m[7])).norm();
+    std::printf("  xy end point %.3f m from share/bench/kitti_raw_pcd_poses.txt (%.2f %%)\n",
+                committed_gap, 100 * committed_gap / driven);
     EXPECT_GE(kept.share(), 0.9);
     EXPECT_LT(end_error, 0.05 * driven);
+    EXPECT_LT(committed_gap, 0.05 * driven);
 }

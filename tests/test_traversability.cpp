@@ -154,6 +154,32 @@ TEST(PoseFiles, TumAndKittiAreReadAndInterpolated) {
     for (const auto& p : {tum, kitti, calib}) std::remove(p.c_str());
 }
 
+TEST(PoseFiles, SequencePosesAndKittiLinesRoundTrip) {
+    namespace fs = std::filesystem;
+    const fs::path dir = tempPath() + "_sequence";
+    fs::create_directories(dir);
+    EXPECT_FALSE(travel::readSequenceLidarPoses(dir.string()));  // no poses.txt
+    EXPECT_FALSE(travel::readSequenceLidarPoses(""));
+    std::ofstream(dir / "poses.txt") << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 1.5\n";
+    auto uncalibrated = travel::readSequenceLidarPoses(dir.string());
+    ASSERT_TRUE(uncalibrated);
+    EXPECT_NEAR(uncalibrated->poses[1].translation().z(), 1.5, 1e-12);  // taken as LiDAR poses
+    std::ofstream(dir / "calib.txt") << "Tr: 0 -1 0 0 0 0 -1 0 1 0 0 0\n";
+    const auto lidar = travel::readSequenceLidarPoses(dir.string());
+    ASSERT_TRUE(lidar);
+    EXPECT_NEAR(lidar->poses[1].translation().x(), 1.5, 1e-9);  // camera z = LiDAR x
+    // kittiPoseLine: 12 numbers that read back to the same pose.
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).matrix();
+    pose.translation() = Eigen::Vector3d(1.25, -3.5, 0.125);
+    const std::string file = writeTemp("line.txt", travel::kittiPoseLine(pose));
+    const auto back = travel::readKittiPoses(file);
+    ASSERT_EQ(back.size(), 1u);
+    EXPECT_TRUE(back.poses[0].isApprox(pose, 1e-8));
+    std::remove(file.c_str());
+    fs::remove_all(dir);
+}
+
 TEST(PoseFiles, ErrorsNameTheFileLineAndWhatWasExpected) {
     EXPECT_NE(poseError("1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n").find(":2: expected 8 numbers"),
               std::string::npos);

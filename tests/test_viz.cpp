@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "travel/MotionEstimator.hpp"
 #include "travel/io/VelodyneModels.hpp"
 #include "travel/viz/BirdsEye.hpp"
+#include "travel/viz/PngFile.hpp"
+#include "travel/viz/TrackPicture.hpp"
 
 using travel::viz::Raster;
 using travel::viz::Rgb;
@@ -94,4 +98,44 @@ TEST(VelodyneModels, ModelStringsAndRowFallback) {
     EXPECT_STREQ(travel::io::velodyneModelFor("HDL-32E", 0)->name, "HDL32");
     EXPECT_STREQ(travel::io::velodyneModelFor("", 32)->name, "HDL32");
     EXPECT_FALSE(travel::io::velodyneModelFor("OS1-64", 64));
+}
+
+// ---------------------------------------------------------------- tracks picture, PNG file
+
+TEST(TrackPicture, DrawsTracksInTheirColourAndTheEgoPath) {
+    std::vector<travel::viz::TrackFrame> frames(3);
+    for (int k = 0; k < 3; ++k) {
+        frames[k].ego_x = float(k);
+        frames[k].tracks.push_back({7u, 10.f, float(k), 0.f, 10.f, k == 2});
+    }
+    travel::viz::TrackPictureOptions options;
+    options.size_px = 200;
+    const travel::viz::Raster r = travel::viz::renderTracks(frames, options);
+    ASSERT_EQ(r.width, 200);
+    const uint32_t colour = travel::viz::clusterColour(7);
+    const travel::viz::Rgb want{uint8_t(colour >> 16), uint8_t(colour >> 8), uint8_t(colour)};
+    int track_pixels = 0, black = 0;
+    for (int v = 0; v < r.height; ++v)
+        for (int u = 0; u < r.width; ++u) {
+            const travel::viz::Rgb c = r.at(u, v);
+            track_pixels += c.r == want.r && c.g == want.g && c.b == want.b;
+            black += c.r == 0 && c.g == 0 && c.b == 0;
+        }
+    EXPECT_GT(track_pixels, 10);
+    EXPECT_GT(black, 5);
+}
+
+TEST(PngFile, WritesAValidStoredPng) {
+    travel::viz::Raster r;
+    r.reset(300, 250, {10, 20, 30});  // > 65535 bytes of scanlines: several stored blocks
+    const std::string path = ::testing::TempDir() + "/travel_png_test.png";
+    travel::viz::writePng(r, path);
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 8u + 25u + 12u);
+    EXPECT_EQ(bytes.substr(1, 3), "PNG");
+    EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+    const std::size_t raw = 250 * (1 + 3 * 300), blocks = (raw + 65534) / 65535;
+    EXPECT_EQ(bytes.size(), 8 + 25 + (12 + 2 + 5 * blocks + raw + 4) + 12);
+    EXPECT_THROW(travel::viz::writePng(r, "/nonexistent/dir/x.png"), std::runtime_error);
 }

@@ -357,7 +357,7 @@ void runRegistration(benchmark::State& state) {
                 p.head<2>().norm() <= FrameTracker::registration_range)
                 points[f].push_back(p);
         }
-    ScanRegistration registration;
+    ScanRegistration registration(RegistrationParams::nonGroundOdometry());
     for (auto _ : state) {
         registration.setTarget(points[0]);
         benchmark::DoNotOptimize(registration.align(points[1], Eigen::Isometry3d::Identity()));

@@ -154,7 +154,9 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "A cluster continues a track only if its centroid lies within this xy distance of the "     \
       "track's predicted position")                                                               \
     X(double, gate_box_margin, 0.5, "m", 0.0, 1e3,                                                \
-      "... and its world-frame box overlaps the track's predicted box grown by this margin")      \
+      "... and its world-frame box overlaps the track's predicted box grown by this margin; "     \
+      "an unassigned cluster centred in a matched track's box grown by it is a fragment of that " \
+      "object and carries its id")                                                                \
     X(double, gate_size_ratio, 0.4, "", 0.0, 1.0,                                                 \
       "... and the smaller of the two box diagonals is at least this share of the larger")        \
     X(double, max_object_extent, 100.0, "m", 0.1, 1e4,                                            \
@@ -176,7 +178,7 @@ VelocitySource velocitySourceFromString(const std::string& text);
       "A confirmed track ends after this many consecutive frames without a cluster")              \
     X(double, moving_speed_on, 1.0, "m/s", 0.0, 1e3,                                              \
       "A track becomes moving when its speed exceeds this for moving_frames_on frames in a row")  \
-    X(int, moving_frames_on, 3, "", 1, 1000, "... that many frames")                              \
+    X(int, moving_frames_on, 5, "", 1, 1000, "... that many frames")                              \
     X(double, moving_speed_off, 0.5, "m/s", 0.0, 1e3,                                             \
       "A moving track stops moving when its speed falls below this (hysteresis: < "               \
       "moving_speed_on)")

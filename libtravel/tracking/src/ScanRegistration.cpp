@@ -38,10 +38,14 @@ std::vector<Eigen::Vector3d> voxelFilter(const std::vector<Eigen::Vector3d>& poi
     return out;
 }
 
-int64_t ScanRegistration::cellKey(const Eigen::Vector3d& p, int dx, int dy, int dz) const {
+int64_t ScanRegistration::cellKey(int64_t ix, int64_t iy, int64_t iz) {
+    return packKey(ix, iy, iz);
+}
+
+int64_t ScanRegistration::cellKey(const Eigen::Vector3d& p) const {
     const double s = params_.neighbour_radius;
-    return packKey(int64_t(std::floor(p.x() / s)) + dx, int64_t(std::floor(p.y() / s)) + dy,
-                   int64_t(std::floor(p.z() / s)) + dz);
+    return packKey(int64_t(std::floor(p.x() / s)), int64_t(std::floor(p.y() / s)),
+                   int64_t(std::floor(p.z() / s)));
 }
 
 void ScanRegistration::setTarget(const std::vector<Eigen::Vector3d>& points) {
@@ -58,39 +62,44 @@ void ScanRegistration::setTarget(const std::vector<Eigen::Vector3d>& points) {
         cells_.emplace(keyed[a].first, std::make_pair(a, b));
         a = b;
     }
-    // Normals: PCA of the k nearest points, all within the radius.
+    // Normals are estimated when a correspondence first needs them (most target points are
+    // never the nearest of a source point): see normalAt.
+    normals_.assign(target_.size(), Eigen::Vector3d::Zero());
+    has_normal_.assign(target_.size(), kNormalUnknown);
+}
+
+bool ScanRegistration::normalAt(uint32_t i) {
+    if (has_normal_[i] != kNormalUnknown) return has_normal_[i] == kNormalFound;
+    has_normal_[i] = kNormalNone;
+    // PCA of the k nearest points, all within the radius.
     const int k = params_.normal_neighbours;
     const double r2 = params_.neighbour_radius * params_.neighbour_radius;
-    normals_.assign(target_.size(), Eigen::Vector3d::Zero());
-    has_normal_.assign(target_.size(), 0);
-    std::vector<std::pair<double, uint32_t>> near;
-    for (std::size_t i = 0; i < target_.size(); ++i) {
-        const Eigen::Vector3d& p = target_[i];
-        near.clear();
-        forEachNeighbour(p, [&](uint32_t j) {
-            const double d2 = (target_[j] - p).squaredNorm();
-            if (d2 <= r2) near.emplace_back(d2, j);
-        });
-        if (near.size() < std::size_t(k)) continue;
-        const std::size_t n = std::size_t(k);
-        std::partial_sort(near.begin(), near.begin() + n, near.end());
-        Eigen::Vector3d c = Eigen::Vector3d::Zero();
-        for (std::size_t j = 0; j < n; ++j) c += target_[near[j].second];
-        c /= double(n);
-        Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-        for (std::size_t j = 0; j < n; ++j) {
-            const Eigen::Vector3d d = target_[near[j].second] - c;
-            C += d * d.transpose();
-        }
-        normals_[i] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
-        has_normal_[i] = 1;
+    const Eigen::Vector3d& p = target_[i];
+    near_.clear();
+    forEachNeighbour(p, params_.neighbour_radius, [&](uint32_t j) {
+        const double d2 = (target_[j] - p).squaredNorm();
+        if (d2 <= r2) near_.emplace_back(d2, j);
+    });
+    if (near_.size() < std::size_t(k)) return false;
+    const std::size_t n = std::size_t(k);
+    std::partial_sort(near_.begin(), near_.begin() + n, near_.end());
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (std::size_t j = 0; j < n; ++j) c += target_[near_[j].second];
+    c /= double(n);
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (std::size_t j = 0; j < n; ++j) {
+        const Eigen::Vector3d d = target_[near_[j].second] - c;
+        C += d * d.transpose();
     }
+    normals_[i] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
+    has_normal_[i] = kNormalFound;
+    return true;
 }
 
 int ScanRegistration::nearest(const Eigen::Vector3d& p, double max_distance) const {
     double best = max_distance * max_distance;
     int found = -1;
-    forEachNeighbour(p, [&](uint32_t j) {
+    forEachNeighbour(p, max_distance, [&](uint32_t j) {
         const double d2 = (target_[j] - p).squaredNorm();
         if (d2 < best || (d2 == best && found >= 0 && int(j) < found)) {
             best = d2;
@@ -113,7 +122,7 @@ Eigen::Isometry3d ScanRegistration::align(const std::vector<Eigen::Vector3d>& so
         for (const Eigen::Vector3d& p0 : points) {
             const Eigen::Vector3d p = T * p0;
             const int i = nearest(p, max_d);
-            if (i < 0 || !has_normal_[i]) continue;
+            if (i < 0 || !normalAt(uint32_t(i))) continue;
             const Eigen::Vector3d& n = normals_[i];
             const double residual = n.dot(p - target_[i]);
             Eigen::Matrix<double, 6, 1> J;

@@ -76,12 +76,43 @@ void Tracker::updateMovingFlag(Track& track) const {
 }
 
 void Tracker::endLostTracks() {
-    const int max_misses = params_.max_misses;
-    tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
-                                 [max_misses](const Track& track) {
-                                     return track.misses >= (track.confirmed ? max_misses : 1);
-                                 }),
-                  tracks_.end());
+    // Tracks with a cluster this frame never end here: only their indices shift.
+    std::vector<int>& new_index = track_to_cluster_;  // no longer needed: reused
+    new_index.assign(tracks_.size(), -1);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < tracks_.size(); ++k) {
+        const Track& track = tracks_[k];
+        if (track.misses >= (track.confirmed ? params_.max_misses : 1)) continue;
+        new_index[k] = static_cast<int>(kept);
+        if (kept != k) tracks_[kept] = std::move(tracks_[k]);
+        ++kept;
+    }
+    tracks_.resize(kept);
+    for (int& k : cluster_to_track_)
+        if (k >= 0) k = new_index[k];
+}
+
+void Tracker::attachFragments(const std::vector<ClusterSummary>& clusters) {
+    // A cluster no track took, whose centre lies inside the predicted (gate) box of a
+    // confirmed track that did take one, is a fragment of that object (a split): it continues
+    // the track instead of founding a new one. The track's measurement is its largest part.
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+        if (cluster_to_track_[c] >= 0 || std::isnan(cluster_boxes_[c].centre.x())) continue;
+        const Eigen::Vector2d centre = cluster_boxes_[c].centre;
+        for (std::size_t k = 0; k < tracks_.size(); ++k) {
+            const int main = track_to_cluster_[k];
+            if (main < 0 || !tracks_[k].confirmed) continue;
+            const WorldBox& gate = track_boxes_[k];
+            const double m = params_.gate_box_margin;
+            if ((centre.array() < gate.min.head<2>().array() - m).any() ||
+                (centre.array() > gate.max.head<2>().array() + m).any())
+                continue;
+            cluster_to_track_[c] = static_cast<int>(k);
+            if (clusters[c].num_points > clusters[main].num_points)
+                track_to_cluster_[k] = static_cast<int>(c);
+            break;
+        }
+    }
 }
 
 void Tracker::fillCluster(const Track& track, const Eigen::Matrix3d& aligned_R_world,
@@ -113,6 +144,15 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         },
         pairs_, track_to_cluster_, cluster_to_track_);
 
+    const Eigen::Matrix3d aligned_R_world = world_T_aligned.linear().transpose();
+    for (ClusterSummary& c : clusters) {
+        c.track_id = 0;
+        c.velocity.setZero();
+        c.velocity_sigma.setZero();
+        c.moving = false;
+    }
+    attachFragments(clusters);
+
     for (std::size_t k = 0; k < tracks_.size(); ++k) {
         Track& track = tracks_[k];
         track.cluster = track_to_cluster_[k];
@@ -129,6 +169,11 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         track.motion.shift(position - before);
         track.motion.correct(position, params_.position_sigma);
         track.box = measured;
+        for (std::size_t c = 0; c < clusters.size(); ++c)  // a split: the union box
+            if (cluster_to_track_[c] == static_cast<int>(k)) {
+                track.box.min = track.box.min.cwiseMin(cluster_boxes_[c].min);
+                track.box.max = track.box.max.cwiseMax(cluster_boxes_[c].max);
+            }
         track.box.centre = track.position();
         track.z = (world_T_aligned * clusters[track.cluster].centroid.cast<double>()).z();
         ++track.hits;
@@ -154,6 +199,7 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();
         track.hits = 1;
         track.cluster = static_cast<int>(c);
+        cluster_to_track_[c] = static_cast<int>(tracks_.size());
         if (params_.confirm_hits <= 1) {
             track.confirmed = true;
             track.id = next_id_++;
@@ -161,16 +207,11 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         tracks_.push_back(track);
     }
 
-    const Eigen::Matrix3d aligned_R_world = world_T_aligned.linear().transpose();
-    for (ClusterSummary& c : clusters) {
-        c.track_id = 0;
-        c.velocity.setZero();
-        c.velocity_sigma.setZero();
-        c.moving = false;
+    // Every cluster of a track (its fragments too) carries the track's id and velocity.
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+        const int k = cluster_to_track_[c];
+        if (k >= 0 && tracks_[k].confirmed) fillCluster(tracks_[k], aligned_R_world, clusters[c]);
     }
-    for (const Track& track : tracks_)
-        if (track.confirmed && track.cluster >= 0)
-            fillCluster(track, aligned_R_world, clusters[track.cluster]);
 }
 
 }  // namespace travel

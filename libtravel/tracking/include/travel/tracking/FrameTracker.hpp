@@ -17,8 +17,9 @@ namespace travel {
 
 class FrameTracker {
   public:
-    explicit FrameTracker(const TrackingParams& tracking = {},
-                          const RegistrationParams& registration = {});
+    explicit FrameTracker(
+        const TrackingParams& tracking = {},
+        const RegistrationParams& registration = RegistrationParams::nonGroundOdometry());
 
     /// One frame: `cloud` in the sensor frame with one label per point, `aligned_rotation`
     /// sensor -> aligned (the frame of `clusters`). world_T_sensor: the frame's pose when known;

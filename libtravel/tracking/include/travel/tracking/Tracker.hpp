@@ -69,7 +69,10 @@ class Tracker {
 
   private:
     void predictTracks(double t);
+    /// Ends the lost tracks; cluster_to_track_ follows the shifted indices.
     void endLostTracks();
+    /// Gives the unassigned clusters inside a confirmed, associated track's gate box to it.
+    void attachFragments(const std::vector<ClusterSummary>& clusters);
     void updateMovingFlag(Track& track) const;
     /// Where `track` locates `cluster`: the centre of its full box on the visible faces, or the
     /// centroid for long tracks (full_box_max_length).
