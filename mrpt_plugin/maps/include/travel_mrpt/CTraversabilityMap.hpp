@@ -65,8 +65,9 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     CellState state(long cell) const { return grid_.state(cell, options_); }
     /// The OctoMap of the voxels. Frames update a flat store of the voxels' log-odds
     /// (travel::VoxelLogOdds); the tree is brought up to date here, with the voxels changed
-    /// since the last call: same leaves and values as updating it frame by frame. Not to be
-    /// called while another thread fuses voxels (fuseVoxels, fuseFrame).
+    /// since the last call: same nodes and values as updating it frame by frame. The first
+    /// call after frames writes into the tree: not to be called while another thread fuses
+    /// voxels (fuseVoxels, fuseFrame) or reads the map.
     const octomap::OcTree& octree() const;
 
     /// The filter that segments each observation: feed it IMU / odometry (processImu...) in
