@@ -493,6 +493,64 @@ TEST_F(MapFusion, InnerNodesHoldTheMaxOfTheirChildren) {
     EXPECT_EQ(differ, 0u);
 }
 
+TEST_F(MapFusion, TreeReadEveryFrameOrOnlyAtTheEndIsTheSame) {
+    // Frames update the voxels' log-odds in a flat store; octree() writes the changes into the
+    // tree when read. Reading after every frame or once at the end gives the same tree, node
+    // for node (inner nodes included), as the map updated frame by frame.
+    CTraversabilityMap every(testOptions()), once(testOptions());
+    const auto poses = travel_map_test::robotPoses();
+    for (std::size_t k = 0; k < 6; ++k) {
+        const auto obs = travel_map_test::sweep(*scene_, k);
+        ASSERT_TRUE(every.insertObservation(*obs, poses[k]));
+        ASSERT_TRUE(once.insertObservation(*obs, poses[k]));
+        EXPECT_GT(every.octree().getNumLeafNodes(), 0u);
+    }
+    expectSameMaps(every, once);
+    ASSERT_EQ(every.octree().size(), once.octree().size());
+    std::size_t differ = 0;
+    for (auto a = every.octree().begin_tree(), b = once.octree().begin_tree();
+         a != every.octree().end_tree() && b != once.octree().end_tree(); ++a, ++b)
+        differ += a->getLogOdds() != b->getLogOdds() || a.getKey() != b.getKey() ||
+                  a.getDepth() != b.getDepth();
+    EXPECT_EQ(differ, 0u);
+}
+
+TEST_F(MapFusion, PrunedTreeLoadedContinuesWithItsValues) {
+    // A pruned .ot (a user's, or OctoMap's prune()) holds one node for 8 equal children: the
+    // voxels under it start from its value when a frame updates them, as OcTree::updateNode
+    // would expand it. Against the same tree expanded: every voxel has the same value.
+    const std::string dir = mrpt::system::getTempFileName() + "_map_pruned";
+    std::filesystem::create_directories(dir);
+    const std::string pruned = dir + "/pruned", expanded = dir + "/expanded";
+    map_->saveTo(pruned);
+    map_->saveTo(expanded);
+    octomap::OcTree tree(map_->octree());
+    const std::size_t nodes = tree.size();
+    tree.prune();
+    ASSERT_LT(tree.size(), nodes);  // something to expand
+    ASSERT_TRUE(tree.write(pruned + ".ot"));
+    CTraversabilityMap a, b;
+    a.loadFrom(pruned);
+    b.loadFrom(expanded);
+    const auto poses = travel_map_test::robotPoses();
+    for (std::size_t k = 0; k < 3; ++k) {
+        const auto obs = travel_map_test::sweep(*scene_, k);
+        ASSERT_TRUE(a.insertObservation(*obs, poses[k]));
+        ASSERT_TRUE(b.insertObservation(*obs, poses[k]));
+    }
+    std::size_t missing = 0, differ = 0;
+    for (auto it = b.octree().begin_leafs(), end = b.octree().end_leafs(); it != end; ++it) {
+        const octomap::OcTreeNode* node = a.octree().search(it.getKey());
+        if (!node)
+            ++missing;
+        else
+            differ += node->getLogOdds() != it->getLogOdds();
+    }
+    EXPECT_EQ(missing, 0u);
+    EXPECT_EQ(differ, 0u);
+    std::filesystem::remove_all(dir);
+}
+
 /// One hand-made segmented frame: labelled points in the aligned frame (here the world axes),
 /// the sensor 2 m above its ground.
 struct HandFrame {

@@ -196,4 +196,24 @@ void VoxelUpdate::cast(std::size_t ground_stride, const Eigen::Vector3d& origin)
     takeKeys(seen_, free_keys_);
 }
 
+void VoxelLogOdds::add(const std::vector<uint64_t>& keys, float delta, float min, float max,
+                       BlockFill fill, void* context) {
+    for (uint64_t key : keys) {
+        const uint64_t corner = cornerOf(key);
+        if (corner != last_corner_) {  // keys come block by block (VoxelUpdate's order)
+            auto [it, inserted] = blocks_.try_emplace(corner);
+            last_ = &it->second, last_corner_ = corner;
+            if (inserted) fill(context, corner, last_->value);
+            if (!last_->listed) changed_.push_back(corner), last_->listed = true;
+        }
+        const int index = localIndex(key);
+        // OcTree::updateNodeLogOdds: add, then clamp.
+        float& value = last_->value[index];
+        value += delta;
+        if (value < min) value = min;
+        if (value > max) value = max;
+        last_->changed[index >> 6] |= uint64_t(1) << (index & 63);
+    }
+}
+
 }  // namespace travel

@@ -71,57 +71,90 @@ octomap::OcTreeKey unpack(uint64_t v) {
     return octomap::OcTreeKey(uint16_t(v >> 32), uint16_t(v >> 16), uint16_t(v));
 }
 
-/// One frame's voxel updates, `free` and `occupied` disjoint, applied with one walk down the
-/// tree: consecutive keys (in octree order, as VoxelUpdate lists them) share most of their
-/// path from the root, so
-/// each update descends only from the deepest node it shares with the previous one (not from
-/// the root twice, as OcTree::updateNode does with its early-abort search), and a node's
-/// occupancy (the max of its children, as updateInnerOccupancy sets it) is refreshed when the
-/// walk leaves it: only the nodes above this frame's voxels, not the whole tree.
-void applyVoxelUpdates(octomap::OcTree& tree, const std::vector<uint64_t>& free,
-                       const std::vector<uint64_t>& occupied) {
-    constexpr int kDepth = 16;  // OctoMap's tree depth: keys of 16 bits
-    octomap::OcTreeNode* path[kDepth + 1];
-    bool created[kDepth + 1];
-    int valid = -1;  // path[0..valid] is the current path
-    uint64_t previous = 0;
-    const auto leave = [&](int depth) {  // refresh the inner nodes below `depth` on the path
-        for (; valid > depth; --valid)
-            if (valid < kDepth) path[valid]->updateOccupancyChildren();
-    };
-    const auto apply = [&](uint64_t packed, float log_odds) {
+/// Sets leaf values of the tree, keys in any order (octree order is fastest), with one walk
+/// down the tree: consecutive keys share most of their path from the root, so each descends
+/// only from the deepest node it shares with the previous one (not from the root twice, as
+/// OcTree::updateNode does with its early-abort search), creating nodes as updateNode does (a
+/// pruned node expanded, its children inheriting its value), and a node's occupancy (the max
+/// of its children, as updateInnerOccupancy sets it) is refreshed when the walk leaves it:
+/// only the nodes above the voxels set, not the whole tree. finish() refreshes the rest.
+class LeafWalk {
+  public:
+    explicit LeafWalk(octomap::OcTree& tree) : tree_(tree) {}
+
+    void set(uint64_t packed, float log_odds) {
         const octomap::OcTreeKey key = unpack(packed);
-        if (!tree.getRoot()) {  // the root is the tree's to create: the first update of a tree
-            tree.updateNode(key, log_odds, /*lazy_eval=*/false);
+        if (!tree_.getRoot()) {  // the root is the tree's to create: the first node of a tree
+            tree_.setNodeValue(key, log_odds, /*lazy_eval=*/false);
             return;
         }
-        if (valid < 0) {
-            path[0] = tree.getRoot(), created[0] = false, valid = 0;
+        if (valid_ < 0) {
+            path_[0] = tree_.getRoot(), created_[0] = false, valid_ = 0;
         } else {
             // Deepest shared node: the child index at depth d uses key bit (15 - d).
-            const uint64_t differ = packed ^ previous;
+            const uint64_t differ = packed ^ previous_;
             const uint32_t bits = uint32_t((differ >> 32) | (differ >> 16) | differ) & 0xFFFF;
             leave(bits ? kDepth - 1 - (31 - __builtin_clz(bits)) : kDepth);
         }
-        for (int d = valid; d < kDepth; ++d) {
-            octomap::OcTreeNode* node = path[d];
+        for (int d = valid_; d < kDepth; ++d) {
+            octomap::OcTreeNode* node = path_[d];
             const unsigned child = octomap::computeChildIdx(key, kDepth - 1 - d);
             bool just_created = false;
-            if (!tree.nodeChildExists(node, child)) {
-                if (!tree.nodeHasChildren(node) && !created[d])
-                    tree.expandNode(node);  // a pruned node: its children inherit its value
+            if (!tree_.nodeChildExists(node, child)) {
+                if (!tree_.nodeHasChildren(node) && !created_[d])
+                    tree_.expandNode(node);  // a pruned node: its children inherit its value
                 else
-                    tree.createNodeChild(node, child), just_created = true;
+                    tree_.createNodeChild(node, child), just_created = true;
             }
-            path[d + 1] = tree.getNodeChild(node, child), created[d + 1] = just_created;
+            path_[d + 1] = tree_.getNodeChild(node, child), created_[d + 1] = just_created;
         }
-        valid = kDepth;
-        tree.updateNodeLogOdds(path[kDepth], log_odds);  // adds and clamps
-        previous = packed;
-    };
-    for (uint64_t key : free) apply(key, tree.getProbMissLog());
-    for (uint64_t key : occupied) apply(key, tree.getProbHitLog());
-    leave(-1);
+        valid_ = kDepth;
+        path_[kDepth]->setLogOdds(log_odds);
+        previous_ = packed;
+    }
+    void finish() { leave(-1); }
+
+  private:
+    static constexpr int kDepth = 16;  // OctoMap's tree depth: keys of 16 bits
+    /// Refreshes the inner nodes below `depth` on the path.
+    void leave(int depth) {
+        for (; valid_ > depth; --valid_)
+            if (valid_ < kDepth) path_[valid_]->updateOccupancyChildren();
+    }
+    octomap::OcTree& tree_;
+    octomap::OcTreeNode* path_[kDepth + 1];
+    bool created_[kDepth + 1];
+    int valid_ = -1;  // path_[0..valid_] is the current path
+    uint64_t previous_ = 0;
+};
+
+/// VoxelLogOdds::BlockFill from the OctoMap: the log-odds the tree holds for the 8^3 voxels of
+/// a block (a pruned ancestor's value, 0 for a voxel the tree lacks: a new node's value).
+void fillBlockFromTree(void* context, uint64_t corner, float* values) {
+    const auto& tree = *static_cast<const octomap::OcTree*>(context);
+    constexpr int kBlockDepth = 16 - travel::VoxelLogOdds::kBlockBits;
+    constexpr int kVoxels = 1 << (3 * travel::VoxelLogOdds::kBlockBits);
+    const octomap::OcTreeKey key = unpack(corner);
+    const octomap::OcTreeNode* node = tree.getRoot();
+    for (int d = 0; node && d < kBlockDepth; ++d) {
+        if (!tree.nodeHasChildren(node)) break;  // a pruned node: its value for all
+        const unsigned child = octomap::computeChildIdx(key, 15 - d);
+        node = tree.nodeChildExists(node, child) ? tree.getNodeChild(node, child) : nullptr;
+    }
+    if (!node || !tree.nodeHasChildren(node)) {
+        std::fill(values, values + kVoxels, node ? node->getLogOdds() : 0.f);
+        return;
+    }
+    for (int index = 0; index < kVoxels; ++index) {
+        // The block's index interleaves the x, y, z bits as the children's numbers do.
+        const octomap::OcTreeNode* voxel = node;
+        for (int level = travel::VoxelLogOdds::kBlockBits - 1; voxel && level >= 0; --level) {
+            if (!tree.nodeHasChildren(voxel)) break;
+            const unsigned child = unsigned(index >> (3 * level)) & 7;
+            voxel = tree.nodeChildExists(voxel, child) ? tree.getNodeChild(voxel, child) : nullptr;
+        }
+        values[index] = voxel ? voxel->getLogOdds() : 0.f;
+    }
 }
 
 }  // namespace
@@ -130,6 +163,9 @@ struct CTraversabilityMap::Scratch {
     travel::Result static_result;  ///< the frame without its moving objects, when it has any
     travel::RayEnds ends;
     travel::VoxelUpdate voxels;
+    /// The voxels' log-odds, the master copy for every block it holds: fuseVoxels() updates
+    /// them here, syncOctree() writes the changed ones into the OctoMap when it is read.
+    travel::VoxelLogOdds log_odds;
 };
 
 CTraversabilityMap::CTraversabilityMap(const TraversabilityMapOptions& options)
@@ -148,7 +184,7 @@ CTraversabilityMap& CTraversabilityMap::operator=(const CTraversabilityMap& othe
     if (this == &other) return *this;
     setOptions(other.options_);
     grid_ = other.grid_;
-    octree_ = std::make_unique<octomap::OcTree>(*other.octree_);  // copy constructor only
+    octree_ = std::make_unique<octomap::OcTree>(other.octree());  // copy constructor only
     frames_inserted_ = other.frames_inserted_;
     obstacle_points_dirty_ = true;
     return *this;
@@ -167,6 +203,20 @@ void CTraversabilityMap::resetOctree() {
     octree_ = std::make_unique<octomap::OcTree>(options_.octomap_resolution);
     octree_->setProbHit(options_.octomap_prob_hit);
     octree_->setProbMiss(options_.octomap_prob_miss);
+    scratch_->log_odds.clear();
+}
+
+const octomap::OcTree& CTraversabilityMap::octree() const {
+    syncOctree();
+    return *octree_;
+}
+
+void CTraversabilityMap::syncOctree() const {
+    travel::VoxelLogOdds& store = scratch_->log_odds;
+    if (!store.hasChanges()) return;
+    LeafWalk walk(*octree_);
+    store.takeChanged([&](uint64_t key, float log_odds) { walk.set(key, log_odds); });
+    walk.finish();
 }
 
 void CTraversabilityMap::internal_clear() {
@@ -256,13 +306,20 @@ double CTraversabilityMap::fuseVoxels(const travel::RayEnds& rays) {
     const Eigen::Vector3d origin = rays.origin.cast<double>() * inv_res +
                                    Eigen::Vector3d::Constant(double(octree_->coordToKey(0.0)));
     voxels.cast(std::size_t(options_.ray_stride), origin);
-    applyVoxelUpdates(*octree_, voxels.freeKeys(), voxels.occupiedKeys());
+    // Free and occupied are disjoint: one update per voxel and frame, as OcTree::updateNode.
+    const float min = float(octree_->getClampingThresMinLog()),
+                max = float(octree_->getClampingThresMaxLog());
+    travel::VoxelLogOdds& store = scratch_->log_odds;
+    store.add(voxels.freeKeys(), octree_->getProbMissLog(), min, max, fillBlockFromTree,
+              octree_.get());
+    store.add(voxels.occupiedKeys(), octree_->getProbHitLog(), min, max, fillBlockFromTree,
+              octree_.get());
     obstacle_points_dirty_ = true;
     return msSince(start);
 }
 
 bool CTraversabilityMap::isEmpty() const {
-    return grid_.empty() && octree_->getNumLeafNodes() == 0;
+    return grid_.empty() && octree().getNumLeafNodes() == 0;
 }
 
 double CTraversabilityMap::internal_computeObservationLikelihood(
@@ -274,8 +331,9 @@ const mrpt::maps::CSimplePointsMap* CTraversabilityMap::getAsSimplePointsMap() c
     if (!obstacle_points_) obstacle_points_ = std::make_shared<mrpt::maps::CSimplePointsMap>();
     if (obstacle_points_dirty_) {
         obstacle_points_->clear();
-        for (auto it = octree_->begin_leafs(), end = octree_->end_leafs(); it != end; ++it)
-            if (octree_->isNodeOccupied(*it))
+        const octomap::OcTree& tree = octree();
+        for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
+            if (tree.isNodeOccupied(*it))
                 obstacle_points_->insertPointFast(float(it.getX()), float(it.getY()),
                                                   float(it.getZ()));
         obstacle_points_->mark_as_modified();
@@ -308,7 +366,7 @@ std::string CTraversabilityMap::asString() const {
     out << "CTraversabilityMap: " << grid_.sizeX() << " x " << grid_.sizeY() << " cells of "
         << options_.resolution << " m, " << grid_.observedCells() << " observed ("
         << counts[int(CellState::Traversable)] << " traversable, "
-        << counts[int(CellState::Obstacle)] << " obstacle), OctoMap " << octree_->getNumLeafNodes()
+        << counts[int(CellState::Obstacle)] << " obstacle), OctoMap " << octree().getNumLeafNodes()
         << " leaves of " << options_.octomap_resolution << " m, " << frames_inserted_ << " frames";
     return out.str();
 }
@@ -376,7 +434,7 @@ uint8_t CTraversabilityMap::serializeGetVersion() const {
 void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
     writeGridState(out);
     std::ostringstream bt;
-    octree_->writeBinaryConst(bt);
+    octree().writeBinaryConst(bt);
     out << bt.str();
 }
 
@@ -386,6 +444,7 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     std::string bt;
     in >> bt;
     std::istringstream bt_in(bt);
+    scratch_->log_odds.clear();  // the tree read is the master copy now
     if (!octree_->readBinary(bt_in))
         throw std::runtime_error("CTraversabilityMap: corrupt OctoMap data");
     obstacle_points_dirty_ = true;
@@ -409,7 +468,7 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
     commit(grid_path + ".part", grid_path);
     {
         std::ofstream out(tree_path + ".part", std::ios::binary);
-        if (!out || !octree_->write(out) || !out.flush())
+        if (!out || !octree().write(out) || !out.flush())
             throw std::runtime_error(tree_path + ": cannot write");
     }
     commit(tree_path + ".part", tree_path);
@@ -465,6 +524,7 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
     setOptions(loaded.options_);
     grid_ = std::move(loaded.grid_);
     octree_ = std::move(loaded.octree_);
+    scratch_->log_odds.clear();  // the tree read is the master copy now
     frames_inserted_ = loaded.frames_inserted_;
     obstacle_points_dirty_ = true;
 }

@@ -63,7 +63,12 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     /// State of the cell holding world (x, y); Unknown outside the grid.
     CellState stateAt(double x, double y) const;
     CellState state(long cell) const { return grid_.state(cell, options_); }
-    const octomap::OcTree& octree() const { return *octree_; }
+    /// The OctoMap of the voxels. Frames update a flat store of the voxels' log-odds
+    /// (travel::VoxelLogOdds); the tree is brought up to date here, with the voxels changed
+    /// since the last call: same nodes and values as updating it frame by frame. The first
+    /// call after frames writes into the tree: not to be called while another thread fuses
+    /// voxels (fuseVoxels, fuseFrame) or reads the map.
+    const octomap::OcTree& octree() const;
 
     /// The filter that segments each observation: feed it IMU / odometry (processImu...) in
     /// rawlog order for levelling and deskew. Its options are options().travel.
@@ -146,6 +151,8 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
         return false;
     }
     void resetOctree();
+    /// Writes the voxels changed since the last call into octree_ (octree() and every reader).
+    void syncOctree() const;
     /// Options, grid arrays and frame count (serialization and saveTo's grid file).
     void writeGridState(mrpt::serialization::CArchive& out) const;
     void readGridState(mrpt::serialization::CArchive& in);

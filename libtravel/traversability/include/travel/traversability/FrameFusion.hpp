@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "travel/Config.hpp"
@@ -55,6 +58,89 @@ void fuseFrame(const PlacedFrame& frame, const MapSection& map, TraversabilityGr
 /// (coordinate / resolution + 32768, floored). Packed into one integer: 16 bits per axis.
 inline uint64_t packVoxelKey(uint32_t x, uint32_t y, uint32_t z) {
     return (uint64_t(x) << 32) | (uint64_t(y) << 16) | uint64_t(z);
+}
+
+/// The log-odds of every voxel a map has updated, in a flat store (blocks of 8^3 voxels in a
+/// hash by block), for an occupancy map updated every frame but read seldom: the voxel map's
+/// master copy, while the OctoMap is brought up to date only when someone reads it
+/// (CTraversabilityMap::octree()). add() is OctoMap's update of a node, value += delta clamped
+/// to [min, max] in float, so the values are OctoMap's; takeChanged() lists the voxels changed
+/// since its last call in octree (depth-first) order, for one walk down the tree.
+class VoxelLogOdds {
+  public:
+    /// Fills the 512 values of a block on its first update (the voxel map's values before
+    /// the store held it: 0 for a voxel never seen), given the key of its lowest corner and
+    /// `values` in the block's order (localIndex). Called once per block, not per voxel.
+    using BlockFill = void (*)(void* context, uint64_t corner, float* values);
+
+    /// Adds `delta` to each voxel of `keys` (packVoxelKey, distinct), clamped to [min, max].
+    void add(const std::vector<uint64_t>& keys, float delta, float min, float max, BlockFill fill,
+             void* context);
+    /// Calls visit(key, value) for every voxel changed since the last call, in octree order,
+    /// and forgets the changes.
+    template <class Visit>
+    void takeChanged(Visit&& visit);
+    /// Forgets every value (the voxel map was replaced or cleared).
+    void clear() { blocks_.clear(), changed_.clear(), last_ = nullptr, last_corner_ = ~0ull; }
+    bool hasChanges() const { return !changed_.empty(); }
+    std::size_t blocks() const { return blocks_.size(); }
+
+    static constexpr int kBlockBits = 3, kBlock = 1 << kBlockBits;
+    /// A voxel's index in its block: x, y, z bits interleaved (x lowest), as OctoMap numbers
+    /// children, so that increasing indices are a depth-first walk.
+    static int localIndex(uint64_t key) {
+        return int(kSpread[(key >> 32) & 7] | (kSpread[(key >> 16) & 7] << 1) |
+                   (kSpread[key & 7] << 2));
+    }
+    static uint64_t cornerOf(uint64_t key) { return key & ~packVoxelKey(7, 7, 7); }
+    /// The key of voxel `index` (localIndex) of the block at `corner`.
+    static uint64_t keyAt(uint64_t corner, int index) {
+        const auto axis = [index](int a) {
+            return uint32_t(((index >> a) & 1) | ((index >> (a + 2)) & 2) |
+                            ((index >> (a + 4)) & 4));
+        };
+        return corner + packVoxelKey(axis(0), axis(1), axis(2));
+    }
+
+  private:
+    static constexpr int kSpread[kBlock] = {0, 1, 8, 9, 64, 65, 72, 73};
+    struct Block {
+        float value[kBlock * kBlock * kBlock];
+        uint64_t changed[kBlock * kBlock * kBlock / 64] = {};
+        bool listed = false;  ///< in changed_
+    };
+    std::unordered_map<uint64_t, Block> blocks_;  ///< by corner key; nodes never move
+    std::vector<uint64_t> changed_;               ///< corners of the blocks with changes
+    Block* last_ = nullptr;                       ///< the block of the previous key
+    uint64_t last_corner_ = ~0ull;
+    std::vector<std::pair<uint64_t, uint64_t>> order_;  ///< takeChanged's scratch
+};
+
+template <class Visit>
+void VoxelLogOdds::takeChanged(Visit&& visit) {
+    // Blocks in depth-first order: their corner's x, y, z bits interleaved from the top.
+    const auto morton = [](uint64_t corner) {
+        uint64_t code = 0;
+        for (int bit = 15; bit >= kBlockBits; --bit)
+            code = (code << 3) | ((corner >> (32 + bit)) & 1) |
+                   (((corner >> (16 + bit)) & 1) << 1) | (((corner >> bit) & 1) << 2);
+        return code;
+    };
+    order_.clear();
+    for (uint64_t corner : changed_) order_.emplace_back(morton(corner), corner);
+    std::sort(order_.begin(), order_.end());
+    for (const auto& [code, corner] : order_) {
+        Block& block = blocks_.find(corner)->second;
+        for (int w = 0; w < int(std::size(block.changed)); ++w) {
+            for (uint64_t word = block.changed[w]; word; word &= word - 1) {
+                const int index = w * 64 + __builtin_ctzll(word);
+                visit(keyAt(corner, index), block.value[index]);
+            }
+            block.changed[w] = 0;
+        }
+        block.listed = false;
+    }
+    changed_.clear();
 }
 
 /// One frame's update of a voxel occupancy map (OctoMap) the way fast mappers do it: every voxel
