@@ -239,8 +239,8 @@ int run(int argc, char** argv) {
                     map.octree().getNumLeafNodes(), map.options().octomap_resolution,
                     map.getAsSimplePointsMap()->size());
         std::printf(
-            "  time: mapping %.2f s (%.1f ms per frame; CPU %.1f ms per frame, all "
-            "threads), exports %.2f s\n",
+            "  time: mapping %.2f s in all, start-up and first frame included (mean %.1f ms per "
+            "frame; CPU %.1f ms per frame, all threads), exports %.2f s\n",
             map_seconds, 1000.0 * map_seconds / double(stats.inserted),
             1000.0 * map_cpu_seconds / double(stats.inserted), export_seconds);
         if (!stats.times.empty()) {
