@@ -13,6 +13,15 @@ void ConstantVelocityModel::start(const Eigen::Vector2d& position, double positi
         velocity_sigma * velocity_sigma, velocity_sigma * velocity_sigma;
 }
 
+void ConstantVelocityModel::startWithVelocityOf(const Eigen::Vector2d& position,
+                                                double position_sigma,
+                                                const ConstantVelocityModel& other) {
+    x_ << position, other.velocity();
+    P_.setZero();
+    P_.topLeftCorner<2, 2>().diagonal().setConstant(position_sigma * position_sigma);
+    P_.bottomRightCorner<2, 2>() = other.velocityCovariance();
+}
+
 void ConstantVelocityModel::predict(double dt, double acceleration_sigma) {
     if (!(dt > 0)) return;
     Covariance F = Covariance::Identity();

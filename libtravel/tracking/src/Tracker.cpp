@@ -29,6 +29,12 @@ WorldBox worldBox(const ClusterSummary& c, const Eigen::Isometry3d& world_T_alig
     return box;
 }
 
+/// Whether `point` lies in the xy footprint of `box` grown by `grow` on every side.
+bool insideGrown(const WorldBox& box, const Eigen::Vector2d& point, double grow) {
+    return (point.array() >= box.min.head<2>().array() - grow).all() &&
+           (point.array() <= box.max.head<2>().array() + grow).all();
+}
+
 }  // namespace
 
 Tracker::Tracker(const TrackingParams& params) : params_(params) {
@@ -37,6 +43,7 @@ Tracker::Tracker(const TrackingParams& params) : params_(params) {
 
 void Tracker::reset() {
     tracks_.clear();
+    lost_.clear();
     next_id_ = 1;
     next_birth_ = 0;
 }
@@ -61,6 +68,38 @@ void Tracker::predictTracks(double t) {
         gate_box.max.head<2>().array() += grow;
         track_boxes_.push_back(gate_box);
     }
+    std::size_t kept = 0;
+    for (Track& track : lost_) {
+        const Eigen::Vector2d before = track.position();
+        track.motion.predict(t - track.last_time, params_.acceleration_sigma);
+        track.box.min.head<2>() += track.position() - before;
+        track.box.max.head<2>() += track.position() - before;
+        track.last_time = std::max(track.last_time, t);
+        if (++track.misses > 2 * params_.max_misses) continue;
+        lost_[kept++] = std::move(track);
+    }
+    lost_.resize(kept);
+}
+
+const ConstantVelocityModel* Tracker::velocityDonor(const Eigen::Vector2d& position) {
+    Track* best = nullptr;
+    double best_distance = 0;
+    const auto consider = [&](Track& track) {
+        if (!track.confirmed || !track.moving || track.misses == 0 || track.velocity_given) return;
+        // Inside the predicted box grown by the margin, 2 sigma and the object's length: the
+        // part seen again (a car's front) need not be the part last seen (its rear).
+        const double grow = params_.gate_box_margin + track.extent.box().size.x() +
+                            2.0 * std::sqrt(std::max(track.motion.covariance()(0, 0),
+                                                     track.motion.covariance()(1, 1)));
+        if (!insideGrown(track.box, position, grow)) return;
+        const double distance = (track.position() - position).norm();
+        if (!best || distance < best_distance) best = &track, best_distance = distance;
+    };
+    for (Track& track : tracks_) consider(track);
+    for (Track& track : lost_) consider(track);
+    if (!best) return nullptr;
+    best->velocity_given = true;
+    return &best->motion;
 }
 
 Eigen::Vector2d Tracker::positionOf(const Track& track, const WorldBox& cluster) const {
@@ -82,7 +121,10 @@ void Tracker::endLostTracks() {
     std::size_t kept = 0;
     for (std::size_t k = 0; k < tracks_.size(); ++k) {
         const Track& track = tracks_[k];
-        if (track.misses >= (track.confirmed ? params_.max_misses : 1)) continue;
+        if (track.misses >= (track.confirmed ? params_.max_misses : 1)) {
+            if (track.confirmed && track.moving) lost_.push_back(std::move(tracks_[k]));
+            continue;
+        }
         new_index[k] = static_cast<int>(kept);
         if (kept != k) tracks_[kept] = std::move(tracks_[k]);
         ++kept;
@@ -102,11 +144,7 @@ void Tracker::attachFragments(const std::vector<ClusterSummary>& clusters) {
         for (std::size_t k = 0; k < tracks_.size(); ++k) {
             const int main = track_to_cluster_[k];
             if (main < 0 || !tracks_[k].confirmed) continue;
-            const WorldBox& gate = track_boxes_[k];
-            const double m = params_.gate_box_margin;
-            if ((centre.array() < gate.min.head<2>().array() - m).any() ||
-                (centre.array() > gate.max.head<2>().array() + m).any())
-                continue;
+            if (!insideGrown(track_boxes_[k], centre, params_.gate_box_margin)) continue;
             cluster_to_track_[c] = static_cast<int>(k);
             if (clusters[c].num_points > clusters[main].num_points)
                 track_to_cluster_[k] = static_cast<int>(c);
@@ -193,8 +231,11 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         track.birth = next_birth_++;
         track.last_time = t;
         track.extent.update(cluster_boxes_[c].flat);
-        track.motion.start(positionOf(track, cluster_boxes_[c]), params_.position_sigma,
-                           params_.initial_velocity_sigma);
+        const Eigen::Vector2d position = positionOf(track, cluster_boxes_[c]);
+        if (const ConstantVelocityModel* donor = velocityDonor(position))
+            track.motion.startWithVelocityOf(position, params_.position_sigma, *donor);
+        else
+            track.motion.start(position, params_.position_sigma, params_.initial_velocity_sigma);
         track.box = cluster_boxes_[c];
         track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();
         track.hits = 1;

@@ -18,6 +18,10 @@ class ConstantVelocityModel {
 
     /// At rest at `position`, with the given 1-sigma of position [m] and velocity [m/s].
     void start(const Eigen::Vector2d& position, double position_sigma, double velocity_sigma);
+    /// Like start(), but moving with the velocity (and its covariance) of `other`: an object
+    /// found again after an occlusion keeps the velocity its old track had.
+    void startWithVelocityOf(const Eigen::Vector2d& position, double position_sigma,
+                             const ConstantVelocityModel& other);
     /// Moves the state `dt` seconds ahead (dt <= 0: nothing); `acceleration_sigma` [m/s^2].
     void predict(double dt, double acceleration_sigma);
     /// Moves the position estimate by `delta` [m] (a new reference point), velocity unchanged.

@@ -12,6 +12,9 @@
 //    misses (meanwhile it coasts on its prediction and can be picked up again, same id);
 //  - position: the centre of the largest box the track has seen, placed on the visible faces
 //    (ObjectExtent.hpp); the centroid for tracks longer than full_box_max_length;
+//  - found again: a track born near where a moving track that lost its object (coasting, or
+//    ended up to max_misses frames ago) is predicted starts with that track's velocity instead
+//    of at rest (an occluded car found again as a new track);
 //  - moving: set once the speed exceeds moving_speed_on for moving_frames_on frames in a row,
 //    cleared when it falls below moving_speed_off.
 // Deterministic: tracks are kept in birth order and every choice has a fixed tie order, so the
@@ -37,6 +40,7 @@ struct Track {
     int hits = 0;                  ///< associated frames
     int misses = 0;                ///< consecutive frames without a cluster
     int fast_frames = 0;           ///< consecutive frames above moving_speed_on
+    bool velocity_given = false;   ///< a new track took its velocity (Tracker::velocityDonor)
     double last_time = 0;          ///< [s] time of the last update
     ConstantVelocityModel motion;  ///< world-frame xy position and velocity
     WorldBox box;  ///< last associated cluster's box, world frame (centre: filtered position)
@@ -74,6 +78,10 @@ class Tracker {
     /// Gives the unassigned clusters inside a confirmed, associated track's gate box to it.
     void attachFragments(const std::vector<ClusterSummary>& clusters);
     void updateMovingFlag(Track& track) const;
+    /// The velocity a track born at `position` inherits: that of the moving track predicted
+    /// nearest to it (within the gate distance plus 2 sigma) among those coasting or ended in
+    /// the last max_misses frames, each given once; null if none.
+    const ConstantVelocityModel* velocityDonor(const Eigen::Vector2d& position);
     /// Where `track` locates `cluster`: the centre of its full box on the visible faces, or the
     /// centroid for long tracks (full_box_max_length).
     Eigen::Vector2d positionOf(const Track& track, const WorldBox& cluster) const;
@@ -82,6 +90,7 @@ class Tracker {
 
     TrackingParams params_;
     std::vector<Track> tracks_;
+    std::vector<Track> lost_;  ///< moving tracks ended lately: a new track may take their velocity
     uint32_t next_id_ = 1;
     uint64_t next_birth_ = 0;
     Eigen::Vector2d sensor_{0, 0};  ///< this frame's sensor position, world xy
