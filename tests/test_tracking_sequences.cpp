@@ -161,6 +161,9 @@ TEST(TrackingSynthetic, FiguresWithGivenPoses) {
     }
     // The oncoming car passes the ego vehicle: its visible faces change and move the centroid.
     EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 0.7);
+    // The crossing car, occluded for 4 frames, is found again as a new track that inherits the
+    // old track's velocity (Tracker::velocityDonor; 1.68 m/s mean when it started at rest).
+    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 0.7);
     for (const uint32_t parked : {3u, 5u}) {
         EXPECT_EQ(run.mot.track_ids.at(parked).size(), 1u) << "parked object " << parked;
     }
@@ -181,8 +184,9 @@ TEST(TrackingSynthetic, AcceptanceParkedKeepOneId) {
 
 // Issue 19's acceptance, moving cars' velocity within 0.3 m/s: NOT met yet (docs/tracking.md,
 // "Limits"): the oncoming car's visible faces change as it passes (the centroid of the visible
-// part is the measurement), and the crossing car is occluded for 4 frames and found again as a
-// new track that starts at rest. Run with --gtest_also_run_disabled_tests.
+// part is the measurement), and the crossing car, found again after a 4-frame occlusion as a new
+// track with the old track's velocity, underestimates its speed while its visible part grows.
+// Run with --gtest_also_run_disabled_tests.
 TEST(TrackingSynthetic, DISABLED_AcceptanceCarsVelocityWithin0_3) {
     const SimRun run = runSim(true);
     for (const uint32_t car : {11u, 12u}) {
