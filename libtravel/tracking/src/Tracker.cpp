@@ -35,6 +35,11 @@ bool insideGrown(const WorldBox& box, const Eigen::Vector2d& point, double grow)
            (point.array() <= box.max.head<2>().array() + grow).all();
 }
 
+/// Whether the whole xy footprint of `part` lies in that of `box` grown by `grow`.
+bool footprintInsideGrown(const WorldBox& box, const WorldBox& part, double grow) {
+    return insideGrown(box, part.min.head<2>(), grow) && insideGrown(box, part.max.head<2>(), grow);
+}
+
 }  // namespace
 
 Tracker::Tracker(const TrackingParams& params) : params_(params) {
@@ -135,16 +140,22 @@ void Tracker::endLostTracks() {
 }
 
 void Tracker::attachFragments(const std::vector<ClusterSummary>& clusters) {
-    // A cluster no track took, whose centre lies inside the predicted (gate) box of a
-    // confirmed track that did take one, is a fragment of that object (a split): it continues
-    // the track instead of founding a new one. The track's measurement is its largest part.
+    // A cluster no track took, lying wholly inside the predicted (gate) box of a confirmed
+    // track that did take one, is a fragment of that object (a split): it continues the track
+    // instead of founding a new one. The track's measurement is its largest part. Wholly, not
+    // only its centre: a split leaves its pieces within the object's extent, while an object
+    // that comes into view beside a tracked one reaches out of that object's box; and a piece
+    // is no longer than the whole (the largest view of the object seen so far).
     for (std::size_t c = 0; c < clusters.size(); ++c) {
         if (cluster_to_track_[c] >= 0 || std::isnan(cluster_boxes_[c].centre.x())) continue;
-        const Eigen::Vector2d centre = cluster_boxes_[c].centre;
         for (std::size_t k = 0; k < tracks_.size(); ++k) {
             const int main = track_to_cluster_[k];
             if (main < 0 || !tracks_[k].confirmed) continue;
-            if (!insideGrown(track_boxes_[k], centre, params_.gate_box_margin)) continue;
+            if (!footprintInsideGrown(track_boxes_[k], cluster_boxes_[c],
+                                      params_.gate_box_margin) ||
+                cluster_boxes_[c].flat.size.x() >
+                    tracks_[k].extent.box().size.x() + params_.gate_box_margin)
+                continue;
             cluster_to_track_[c] = static_cast<int>(k);
             if (clusters[c].num_points > clusters[main].num_points)
                 track_to_cluster_[k] = static_cast<int>(c);
