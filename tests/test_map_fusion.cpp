@@ -19,6 +19,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #include "map/MapTestScene.hpp"
@@ -467,6 +469,19 @@ TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
     EXPECT_NE(message.find(swapped + ".travelgrid: not a traversability grid file"),
               std::string::npos)
         << message;
+    // A corrupt node stream (every node claiming a child, deeper than a tree can be) is refused
+    // before octomap's recursive reader sees it.
+    const std::string deep = dir + "/deep";
+    copyTo(deep);
+    {
+        std::ifstream in(prefix + ".ot", std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        bytes.resize(bytes.find("\ndata\n") + 6);
+        for (int node = 0; node < 1000; ++node) bytes += std::string("\0\0\0\0\x01", 5);
+        std::ofstream(deep + ".ot", std::ios::binary | std::ios::trunc) << bytes;
+    }
+    EXPECT_NE(errorOf([&] { loaded.loadFrom(deep); }).find(deep + ".ot: corrupt"),
+              std::string::npos);
     EXPECT_EQ(loaded.asString(), before);
     std::filesystem::remove_all(dir);
 }

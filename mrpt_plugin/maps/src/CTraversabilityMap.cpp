@@ -13,10 +13,12 @@
 #include <octomap/OcTree.h>
 
 #include <algorithm>
+#include <bitset>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 
@@ -155,6 +157,42 @@ void fillBlockFromTree(void* context, uint64_t corner, float* values) {
         }
         values[index] = voxel ? voxel->getLogOdds() : 0.f;
     }
+}
+
+/// Checks the node stream of an OctoMap .ot file before octomap reads it: octomap's reader
+/// (readNodesRecurs) recurses once per child bit without a depth limit and reads on past the end
+/// of a truncated stream, so a corrupt file overflows the stack instead of failing. The stream
+/// after the "data" header line is, depth first, per node a float value and a byte of child
+/// bits; a complete one ends exactly at the end of the file with no node deeper than 16.
+/// Returns what is wrong, or an empty string.
+std::string otNodeStreamProblem(const std::string& bytes) {
+    const std::string marker = "\ndata\n";
+    const std::size_t data = bytes.find(marker);
+    if (bytes.rfind("# Octomap OcTree file", 0) != 0 || data == std::string::npos)
+        return "not an OctoMap OcTree file (.ot)";
+    constexpr std::size_t kNodeBytes = sizeof(float) + 1;
+    constexpr std::size_t kMaxDepth = 16;  // octomap's tree depth
+    std::size_t pos = data + marker.size();
+    std::vector<int> pending;  // children still to read, per open level
+    const auto readNode = [&]() {
+        if (bytes.size() - pos < kNodeBytes) return false;
+        pending.push_back(
+            static_cast<int>(std::bitset<8>(static_cast<unsigned char>(bytes[pos + 4])).count()));
+        pos += kNodeBytes;
+        return true;
+    };
+    if (!readNode()) return "truncated (no root node)";
+    while (!pending.empty()) {
+        if (pending.back() == 0) {
+            pending.pop_back();
+            continue;
+        }
+        --pending.back();
+        if (pending.size() > kMaxDepth) return "corrupt: a node deeper than 16 levels";
+        if (!readNode()) return "truncated";
+    }
+    if (pos != bytes.size()) return "corrupt: bytes after the last node";
+    return {};
 }
 
 }  // namespace
@@ -504,8 +542,12 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
         }
     }
     {
-        std::ifstream in(tree_path, std::ios::binary);
-        if (!in) throw std::runtime_error(tree_path + ": cannot open");
+        std::ifstream file(tree_path, std::ios::binary);
+        if (!file) throw std::runtime_error(tree_path + ": cannot open");
+        std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        const std::string problem = otNodeStreamProblem(bytes);
+        if (!problem.empty()) throw std::runtime_error(tree_path + ": " + problem);
+        std::istringstream in(std::move(bytes));
         std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
         auto* tree = dynamic_cast<octomap::OcTree*>(any.get());
         if (!tree || in.fail())
