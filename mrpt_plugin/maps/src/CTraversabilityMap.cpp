@@ -308,17 +308,12 @@ double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses:
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
     const auto start = Clock::now();
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
-    const mrpt::poses::CPose3D sensor_in_world = robotPose + frame.sensorPose;
+    const AlignedInWorld world = alignedInWorld(frame, robotPose);
     // Objects the tracker flags moving stay out of the static map (grid and OctoMap).
     const travel::Result& static_result =
         travel::withoutMovingClusters(frame.result, scratch_->static_result);
-    const travel::PlacedFrame placed{
-        *frame.aligned, static_result,
-        sensor_in_world.getRotationMatrix().asEigen().cast<float>() *
-            frame.alignedRotation.transpose(),
-        Eigen::Vector3f(float(sensor_in_world.x()), float(sensor_in_world.y()),
-                        float(sensor_in_world.z())),
-        mrpt::Clock::toDouble(frame.timestamp)};
+    const travel::PlacedFrame placed{*frame.aligned, static_result, world.rotation, world.origin,
+                                     mrpt::Clock::toDouble(frame.timestamp)};
     travel::fuseFrame(placed, options_, grid_, rays);
     ++frames_inserted_;
     return msSince(start);
