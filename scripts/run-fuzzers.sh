@@ -11,7 +11,9 @@
 # Longer runs (nightly / before a release), e.g. one hour per target:
 #   scripts/run-fuzzers.sh 3600
 # Environment: FUZZ_TARGETS="fuzz_params fuzz_segmentation" (subset), FUZZ_JOBS=N (parallel
-# libFuzzer workers per target, default 1), FUZZ_RAWLOG=0 (skip fuzz_rawlog),
+# libFuzzer workers per target, default 1), FUZZ_PARALLEL=N (targets fuzzed at the same time,
+# default: the number of cores; each target still gets its full SECONDS_PER_TARGET of one core),
+# FUZZ_RAWLOG=0 (skip fuzz_rawlog),
 # TRAVEL_FUZZ_MRPT=OFF (do not even build fuzz_rawlog),
 # CXX (default clang++). Reproduce a finding: build-fuzz/<target> build-fuzz/findings/<target>/crash-*
 set -euo pipefail
@@ -22,6 +24,7 @@ BUILD="${ROOT}/build-fuzz"
 CXX="${CXX:-clang++}"
 MRPT="${TRAVEL_FUZZ_MRPT:-ON}"
 JOBS="${FUZZ_JOBS:-1}"
+PARALLEL="${FUZZ_PARALLEL:-$(nproc)}"
 
 generator=()
 command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
@@ -50,19 +53,15 @@ targets=(fuzz_kitti_bin fuzz_scan_reader fuzz_label_file fuzz_params fuzz_segmen
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:symbolize=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
-failed=()
-summary=()
-for t in "${targets[@]}"; do
-    work="${BUILD}/fuzz-work/${t}"
-    findings="${BUILD}/findings/${t}"
-    rm -rf "${work}"
-    mkdir -p "${work}/corpus" "${findings}"
-    cp -r "${ROOT}/tests/fuzz/corpus/${t}/." "${work}/corpus/" 2>/dev/null || true
+# One target: fuzz it, then write its summary line to ${BUILD}/fuzz-work/<target>/result (the
+# first word says whether it failed), so that targets can run side by side.
+fuzz_target() {
+    local t="$1"
+    local work="${BUILD}/fuzz-work/${t}"
+    local findings="${BUILD}/findings/${t}"
+    local log="${work}/fuzz.log"
+    local seeds runs cov corpus status=0 extra=() target_asan result
     seeds=$(find "${work}/corpus" -type f | wc -l)
-    log="${work}/fuzz.log"
-    echo "=== ${t}: ${SECONDS_PER_TARGET} s, ${seeds} seeds"
-    status=0
-    extra=()
     [[ "${JOBS}" -gt 1 ]] && extra=(-fork="${JOBS}" -ignore_crashes=0)
     target_asan="${ASAN_OPTIONS}"
     [[ "${t}" == "fuzz_rawlog" ]] && target_asan="${ASAN_OPTIONS}:allocator_may_return_null=1:max_allocation_size_mb=256"
@@ -75,14 +74,41 @@ for t in "${targets[@]}"; do
     corpus=$(find "${work}/corpus" -type f | wc -l)
     if [[ ${status} -ne 0 ]] || grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|FUZZ_CHECK failed' "${log}"; then
         result="FOUND SOMETHING (exit ${status}); see ${log} and ${findings}/"
-        failed+=("${t}")
         grep -E 'ERROR:|runtime error:|FUZZ_CHECK|SUMMARY|Test unit written' "${log}" | head -8 || true
+        echo "FAILED ${t}: runs ${runs:-?}, ${cov:-cov ?}, corpus ${seeds} -> ${corpus} files: ${result}" >"${work}/result"
     else
-        result="nothing found"
+        echo "ok ${t}: runs ${runs:-?}, ${cov:-cov ?}, corpus ${seeds} -> ${corpus} files: nothing found" >"${work}/result"
     fi
-    line="${t}: runs ${runs:-?}, ${cov:-cov ?}, corpus ${seeds} -> ${corpus} files: ${result}"
-    echo "${line}"
+}
+
+running=0
+for t in "${targets[@]}"; do
+    work="${BUILD}/fuzz-work/${t}"
+    rm -rf "${work}"
+    mkdir -p "${work}/corpus" "${BUILD}/findings/${t}"
+    cp -r "${ROOT}/tests/fuzz/corpus/${t}/." "${work}/corpus/" 2>/dev/null || true
+    echo "=== ${t}: ${SECONDS_PER_TARGET} s, $(find "${work}/corpus" -type f | wc -l) seeds"
+    if [[ ${running} -ge ${PARALLEL} ]]; then
+        wait -n || true
+        running=$((running - 1))
+    fi
+    fuzz_target "${t}" &
+    running=$((running + 1))
+done
+wait || true
+
+failed=()
+summary=()
+for t in "${targets[@]}"; do
+    result_file="${BUILD}/fuzz-work/${t}/result"
+    if [[ ! -f "${result_file}" ]]; then
+        summary+=("${t}: no result (the run did not finish)")
+        failed+=("${t}")
+        continue
+    fi
+    read -r status line <"${result_file}"
     summary+=("${line}")
+    [[ "${status}" == "FAILED" ]] && failed+=("${t}")
 done
 
 echo

@@ -61,13 +61,13 @@ TEST_P(TravelOnRampKerb, ReachesTheGoalUpTheRampWithoutCollision) {
     EXPECT_LT(r.time, 40.0);
 }
 
-// Seeds 0-4: the file's world and four variants. Seed 2 (kerb moved by +0.26 m in x, -0.19 m in
-// y) used to stop in front of the kerb; see docs/navigation.md for what was fixed.
+// Seed 0 is the file's world; seed 2 (kerb moved by +0.26 m in x, -0.19 m in y) used to stop in
+// front of the kerb (docs/navigation.md says what was fixed, and gives seeds 0-4). Two seeds keep
+// CI's closed-loop time down.
 #ifndef TRAVEL_SANITIZED
-INSTANTIATE_TEST_SUITE_P(Seeds, TravelOnRampKerb, ::testing::Values(0u, 1u, 2u, 3u, 4u));
+INSTANTIATE_TEST_SUITE_P(Seeds, TravelOnRampKerb, ::testing::Values(0u, 2u));
 #else
-// Sanitizer builds (3-5x slower) look for memory errors, not for behaviour: one seed is enough;
-// the plain build runs all five.
+// Sanitizer builds (3-5x slower) look for memory errors, not for behaviour: one seed is enough.
 INSTANTIATE_TEST_SUITE_P(Seeds, TravelOnRampKerb, ::testing::Values(2u));
 #endif
 
