@@ -31,11 +31,46 @@
 #include "travel/TriGridField.hpp"
 
 namespace travel {
-namespace {}  // namespace
 
 inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
     const float dx = px_[a] - px_[b], dy = py_[a] - py_[b], dz = pz_[a] - pz_[b];
     return dx * dx + dy * dy + dz * dz;
+}
+
+void RunClustering::markNearRuns(const RunBox& a, int lo, uint32_t begin, uint32_t end,
+                                 float max_gap2) {
+    near_.resize(end - begin);
+    const float *lx = run_lo_[0].data(), *ly = run_lo_[1].data(), *lz = run_lo_[2].data();
+    const float *hx = run_hi_[0].data(), *hy = run_hi_[1].data(), *hz = run_hi_[2].data();
+    const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
+    int32_t* near = near_.data();
+    // Branch-free, so that it vectorises: the boxes of most pairs are apart, along any axis.
+    for (uint32_t b = begin; b < end; ++b) {
+        const float gx = std::max(0.f, std::max(a.lo[0] - hx[b], lx[b] - a.hi[0]));
+        const float gy = std::max(0.f, std::max(a.lo[1] - hy[b], ly[b] - a.hi[1]));
+        const float gz = std::max(0.f, std::max(a.lo[2] - hz[b], lz[b] - a.hi[2]));
+        const float gap2 = gx * gx + gy * gy + gz * gz;
+        near[b - begin] =
+            (col_end[b] >= lo) & (col_end[b] - col_begin[b] <= kLongSpan) & (gap2 < max_gap2);
+    }
+}
+
+// Squared gap between box a and run b's box (0 where they overlap): no two of their points
+// are closer.
+float RunClustering::boxGap2(const RunBox& a, int b) const {
+    float gap2 = 0.f;
+    for (int d = 0; d < 3; ++d) {
+        const float g = std::max(0.f, std::max(a.lo[d] - run_hi_[d][b], run_lo_[d][b] - a.hi[d]));
+        gap2 += g * g;
+    }
+    return gap2;
+}
+
+inline void RunClustering::growBox(int run, uint32_t k) {
+    for (int d = 0; d < 3; ++d) {
+        run_lo_[d][run] = std::min(run_lo_[d][run], point(d)[k]);
+        run_hi_[d][run] = std::max(run_hi_[d][run], point(d)[k]);
+    }
 }
 
 int RunClustering::find(int run) {
@@ -60,13 +95,15 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(key_count_, cells + 1);
     prefault(sorted_, points), prefault(sorted_col_, points), prefault(point_run_, points);
     prefault(px_, points), prefault(py_, points), prefault(pz_, points), prefault(range_, points);
-    prefault(run_points_, points), prefault(point_id_, points);
+    prefault(next_in_run_, points), prefault(point_id_, points);
+    prefault(input_, points), prefault(key_, points);
     // Runs: a few points each on real scans; more grow the buffers once.
     const std::size_t runs = points / 4 + 1;
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(run_box_, runs), prefault(cursor_, runs);
-    prefault(run_points_begin_, runs + 1), prefault(run_root_, runs), prefault(root_size_, runs);
+    prefault(parent_, runs), prefault(near_, runs);
+    for (int d = 0; d < 3; ++d) prefault(run_lo_[d], runs), prefault(run_hi_[d], runs);
+    prefault(run_root_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
 
@@ -78,23 +115,27 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t n = labels.size();
 
     // Counting sort of the non-ground points by (row, column); stable, so points sharing a
-    // cell stay in input order (deterministic).
+    // cell stay in input order (deterministic). The points to sort and their keys are first
+    // gathered without branches (ground and non-ground points alternate unpredictably).
     const std::size_t num_keys = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
     key_count_.assign(num_keys + 1, 0);
+    input_.resize(n), key_.resize(n);
+    uint32_t total = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (labels[i] != PointClass::NonGround || row[i] < 0) continue;
-        ++key_count_[static_cast<std::size_t>(row[i]) * cols + col[i] + 1];
+        input_[total] = static_cast<uint32_t>(i);
+        key_[total] = static_cast<uint32_t>(row[i] * cols + col[i]);
+        total += labels[i] == PointClass::NonGround && row[i] >= 0;
     }
+    for (uint32_t m = 0; m < total; ++m) ++key_count_[key_[m] + 1];
     for (std::size_t k = 0; k < num_keys; ++k) key_count_[k + 1] += key_count_[k];
-    const uint32_t total = key_count_[num_keys];
     row_begin_.resize(rows + 1);
     for (int r = 0; r <= rows; ++r) row_begin_[r] = key_count_[static_cast<std::size_t>(r) * cols];
     sorted_.resize(total), sorted_col_.resize(total);
     px_.resize(total), py_.resize(total), pz_.resize(total), range_.resize(total);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (labels[i] != PointClass::NonGround || row[i] < 0) continue;
-        const uint32_t slot = key_count_[static_cast<std::size_t>(row[i]) * cols + col[i]]++;
-        sorted_[slot] = static_cast<uint32_t>(i);
+    for (uint32_t m = 0; m < total; ++m) {
+        const uint32_t i = input_[m];
+        const uint32_t slot = key_count_[key_[m]]++;
+        sorted_[slot] = i;
         sorted_col_[slot] = col[i];
         // Contiguous copies in sorted order: every later access is by sorted position.
         px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
@@ -105,7 +146,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_last_range_.clear();
-    point_run_.resize(total);
+    for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
+    point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
     const float merge2 = t_horz * t_horz;
@@ -135,6 +177,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 if (link) joined = o, joined_slot = s;
             }
             if (joined >= 0) {
+                next_in_run_[run_last_[joined]] = k;
+                next_in_run_[k] = kEndOfRun;
+                growBox(joined, k);
                 run_last_[joined] = k;
                 run_last_range_[joined] = range;
                 run_col_end_[joined] = sorted_col_[k];
@@ -151,7 +196,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
             parent_.push_back(run);
+            for (int d = 0; d < 3; ++d)
+                run_lo_[d].push_back(point(d)[k]), run_hi_[d].push_back(point(d)[k]);
             point_run_[k] = run;
+            next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
@@ -166,40 +214,16 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                     unite(late, early);
     }
     row_runs_begin_[rows] = static_cast<uint32_t>(run_first_.size());
-
-    // Points grouped by run, in column order (counting sort; stable).
-    const std::size_t num_runs = run_first_.size();
-    run_points_begin_.assign(num_runs + 1, 0);
-    for (uint32_t k = 0; k < total; ++k) ++run_points_begin_[point_run_[k] + 1];
-    for (std::size_t run = 0; run < num_runs; ++run)
-        run_points_begin_[run + 1] += run_points_begin_[run];
-    run_points_.resize(total);
-    cursor_.assign(run_points_begin_.begin(), run_points_begin_.end() - 1);
-    for (uint32_t k = 0; k < total; ++k) run_points_[cursor_[point_run_[k]]++] = k;
-
-    // Bounding box of each run: lets the vertical update reject far pairs without comparing
-    // their points.
-    const float inf = std::numeric_limits<float>::infinity();
-    run_box_.assign(num_runs, RunBox{{inf, inf, inf}, {-inf, -inf, -inf}});
-    for (uint32_t k = 0; k < total; ++k) {
-        RunBox& box = run_box_[point_run_[k]];
-        const float v[3] = {px_[k], py_[k], pz_[k]};
-        for (int d = 0; d < 3; ++d)
-            box.lo[d] = std::min(box.lo[d], v[d]), box.hi[d] = std::max(box.hi[d], v[d]);
-    }
 }
 
 bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) const {
     // Both runs' points are in column order: sweep them together, comparing points whose
     // columns differ by at most column_window.
-    const uint32_t b_begin = run_points_begin_[b], b_end = run_points_begin_[b + 1];
-    uint32_t jb = b_begin;
-    for (uint32_t ia = run_points_begin_[a]; ia < run_points_begin_[a + 1]; ++ia) {
-        const uint32_t ka = run_points_[ia];
+    uint32_t jb = run_first_[b];
+    for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
         const int ca = sorted_col_[ka];
-        while (jb < b_end && sorted_col_[run_points_[jb]] < ca - column_window) ++jb;
-        for (uint32_t j = jb; j < b_end; ++j) {
-            const uint32_t kb = run_points_[j];
+        while (jb != kEndOfRun && sorted_col_[jb] < ca - column_window) jb = next_in_run_[jb];
+        for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
             if (sorted_col_[kb] > ca + column_window) break;
             if (dist2(ka, kb) < max_dist2) return true;
         }
@@ -212,11 +236,7 @@ void RunClustering::vertical(const Params& params) {
     const int ext = params.vertical_column_extension;
     const float merge2 =
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
-    // Runs of a row are ordered by first column, so the runs that can overlap [lo, hi] are -
-    // if no run were longer than kLongSpan columns - those starting in [lo - kLongSpan, hi]. The
-    // few longer runs (walls, kerbs) are listed per row and always checked, so one long run cannot
-    // turn the search into a scan of the whole row.
-    constexpr int kLongSpan = 8;
+    // The long runs of each row (see kLongSpan).
     long_runs_.clear(), long_reach_.clear();
     long_runs_begin_.assign(rows + 1, 0);
     for (int r = 0; r < rows; ++r) {
@@ -233,23 +253,16 @@ void RunClustering::vertical(const Params& params) {
     }
     long_runs_begin_[rows] = static_cast<uint32_t>(long_runs_.size());
 
-    auto consider = [&](int a, int b, int lo) {
-        if (run_col_end_[b] < lo) return;
-        // Gap between the two boxes: if it exceeds T_vert, no two points can be closer.
-        float gap2 = 0.f;
-        for (int d = 0; d < 3; ++d) {
-            const float g = std::max(run_box_[a].lo[d] - run_box_[b].hi[d],
-                                     run_box_[b].lo[d] - run_box_[a].hi[d]);
-            if (g > 0.f) gap2 += g * g;
-        }
-        if (gap2 >= merge2 || find(a) == find(b)) return;
-        if (runsTouch(a, b, ext, merge2)) unite(a, b);
-    };
     // Runs of row r are visited in column order, so the first candidate of each lower row
     // only moves forward: one pointer per lower row instead of a binary search per query.
+    // A pair is compared point by point only when its boxes are within T_vert: most pairs in
+    // the column window are not (a wall behind a bush), so the box test is the hot path.
     const int span = params.vertical_ring_span;
     window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
     long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
+    auto mergeIfTouching = [&](int a, int b) {
+        if (find(a) != find(b) && runsTouch(a, b, ext, merge2)) unite(a, b);
+    };
     for (int r = 1; r < rows; ++r) {
         const int lowest = std::max(0, r - span);
         for (int rr = lowest; rr < r; ++rr) {
@@ -257,22 +270,29 @@ void RunClustering::vertical(const Params& params) {
             long_start_[r - 1 - rr] = long_runs_begin_[rr];
         }
         for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
+            RunBox box_a;
+            for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
             for (int rr = r - 1; rr >= lowest; --rr) {
                 uint32_t& start = window_start_[r - 1 - rr];
                 const uint32_t end = row_runs_begin_[rr + 1];
                 while (start < end && run_col_begin_[start] < lo - kLongSpan) ++start;
-                for (uint32_t b = start; b < end && run_col_begin_[b] <= hi; ++b)
-                    if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan)
-                        consider(static_cast<int>(a), static_cast<int>(b), lo);
+                uint32_t stop = start;
+                while (stop < end && run_col_begin_[stop] <= hi) ++stop;
+                markNearRuns(box_a, lo, start, stop, merge2);
+                for (uint32_t b = start; b < stop; ++b)
+                    if (near_[b - start]) mergeIfTouching(static_cast<int>(a), static_cast<int>(b));
                 // Long runs are in first-column order too: start at the first that can reach lo
                 // (forward-moving, as lo only grows) and stop at the first beyond hi.
                 uint32_t& long_start = long_start_[r - 1 - rr];
                 const uint32_t long_end = long_runs_begin_[rr + 1];
                 while (long_start < long_end && long_reach_[long_start] < lo) ++long_start;
                 for (uint32_t l = long_start; l < long_end && run_col_begin_[long_runs_[l]] <= hi;
-                     ++l)
-                    consider(static_cast<int>(a), long_runs_[l], lo);
+                     ++l) {
+                    const int b = long_runs_[l];
+                    if (run_col_end_[b] >= lo && boxGap2(box_a, b) < merge2)
+                        mergeIfTouching(static_cast<int>(a), b);
+                }
             }
         }
     }

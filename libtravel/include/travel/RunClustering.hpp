@@ -62,6 +62,7 @@ class RunClustering {
     std::vector<int32_t> sorted_col_;
     std::vector<uint32_t> row_begin_;
     std::vector<uint32_t> key_count_;
+    std::vector<uint32_t> input_, key_;        // the points to sort and their keys, in input order
     std::vector<float> px_, py_, pz_, range_;  // of each sorted point
 
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
@@ -70,22 +71,37 @@ class RunClustering {
     std::vector<float> run_last_range_;
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
-    std::vector<uint32_t> row_runs_begin_;  // runs of row r: [row_runs_begin_[r], [r + 1])
+    std::vector<uint32_t> row_runs_begin_;      // runs of row r: [row_runs_begin_[r], [r + 1])
+    std::vector<float> run_lo_[3], run_hi_[3];  // bounding box of each run (x, y, z)
     struct RunBox {
         float lo[3], hi[3];
     };
-    std::vector<RunBox> run_box_;
+    float boxGap2(const RunBox& a, int b) const;
+    // Runs of a row are ordered by first column, so the runs that can overlap [lo, hi] are - if
+    // no run were longer than kLongSpan columns - those starting in [lo - kLongSpan, hi]. The
+    // few longer runs (walls, kerbs) are listed per row and always checked, so one long run
+    // cannot turn the search into a scan of the whole row.
+    static constexpr int kLongSpan = 8;
+    // near_[b - begin] = run b of [begin, end) is short, ends at or after column lo and its box
+    // is within sqrt(max_gap2) of box a.
+    void markNearRuns(const RunBox& a, int lo, uint32_t begin, uint32_t end, float max_gap2);
+    std::vector<int32_t> near_;
     std::vector<int32_t> long_runs_;  // runs spanning many columns, by row
     std::vector<uint32_t> long_runs_begin_;
     std::vector<int32_t> long_reach_;     // running max of the long runs' last columns
     std::vector<uint32_t> window_start_;  // per lower row, during the vertical update
     std::vector<uint32_t> long_start_;
     std::vector<int32_t> point_run_;  // run of each sorted point
-    // Points grouped by run (in column order): offsets and sorted-point positions.
-    std::vector<uint32_t> run_points_begin_, run_points_;
+    // The points of a run, in column order: from run_first_, each point's successor, up to
+    // kEndOfRun.
+    static constexpr uint32_t kEndOfRun = 0xffffffffu;
+    std::vector<uint32_t> next_in_run_;
+    const float* point(int axis) const {
+        return axis == 0 ? px_.data() : axis == 1 ? py_.data() : pz_.data();
+    }
+    void growBox(int run, uint32_t k);  // adds sorted point k to the run's box
     std::vector<int32_t> parent_;
     std::vector<int32_t> open_runs_;  // of the ring being swept, most recent last
-    std::vector<uint32_t> cursor_;
 
     // Id assignment scratch.
     std::vector<uint32_t> root_size_, root_first_;
