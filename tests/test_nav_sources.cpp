@@ -116,6 +116,67 @@ TEST(NavSources, HandOverNeverShowsAHalfWrittenSet) {
     EXPECT_FLOAT_EQ(last.z[0], 0.3f);
 }
 
+// A box crossing 4 m ahead (x 3.6..4.4) from the right at 1 m/s, seen by a standing robot for
+// 1.5 s (15 frames): with tracking it is flagged moving and the TRAVEL source hands its path
+// over nav.predict_seconds (3 s) too, where nothing stands yet; its own points are not kept by
+// the memory. Without tracking: only where it is, and the memory keeps a trail.
+TEST(NavSources, MovingObjectIsPredictedAlongItsVelocityAndNotRemembered) {
+    const World world0 =
+        parseWorld("start 0 0 0\ngoal 10 0\nmover 4 -3.5 90 1.2 0.8 1.5 0 1.0\n", "crossing test");
+    const auto run = [&](bool track) {
+        SimOptions o;
+        World world = world0;
+        const Eigen::Isometry3d mount(Eigen::Translation3d(0, 0, o.sensor_height));
+        SimTravel segmenter(o.travel, track, o.tracking);
+        travel_mrpt::TravelObstacleSource source(o.nav);
+        travel::NavSection memory = o.nav;
+        memory.memory_seconds = 1.0, memory.memory_radius = 10.0;  // reaches the box
+        source.setMemory(memory);
+        travel::sim::Scan scan;
+        travel_mrpt::ObstacleFrame frame;
+        frame.sensorOnRobot = mount.cast<float>();
+        for (int k = 0; k < 15; ++k) {
+            const double t = 0.1 * k;
+            placeMovers(world, t);
+            travel::sim::scan(world.scene, o.lidar, mount, scan);
+            frame.cloud = &scan.cloud;
+            segmenter.process(scan.cloud, Eigen::Isometry3d::Identity(), mount, t, frame);
+            frame.timestamp = mrpt::Clock::fromDouble(1.7e9 + t);
+            source.update(frame);
+        }
+        travel_mrpt::ObstaclePoints points;
+        EXPECT_TRUE(source.latest(points));
+        return points;
+    };
+    // At t = 1.4 s the box spans y -2.7..-1.5; in 3 s its front reaches y 1.5.
+    const travel_mrpt::ObstaclePoints tracked = run(true), plain = run(false);
+    EXPECT_GT(countIn(tracked, 3.0, 5.0, -2.7, -1.5), 0);  // where it is
+    EXPECT_GT(countIn(plain, 3.0, 5.0, -2.7, -1.5), 0);
+    EXPECT_GT(countIn(tracked, 3.0, 5.0, -0.5, 1.3), 20);  // where it goes
+    EXPECT_EQ(countIn(plain, 3.0, 5.0, -0.5, 1.3), 0);
+    // Where it was 0.5-1 s ago and no longer is: the memory's trail, kept only without tracking.
+    EXPECT_GT(countIn(plain, 3.0, 5.0, -3.5, -2.9), 0);
+    EXPECT_EQ(countIn(tracked, 3.0, 5.0, -3.5, -2.9), 0);
+    // Nothing behind the box is predicted (the prediction runs along the velocity).
+    EXPECT_EQ(countIn(tracked, 3.0, 5.0, -6.0, -4.5), 0);
+}
+
+TEST(NavWorld, MoversMoveAtTheirVelocity) {
+    World w = parseWorld(
+        "start 0 0 0\ngoal 10 0\nbox 2 2 0 1 1 1\nmover 4 -3 90 1.2 0.8 1.5 0.5 1\n", "mover test");
+    ASSERT_EQ(w.movers.size(), 1u);
+    EXPECT_TRUE(w.obstacles[w.movers[0].obstacle].moving);
+    EXPECT_FALSE(w.obstacles[0].moving);
+    placeMovers(w, 2.0);
+    EXPECT_NEAR(w.scene.boxes[w.movers[0].box].centre.x(), 5.0, 1e-12);
+    EXPECT_NEAR(w.scene.boxes[w.movers[0].box].centre.y(), -1.0, 1e-12);
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto& p : w.obstacles[w.movers[0].obstacle].polygon) centre += p / 4.0;
+    EXPECT_NEAR((centre - Eigen::Vector2d(5.0, -1.0)).norm(), 0.0, 1e-12);
+    EXPECT_THROW(parseWorld("start 0 0 0\ngoal 1 0\nmover 4 -3 90 1.2 0.8 1.5 0.5\n", "m"),
+                 std::runtime_error);
+}
+
 TEST(NavSources, TravelSourceRejectsAFrameWithoutResult) {
     travel::PointCloud cloud;
     cloud.push_back(1, 0, 0);
