@@ -12,6 +12,7 @@
 #include "nav/Collision.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
+#include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
@@ -160,6 +161,39 @@ TEST(NavSources, MovingObjectIsPredictedAlongItsVelocityAndNotRemembered) {
     EXPECT_EQ(countIn(tracked, 3.0, 5.0, -2.7, -2.1), 0);
     // Nothing behind the box is predicted (the prediction runs along the velocity).
     EXPECT_EQ(countIn(tracked, 3.0, 5.0, -6.0, -3.0), 0);
+}
+
+// What the map fuses of a frame with a moving cluster: its points, and every ground or obstacle
+// point within MovingFootprints::kMargin of its box, become outliers; the rest stays.
+TEST(NavSources, WithoutMovingObjectsDropsTheMoversFootprint) {
+    travel::Result r;
+    travel::AlignedCloud a;
+    const auto add = [&](float x, float y, travel::PointClass c, uint32_t id) {
+        a.x.push_back(x), a.y.push_back(y), a.z.push_back(0.f), a.valid.push_back(1);
+        r.labels.push_back(c), r.cluster_id.push_back(id);
+        ++r.class_counts[static_cast<int>(c)];
+    };
+    add(5.0f, 0.0f, travel::PointClass::NonGround, 1);  // the mover's cluster
+    add(5.0f, 0.6f, travel::PointClass::Ground, 0);     // its base: in the grown box
+    add(5.0f, 1.2f, travel::PointClass::Ground, 0);     // beside it: outside
+    add(9.0f, 0.0f, travel::PointClass::NonGround, 2);  // a parked box
+    travel::ClusterSummary mover, parked;
+    mover.id = 1, mover.moving = true;
+    mover.obb_center = {5.f, 0.f, 0.5f}, mover.obb_extent = {1.2f, 0.8f, 1.5f};
+    mover.obb_yaw = 0.f;
+    parked.id = 2, parked.obb_center = {9.f, 0.f, 0.5f}, parked.obb_extent = {1.f, 1.f, 1.f};
+    r.clusters = {mover, parked};
+    travel::Result scratch;
+    const travel::Result& kept = travel::withoutMovingObjects(r, a, scratch);
+    ASSERT_EQ(&kept, &scratch);
+    EXPECT_EQ(kept.labels[0], travel::PointClass::Outlier);
+    EXPECT_EQ(kept.labels[1], travel::PointClass::Outlier);
+    EXPECT_EQ(kept.labels[2], travel::PointClass::Ground);
+    EXPECT_EQ(kept.labels[3], travel::PointClass::NonGround);
+    EXPECT_EQ(kept.count(travel::PointClass::Outlier), 2u);
+    EXPECT_EQ(kept.count(travel::PointClass::Ground), 1u);
+    r.clusters[0].moving = false;  // nothing moves: the result itself, no copy
+    EXPECT_EQ(&travel::withoutMovingObjects(r, a, scratch), &r);
 }
 
 TEST(NavWorld, MoversMoveAtTheirVelocity) {
