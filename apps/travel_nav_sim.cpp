@@ -80,6 +80,12 @@ int run(int argc, char** argv) {
         "Move the world's kerbs and boxes by a seeded random shift (up to +/-0.3 m; 0: as in "
         "the file)",
         false, 0, "N", cmd);
+    TCLAP::SwitchArg track_arg(
+        "", "track",
+        "Track the clusters (TravelFilter's track_objects; parameters: section tracking): objects "
+        "flagged moving are obstacles along their path predicted over nav.predict_seconds, and "
+        "neither the memory nor the map keeps them (sources travel and map)",
+        cmd);
     TCLAP::SwitchArg no_log_arg("", "no-navlog", "Do not write the .reactivenavlog", cmd);
     TCLAP::SwitchArg no_plan_arg(
         "", "no-plan",
@@ -92,6 +98,7 @@ int run(int argc, char** argv) {
     travel::Config default_config;
     default_config.travel = defaults.travel;
     default_config.nav = defaults.nav;
+    default_config.tracking = defaults.tracking;
     const travel::Config configuration = flags.config.load(default_config);
     if (flags.config.print(configuration)) return 0;
     flags.requireAutoFormat("world files");
@@ -115,6 +122,8 @@ int run(int argc, char** argv) {
     options.verbosity = travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     options.travel = configuration.travel;
     options.nav = configuration.nav;
+    options.track = track_arg.getValue();
+    options.tracking = configuration.tracking;
     const auto footprint = footprintFromConfig(config);
 
     if (!quiet)
@@ -131,7 +140,8 @@ int run(int argc, char** argv) {
         const RunReport r = runSimulation(world, options);
         writeTrajectoryCsv(r, stem + ".csv");
         TopViewOptions view;
-        view.title = world.name + ": " + toString(kind) + " obstacles";
+        view.title =
+            world.name + ": " + toString(kind) + " obstacles" + (options.track ? ", tracking" : "");
         mrpt::img::CImage img;
         renderTopView(world, footprint, &r, view, img);
         travel_mrpt::savePicture(img, stem + ".png");
@@ -144,6 +154,9 @@ int run(int argc, char** argv) {
             toString(kind), toString(r.outcome), r.time, r.path_length, r.min_clearance,
             r.min_clearance_to.empty() ? "-" : r.min_clearance_to.c_str(), r.max_height_gain,
             r.mean_step_ms, r.detail.empty() ? "" : "  : ", r.detail.c_str());
+        if (r.min_mover_clearance < 1e9)
+            std::printf("    min clearance to the movers %.2f m%s\n", r.min_mover_clearance,
+                        options.track ? " (tracking on)" : "");
         if (kind == SourceKind::Map)
             std::printf(
                 "    map update + sensing %.2f ms/step (median; map fusion %.2f ms; CPU %.2f ms; "

@@ -8,6 +8,8 @@
 //   - the raw-point source does not climb the ramp (ramp.world: nothing else in the way);
 //   - the height-threshold source climbs that ramp (ramp.world) but hits the kerb on the slope
 //     (ramp_kerb.world);
+//   - a box crossing the robot's path (crossing.world) hits the robot on the per-frame TRAVEL
+//     source; with tracking (its predicted path an obstacle) the robot keeps clear of it;
 //   - the .reactivenavlog the navigator writes deserializes as CLogFileRecords.
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -105,6 +107,26 @@ TEST(NavClosedLoop, MapPlansAroundTheDeadEndWhereTravelIsTrapped) {
     EXPECT_NE(travel.outcome, Outcome::Goal);
     const TrajectorySample& last = travel.trajectory.back();  // still inside the U
     EXPECT_TRUE(last.x > 2.0 && last.x < 9.5 && std::abs(last.y) < 2.5) << last.x << " " << last.y;
+}
+
+// crossing.world: a box crosses the straight line to the goal at 1 m/s, timed to be there when
+// the robot arrives. The per-frame TRAVEL source (no tracking) drives into its path and is hit
+// after ~9 s; with tracking, the box's path over nav.predict_seconds is an obstacle too and the
+// robot keeps clear of it (20 s: the box is long past the robot's line by then).
+TEST(NavClosedLoop, TrackingKeepsClearOfTheCrossingMoverWherePerFrameTravelCollides) {
+    const World world = loadWorld(kShare + "/worlds/crossing.world");
+    const RunReport plain = runSimulation(world, options(SourceKind::Travel, 15.0));
+    print("travel, crossing", plain);
+    EXPECT_EQ(plain.outcome, Outcome::Collision);
+    EXPECT_EQ(plain.min_clearance_to, "mover 1");
+
+    SimOptions o = options(SourceKind::Travel, 20.0);
+    o.track = true;
+    const RunReport tracked = runSimulation(world, o);
+    print("travel + tracking, crossing", tracked);
+    EXPECT_NE(tracked.outcome, Outcome::Collision) << tracked.detail;
+    EXPECT_NE(tracked.outcome, Outcome::NavigatorGaveUp) << tracked.detail;
+    EXPECT_GT(tracked.min_mover_clearance, 0.3);
 }
 
 TEST(NavClosedLoop, RawPointsDoNotClimbTheRamp) {

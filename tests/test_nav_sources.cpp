@@ -12,6 +12,7 @@
 #include "nav/Collision.hpp"
 #include "nav/Simulation.hpp"
 #include "nav/World.hpp"
+#include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelObstacleSource.hpp"
 
@@ -114,6 +115,101 @@ TEST(NavSources, HandOverNeverShowsAHalfWrittenSet) {
     ASSERT_TRUE(source.latest(last));
     EXPECT_EQ(last.size(), 800u);
     EXPECT_FLOAT_EQ(last.z[0], 0.3f);
+}
+
+// A box crossing 4 m ahead (x 3.6..4.4) from the right at 1 m/s, seen by a standing robot for
+// 2.5 s (25 frames): with tracking it is flagged moving and the TRAVEL source hands its path
+// over nav.predict_seconds (3 s) too, where nothing stands yet; its own points are not kept by
+// the memory. Without tracking: only where it is, and the memory keeps a trail.
+TEST(NavSources, MovingObjectIsPredictedAlongItsVelocityAndNotRemembered) {
+    const World world0 =
+        parseWorld("start 0 0 0\ngoal 10 0\nmover 4 -3.5 90 1.2 0.8 1.5 0 1.0\n", "crossing test");
+    const auto run = [&](bool track) {
+        SimOptions o;
+        World world = world0;
+        const Eigen::Isometry3d mount(Eigen::Translation3d(0, 0, o.sensor_height));
+        SimTravel segmenter(o.travel, track, o.tracking);
+        travel_mrpt::TravelObstacleSource source(o.nav);
+        travel::NavSection memory = o.nav;
+        memory.memory_seconds = 1.0, memory.memory_radius = 10.0;  // reaches the box
+        source.setMemory(memory);
+        travel::sim::Scan scan;
+        travel_mrpt::ObstacleFrame frame;
+        frame.sensorOnRobot = mount.cast<float>();
+        for (int k = 0; k < 25; ++k) {
+            const double t = 0.1 * k;
+            placeMovers(world, t);
+            travel::sim::scan(world.scene, o.lidar, mount, scan);
+            frame.cloud = &scan.cloud;
+            segmenter.process(scan.cloud, Eigen::Isometry3d::Identity(), mount, t, frame);
+            frame.timestamp = mrpt::Clock::fromDouble(1.7e9 + t);
+            source.update(frame);
+        }
+        travel_mrpt::ObstaclePoints points;
+        EXPECT_TRUE(source.latest(points));
+        return points;
+    };
+    // At t = 2.4 s the box spans y -1.7..-0.5; in 3 s its front reaches y 2.5. The tracker
+    // flags it moving after moving_frames_on (5) fast frames: well before t = 1.4 s.
+    const travel_mrpt::ObstaclePoints tracked = run(true), plain = run(false);
+    EXPECT_GT(countIn(tracked, 3.0, 5.0, -1.7, -0.5), 0);  // where it is
+    EXPECT_GT(countIn(plain, 3.0, 5.0, -1.7, -0.5), 0);
+    EXPECT_GT(countIn(tracked, 3.0, 5.0, 0.2, 2.3), 20);  // where it goes
+    EXPECT_EQ(countIn(plain, 3.0, 5.0, 0.2, 2.3), 0);
+    // Where it was 0.3-1 s ago and no longer is: the memory's trail, kept only without tracking.
+    EXPECT_GT(countIn(plain, 3.0, 5.0, -2.7, -2.1), 0);
+    EXPECT_EQ(countIn(tracked, 3.0, 5.0, -2.7, -2.1), 0);
+    // Nothing behind the box is predicted (the prediction runs along the velocity).
+    EXPECT_EQ(countIn(tracked, 3.0, 5.0, -6.0, -3.0), 0);
+}
+
+// What the map fuses of a frame with a moving cluster: its points, and every ground or obstacle
+// point within MovingFootprints::kMargin of its box, become outliers; the rest stays.
+TEST(NavSources, WithoutMovingObjectsDropsTheMoversFootprint) {
+    travel::Result r;
+    travel::AlignedCloud a;
+    const auto add = [&](float x, float y, travel::PointClass c, uint32_t id) {
+        a.x.push_back(x), a.y.push_back(y), a.z.push_back(0.f), a.valid.push_back(1);
+        r.labels.push_back(c), r.cluster_id.push_back(id);
+        ++r.class_counts[static_cast<int>(c)];
+    };
+    add(5.0f, 0.0f, travel::PointClass::NonGround, 1);  // the mover's cluster
+    add(5.0f, 0.6f, travel::PointClass::Ground, 0);     // its base: in the grown box
+    add(5.0f, 1.2f, travel::PointClass::Ground, 0);     // beside it: outside
+    add(9.0f, 0.0f, travel::PointClass::NonGround, 2);  // a parked box
+    travel::ClusterSummary mover, parked;
+    mover.id = 1, mover.moving = true;
+    mover.obb_center = {5.f, 0.f, 0.5f}, mover.obb_extent = {1.2f, 0.8f, 1.5f};
+    mover.obb_yaw = 0.f;
+    parked.id = 2, parked.obb_center = {9.f, 0.f, 0.5f}, parked.obb_extent = {1.f, 1.f, 1.f};
+    r.clusters = {mover, parked};
+    travel::Result scratch;
+    const travel::Result& kept = travel::withoutMovingObjects(r, a, scratch);
+    ASSERT_EQ(&kept, &scratch);
+    EXPECT_EQ(kept.labels[0], travel::PointClass::Outlier);
+    EXPECT_EQ(kept.labels[1], travel::PointClass::Outlier);
+    EXPECT_EQ(kept.labels[2], travel::PointClass::Ground);
+    EXPECT_EQ(kept.labels[3], travel::PointClass::NonGround);
+    EXPECT_EQ(kept.count(travel::PointClass::Outlier), 2u);
+    EXPECT_EQ(kept.count(travel::PointClass::Ground), 1u);
+    r.clusters[0].moving = false;  // nothing moves: the result itself, no copy
+    EXPECT_EQ(&travel::withoutMovingObjects(r, a, scratch), &r);
+}
+
+TEST(NavWorld, MoversMoveAtTheirVelocity) {
+    World w = parseWorld(
+        "start 0 0 0\ngoal 10 0\nbox 2 2 0 1 1 1\nmover 4 -3 90 1.2 0.8 1.5 0.5 1\n", "mover test");
+    ASSERT_EQ(w.movers.size(), 1u);
+    EXPECT_TRUE(w.obstacles[w.movers[0].obstacle].moving);
+    EXPECT_FALSE(w.obstacles[0].moving);
+    placeMovers(w, 2.0);
+    EXPECT_NEAR(w.scene.boxes[w.movers[0].box].centre.x(), 5.0, 1e-12);
+    EXPECT_NEAR(w.scene.boxes[w.movers[0].box].centre.y(), -1.0, 1e-12);
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto& p : w.obstacles[w.movers[0].obstacle].polygon) centre += p / 4.0;
+    EXPECT_NEAR((centre - Eigen::Vector2d(5.0, -1.0)).norm(), 0.0, 1e-12);
+    EXPECT_THROW(parseWorld("start 0 0 0\ngoal 1 0\nmover 4 -3 90 1.2 0.8 1.5 0.5\n", "m"),
+                 std::runtime_error);
 }
 
 TEST(NavSources, TravelSourceRejectsAFrameWithoutResult) {

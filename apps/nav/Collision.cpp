@@ -67,9 +67,11 @@ double polygonDistance(const std::vector<Eigen::Vector2d>& a,
     return best;
 }
 
-Clearance clearance(const std::vector<Eigen::Vector2d>& placed, const World& world) {
+Clearance clearance(const std::vector<Eigen::Vector2d>& placed, const World& world,
+                    bool movers_only) {
     Clearance out;
     for (const auto& o : world.obstacles) {
+        if (movers_only && !o.moving) continue;
         double d;
         if (o.radius > 0) {
             const Eigen::Vector2d& c = o.polygon.front();

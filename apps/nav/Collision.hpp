@@ -25,7 +25,9 @@ struct Clearance {
     std::string nearest;    ///< its name ("box 1", ...), empty when there is none
 };
 
-/// Clearance of the placed footprint to every obstacle of the world.
-Clearance clearance(const std::vector<Eigen::Vector2d>& placed_footprint, const World& world);
+/// Clearance of the placed footprint to every obstacle of the world (movers_only: to the
+/// movers, Obstacle2D::moving, only).
+Clearance clearance(const std::vector<Eigen::Vector2d>& placed_footprint, const World& world,
+                    bool movers_only = false);
 
 }  // namespace travel::navsim

@@ -215,6 +215,11 @@ travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world, cons
     travel_mrpt::TravelMapNavigationOptions c;
     c.filter.params = o.travel;
     c.filter.velocity_source = travel_mrpt::VelocitySource::None;
+    if (o.track) {
+        c.filter.track_objects = true;
+        c.filter.tracking = o.tracking;
+        c.filter.params.cluster_objects = true;
+    }
     const Eigen::Vector4d ext = worldExtent(world);
     c.map.min_x = ext[0] - 1.0, c.map.min_y = ext[1] - 1.0;
     c.map.max_x = ext[2] + 1.0, c.map.max_y = ext[3] + 1.0;
@@ -225,12 +230,18 @@ travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world, cons
     return c;
 }
 
-SimTravel::SimTravel(const travel::Params& params)
+SimTravel::SimTravel(const travel::Params& params, bool track,
+                     const travel::TrackingParams& tracking)
     : filter_(std::make_unique<travel_mrpt::TravelFilter>()),
       frame_(std::make_unique<travel_mrpt::TravelFrame>()) {
     travel_mrpt::TravelFilterOptions options;
     options.params = params;
     options.velocity_source = travel_mrpt::VelocitySource::None;
+    if (track) {
+        options.track_objects = true;
+        options.tracking = tracking;
+        options.params.cluster_objects = true;  // the tracker follows clusters
+    }
     filter_->setOptions(options);
 }
 
@@ -251,7 +262,8 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         throw std::runtime_error("dt, timeout, goal_tolerance and sensor_height must be > 0");
     const std::vector<Eigen::Vector2d> footprint = footprintFromConfig(o.nav_config_file);
     o.lidar.validate();
-    SimTravel segmenter(o.travel);  // validates (throws travel::ConfigError)
+    SimTravel segmenter(o.travel, o.track, o.tracking);  // validates (throws ConfigError)
+    World live = world;                                  // movers placed at each scan's time
     auto source = makeSource(o);
     // The map source: the library's chain (filter -> map -> planner -> waypoints).
     std::unique_ptr<travel_mrpt::TravelMapNavigation> chain;
@@ -310,6 +322,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
             progress.updateSimTime(std::size_t(steps), t, o.timeout);
             travel::apps::throwIfInterrupted();  // unwinds: the scratch directory goes
             const mrpt::math::TPose2D p = sim.getCurrentGTPose();
+            placeMovers(live, t);
             double z = 0.0;
             const Eigen::Matrix3d R =
                 robotAttitudeOnTerrain(world.scene, footprint, p.x, p.y, p.phi, z);
@@ -317,13 +330,19 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
             max_z = std::max(max_z, z);
 
             // Collision check and trajectory sample at this pose.
-            const Clearance c = clearance(placeFootprint(footprint, {p.x, p.y, p.phi}), world);
+            const auto placed = placeFootprint(footprint, {p.x, p.y, p.phi});
+            const Clearance c = clearance(placed, live);
             TrajectorySample s;
             s.t = t, s.x = p.x, s.y = p.y, s.z = z, s.yaw = p.phi;
             s.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
             s.roll = std::atan2(R(2, 1), R(2, 2));
             const auto vel = sim.getCurrentGTVelLocal();
             s.v = vel.vx, s.w = vel.omega, s.clearance = c.distance;
+            if (!live.movers.empty()) {
+                s.mover_clearance = clearance(placed, live, true).distance;
+                report.min_mover_clearance =
+                    std::min(report.min_mover_clearance, s.mover_clearance);
+            }
             report.path_length += (Eigen::Vector2d(p.x, p.y) - last_xy).norm();
             last_xy = {p.x, p.y};
             if (c.distance < report.min_clearance) {
@@ -358,7 +377,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
                 robot_pose.linear() = R;
                 robot_pose.translation() = Eigen::Vector3d(p.x, p.y, z);
                 sim::LidarModel lidar = o.lidar;
-                sim::scan(world.scene, lidar, robot_pose * mount, scan);
+                sim::scan(live.scene, lidar, robot_pose * mount, scan);
                 travel_mrpt::ObstaclePoints handed;
                 if (chain) {
                     chain->processScan(scan.cloud, toPose3D(mount), toPose3D(robot_pose),
@@ -425,14 +444,21 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
     {
         std::ofstream f(part);
         if (!f) throw std::runtime_error(path + ": cannot write the trajectory CSV");
-        f << "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles\n";
+        const bool movers = r.min_mover_clearance < 1e9;
+        f << "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles"
+          << (movers ? ",mover_clearance\n" : "\n");
         char line[256];
         for (const auto& s : r.trajectory) {
             std::snprintf(line, sizeof line,
-                          "%.2f,%.3f,%.3f,%.3f,%.2f,%.2f,%.2f,%.3f,%.3f,%.3f,%zu\n", s.t, s.x, s.y,
+                          "%.2f,%.3f,%.3f,%.3f,%.2f,%.2f,%.2f,%.3f,%.3f,%.3f,%zu", s.t, s.x, s.y,
                           s.z, s.yaw * 180 / M_PI, s.roll * 180 / M_PI, s.pitch * 180 / M_PI, s.v,
                           s.w, s.clearance, s.obstacles);
             f << line;
+            if (movers) {
+                std::snprintf(line, sizeof line, ",%.3f", s.mover_clearance);
+                f << line;
+            }
+            f << "\n";
         }
         if (!f) throw std::runtime_error(path + ": write error");
     }

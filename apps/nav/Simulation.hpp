@@ -61,7 +61,12 @@ struct SimOptions {
     /// Map source: plan a global path on the map and follow it as waypoints (else the goal is
     /// the navigator's only target, as with the other sources).
     bool plan = true;
-    double map_resolution = 0.1;  ///< [m] map source: grid cell size (extent: the world's)
+    /// Track the clusters (TravelFilter's track_objects, with object clustering on): objects
+    /// the tracker flags moving are handed to the navigator along their predicted path over
+    /// nav.predict_seconds and kept out of the memory and the map (travel and map sources).
+    bool track = false;
+    travel::TrackingParams tracking;  ///< the tracker's parameters when `track`
+    double map_resolution = 0.1;      ///< [m] map source: grid cell size (extent: the world's)
     /// Map source: save the map here on exit (CTraversabilityMap exports; empty: no).
     std::string map_prefix;
     /// Console: MRPT's navigator messages (travel::apps::configureMrptLogging) and the progress
@@ -82,17 +87,19 @@ struct SimOptions {
 
 struct TrajectorySample {
     double t = 0, x = 0, y = 0, z = 0, yaw = 0, roll = 0, pitch = 0;  ///< [s], [m], [rad]
-    double v = 0, w = 0;        ///< commanded-and-simulated speeds [m/s], [rad/s]
-    double clearance = 0;       ///< [m] footprint to the nearest obstacle
-    std::size_t obstacles = 0;  ///< points the source handed to the navigator
+    double v = 0, w = 0;           ///< commanded-and-simulated speeds [m/s], [rad/s]
+    double clearance = 0;          ///< [m] footprint to the nearest obstacle
+    double mover_clearance = 1e9;  ///< [m] footprint to the nearest mover (1e9: none)
+    std::size_t obstacles = 0;     ///< points the source handed to the navigator
 };
 
 struct RunReport {
     Outcome outcome = Outcome::Timeout;
     std::string detail;  ///< what was hit, why the navigator gave up
     double time = 0, path_length = 0;
-    double min_clearance = 1e9;    ///< [m] over the run
-    std::string min_clearance_to;  ///< the obstacle nearest then ("kerb 1", ...)
+    double min_clearance = 1e9;        ///< [m] over the run
+    std::string min_clearance_to;      ///< the obstacle nearest then ("kerb 1", ...)
+    double min_mover_clearance = 1e9;  ///< [m] to the world's movers over the run (1e9: none)
     double final_goal_distance = 0;
     double max_height_gain = 0;  ///< [m] highest terrain z reached minus the start's
     double mean_step_ms = 0;     ///< wall time per step (scan + TRAVEL + navigation)
@@ -124,7 +131,10 @@ std::vector<Eigen::Vector2d> footprintFromConfig(const std::string& nav_config_f
 class SimTravel {
   public:
     /// Throws travel::ConfigError on invalid parameters.
-    explicit SimTravel(const travel::Params& params);
+    /// `track`: TravelFilter's track_objects with the `tracking` parameters (object clustering
+    /// is then switched on: the tracker follows clusters).
+    explicit SimTravel(const travel::Params& params, bool track = false,
+                       const travel::TrackingParams& tracking = {});
     ~SimTravel();
     /// Segments `cloud`, seen at time t by the sensor at `mount` on the robot at world pose
     /// `robot`; fills frame.cloud, frame.result and frame.aligned (valid until the next call).
@@ -145,7 +155,8 @@ travel_mrpt::TravelMapNavigationOptions mapChainOptions(const World& world,
 /// Runs one closed loop. Throws std::runtime_error on configuration errors.
 RunReport runSimulation(const World& world, const SimOptions& options);
 
-/// Writes the trajectory CSV (t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles).
+/// Writes the trajectory CSV (t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles and,
+/// when the world has movers, mover_clearance).
 void writeTrajectoryCsv(const RunReport& report, const std::string& path);
 
 }  // namespace travel::navsim

@@ -91,6 +91,8 @@ void renderTopView(const World& world, const std::vector<Eigen::Vector2d>& footp
 
     // Obstacles: kerbs orange, the rest dark grey.
     for (const auto& o : world.obstacles) {
+        // Movers: drawn with the run, where they were (below).
+        if (o.moving && report != nullptr && !report->trajectory.empty()) continue;
         const bool kerb = o.what.rfind("kerb", 0) == 0;
         const TColor colour = kerb ? TColor(235, 140, 20) : TColor(70, 70, 80);
         if (o.radius > 0)
@@ -144,10 +146,23 @@ void renderTopView(const World& world, const std::vector<Eigen::Vector2d>& footp
         for (std::size_t i = 1; i < tr.size(); ++i)
             img.line(view.u(tr[i - 1].x), view.v(tr[i - 1].y), view.u(tr[i].x), view.v(tr[i].y),
                      TColor(20, 60, 230), 3);
-        // Footprints every 2 s, and the final one.
-        for (std::size_t i = 0; i < tr.size(); i += static_cast<std::size_t>(20))
+        // Footprints every 2 s, and the final one; the movers where they were then (purple
+        // outlines, filled at the end).
+        World live = world;
+        const auto drawMovers = [&](double t, bool last) {
+            placeMovers(live, t);
+            for (const Mover& m : live.movers) {
+                const auto& poly = live.obstacles[m.obstacle].polygon;
+                if (last) fillPolygon(img, view, poly, TColor(150, 40, 170));
+                outline(img, view, poly, TColor(150, 40, 170), last ? 2 : 1);
+            }
+        };
+        for (std::size_t i = 0; i < tr.size(); i += static_cast<std::size_t>(20)) {
             outline(img, view, placeFootprint(footprint, {tr[i].x, tr[i].y, tr[i].yaw}),
                     TColor(90, 110, 200), 1);
+            drawMovers(tr[i].t, false);
+        }
+        drawMovers(tr.back().t, true);
         const auto& last = tr.back();
         const TColor end = report->outcome == Outcome::Collision ? TColor(230, 0, 0)
                            : report->outcome == Outcome::Goal    ? TColor(0, 140, 0)
@@ -174,6 +189,11 @@ void renderTopView(const World& world, const std::vector<Eigen::Vector2d>& footp
         std::snprintf(buf, sizeof buf, "path %.1f m, min clearance %.2f m", report->path_length,
                       report->min_clearance);
         text(buf, TColor(0, 0, 0));
+        if (report->min_mover_clearance < 1e9) {
+            std::snprintf(buf, sizeof buf, "min clearance to the movers %.2f m",
+                          report->min_mover_clearance);
+            text(buf, TColor(0, 0, 0));
+        }
         if (!report->detail.empty()) text(report->detail, TColor(90, 90, 90));
     }
 }

@@ -142,7 +142,8 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         } else if (k == "box") {
             line.expect(6, 6, "X Y YAW_DEG LENGTH WIDTH HEIGHT");
             sim::Box b;
-            b.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"]);
+            b.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
+                                         counts["mover"]);
             b.centre = {v[0], v[1]};
             b.yaw_deg = v[2];
             b.length = line.positive(3, "LENGTH");
@@ -154,7 +155,8 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         } else if (k == "pole") {
             line.expect(4, 4, "X Y RADIUS HEIGHT");
             sim::Pole p;
-            p.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"]);
+            p.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
+                                         counts["mover"]);
             p.centre = {v[0], v[1]};
             p.radius = line.positive(2, "RADIUS");
             p.height = line.positive(3, "HEIGHT");
@@ -163,7 +165,8 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         } else if (k == "wall") {
             line.expect(6, 6, "X1 Y1 X2 Y2 THICKNESS HEIGHT");
             sim::Wall wl;
-            wl.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"]);
+            wl.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
+                                          counts["mover"]);
             wl.a = {v[0], v[1]};
             wl.b = {v[2], v[3]};
             if ((wl.b - wl.a).norm() < 1e-6) line.fail("the two ends coincide");
@@ -175,10 +178,28 @@ World parseWorld(const std::string& text, const std::string& source_name) {
                                    rectangle(0.5 * (wl.a + wl.b), std::atan2(d.y(), d.x()) / kDeg,
                                              d.norm(), wl.thickness),
                                    0.0, wl.height});
+        } else if (k == "mover") {
+            line.expect(8, 8, "X Y YAW_DEG LENGTH WIDTH HEIGHT VX VY");
+            Mover m;
+            sim::Box& b = m.motion.box;
+            b.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
+                                         counts["mover"]);
+            b.centre = {v[0], v[1]};
+            b.yaw_deg = v[2];
+            b.length = line.positive(3, "LENGTH");
+            b.width = line.positive(4, "WIDTH");
+            b.height = line.positive(5, "HEIGHT");
+            m.motion.velocity = {v[6], v[7]};
+            m.box = w.scene.boxes.size();
+            m.obstacle = w.obstacles.size();
+            w.scene.boxes.push_back(b);
+            w.obstacles.push_back(
+                {id, rectangle(b.centre, v[2], b.length, b.width), 0.0, b.height, true});
+            w.movers.push_back(m);
         } else {
             line.fail(
                 "unknown keyword (expected name, start, goal, bounds, ramp, step, kerb, "
-                "bump, roughness, box, pole or wall)");
+                "bump, roughness, box, pole, wall or mover)");
         }
     }
     if (!have_start || !have_goal)
@@ -189,6 +210,15 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         throw std::runtime_error(source_name + ": " + e.what());
     }
     return w;
+}
+
+void placeMovers(World& w, double t) {
+    for (const Mover& m : w.movers) {
+        sim::Box& b = w.scene.boxes[m.box];
+        b = m.motion.box;
+        b.centre += m.motion.velocity * t;
+        w.obstacles[m.obstacle].polygon = rectangle(b.centre, b.yaw_deg, b.length, b.width);
+    }
 }
 
 World loadWorld(const std::string& path) {
@@ -213,7 +243,10 @@ World shiftedObstacles(const World& world, unsigned seed, double amplitude) {
         for (auto& p : o.polygon) p += kerb ? kerb_shift : box_shift;
     }
     for (std::size_t k : w.kerb_steps) w.scene.steps[k].start += kerb_shift;
+    const Eigen::Vector2d mover_shift(d(rng), d(rng));  // drawn last: older seeds unchanged
     for (auto& b : w.scene.boxes) b.centre += box_shift;
+    for (auto& m : w.movers) m.motion.box.centre += mover_shift;
+    placeMovers(w, 0.0);
     w.name += "_seed" + std::to_string(seed);
     return w;
 }

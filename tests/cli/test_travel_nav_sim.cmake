@@ -53,6 +53,20 @@ if(pos EQUAL -1)
   message(FATAL_ERROR "no map timing line:\n${out}")
 endif()
 
+# A world with a mover, tracking on: the summary reports the clearance to the movers and the CSV
+# has its column.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env TMPDIR=${WORK_DIR}/tmp
+  ${TRAVEL_NAV_SIM} -i crossing.world --track --timeout 3 --no-navlog
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "travel-nav-sim --track failed:\n${out}${err}")
+endif()
+string(FIND "${out}" "min clearance to the movers" pos)
+file(STRINGS ${WORK_DIR}/crossing_travel.csv rows LIMIT_COUNT 1)
+if(pos EQUAL -1 OR NOT rows MATCHES ",mover_clearance$")
+  message(FATAL_ERROR "no clearance to the movers:\n${out}\nCSV header: ${rows}")
+endif()
+
 # Errors name what is wrong.
 expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/nowhere.world)
 expect_failure_mentioning("unknown obstacle source 'lidar'" ${TRAVEL_NAV_SIM} --source lidar

@@ -107,21 +107,24 @@ VelocitySource velocitySourceFromString(const std::string& text);
     TRAVEL_MAP_FUSION_LIST(X)
 
 // The obstacle sources of the reactive navigator (travel_mrpt::TravelObstacleSource, memory).
-#define TRAVEL_NAV_LIST(X)                                                                   \
-    X(double, max_step_height, 0.15, "m", 0.0, 100.0,                                        \
-      "The robot climbs steps and bumps up to this height: lower ones are not obstacles")    \
-    X(double, max_height, 2.0, "m", 0.0, 1e3,                                                \
-      "Points higher above the local ground than this are ignored (> 0)")                    \
-    X(double, report_floor, 0.15, "m", 0.01, 100.0,                                          \
-      "Points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)") \
-    X(double, ground_search_radius, 3.0, "m", 0.0, 1e4,                                      \
-      "Nearest traversable node searched for the local ground of other nodes' points")       \
-    X(double, step_min_spread, 0.05, "m", 0.0, 100.0,                                        \
-      "The step rule only compares nodes whose ground points spread at least this much in "  \
-      "their second direction")                                                              \
-    X(double, memory_seconds, 0.0, "s", 0.0, 1e6,                                            \
-      "How long earlier obstacles are kept (0: no memory)")                                  \
-    X(double, memory_radius, 1.0, "m", 0.0, 1e6, "... while within this xy distance of the robot")
+#define TRAVEL_NAV_LIST(X)                                                                         \
+    X(double, max_step_height, 0.15, "m", 0.0, 100.0,                                              \
+      "The robot climbs steps and bumps up to this height: lower ones are not obstacles")          \
+    X(double, max_height, 2.0, "m", 0.0, 1e3,                                                      \
+      "Points higher above the local ground than this are ignored (> 0)")                          \
+    X(double, report_floor, 0.15, "m", 0.01, 100.0,                                                \
+      "Points of too-steep nodes count from this height (the 3-D navigator drops z < 0.01)")       \
+    X(double, ground_search_radius, 3.0, "m", 0.0, 1e4,                                            \
+      "Nearest traversable node searched for the local ground of other nodes' points")             \
+    X(double, step_min_spread, 0.05, "m", 0.0, 100.0,                                              \
+      "The step rule only compares nodes whose ground points spread at least this much in "        \
+      "their second direction")                                                                    \
+    X(double, memory_seconds, 0.0, "s", 0.0, 1e6,                                                  \
+      "How long earlier obstacles are kept (0: no memory)")                                        \
+    X(double, memory_radius, 1.0, "m", 0.0, 1e6, "... while within this xy distance of the robot") \
+    X(double, predict_seconds, 3.0, "s", 0.0, 60.0,                                                \
+      "Objects the tracker flags moving are obstacles along their predicted path over this "       \
+      "time (their box swept along the velocity; 0: only where they are; needs tracking)")
 
 // Regression tolerances of travel-regress (a replay compared with a golden labelled rawlog,
 // travel::compareFrames; docs/regression.md): within them the comparison passes (exit 0).

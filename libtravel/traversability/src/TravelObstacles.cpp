@@ -1,7 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/traversability/TravelObstacles.hpp"
 
+#include "travel/traversability/StaticScene.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -69,8 +72,89 @@ void TravelObstacles::findSteps(const TerrainModel& t) {
         }
 }
 
+namespace {
+
+/// Robot -> aligned rotation, and the robot origin in the aligned (sensor-centred) frame.
+struct RobotInAligned {
+    Eigen::Matrix3f R_level;
+    Eigen::Vector3f origin;
+};
+
+RobotInAligned robotInAligned(const AlignedCloud& aligned,
+                              const Eigen::Isometry3f& sensor_on_robot) {
+    RobotInAligned r;
+    r.R_level = aligned.rotation * sensor_on_robot.linear().transpose();
+    r.origin = -(r.R_level * sensor_on_robot.translation());
+    return r;
+}
+
+/// Cross product of (a - o) and (b - o): > 0 when o, a, b turn counter-clockwise.
+float turn(const Eigen::Vector2f& o, const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+/// Convex hull of 8 points (Andrew's monotone chain), counter-clockwise, in `hull`; returns
+/// its vertex count. Fixed-size arrays: no allocation.
+int convexHull8(std::array<Eigen::Vector2f, 8> p, std::array<Eigen::Vector2f, 16>& hull) {
+    std::sort(p.begin(), p.end(), [](const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    });
+    int k = 0;
+    for (int i = 0; i < 8; ++i) {  // lower chain
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= 0.f) --k;
+        hull[k++] = p[i];
+    }
+    for (int i = 6, lower = k + 1; i >= 0; --i) {  // upper chain
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= 0.f) --k;
+        hull[k++] = p[i];
+    }
+    return k - 1;  // the last point repeats the first
+}
+
+}  // namespace
+
+void TravelObstacles::predictMoving(const Result& result, const AlignedCloud& aligned,
+                                    const Eigen::Isometry3f& sensor_on_robot,
+                                    ObstaclePointCloud& out, float column_step) const {
+    const Eigen::Vector3f origin = robotInAligned(aligned, sensor_on_robot).origin;
+    const float horizon = static_cast<float>(options_.predict_seconds);
+    const float floor_z = static_cast<float>(options_.report_floor);
+    const float max_h = static_cast<float>(options_.max_height);
+    const float step = std::max(column_step, 0.01f);
+    for (const ClusterSummary& c : result.clusters) {
+        if (!c.moving || !c.velocity.allFinite() || !c.obb_center.allFinite()) continue;
+        // The box now (obb in the aligned frame) and where the velocity takes it.
+        const Eigen::Vector2f centre = c.obb_center.head<2>() - origin.head<2>();
+        const Eigen::Vector2f u =
+            Eigen::Vector2f(std::cos(c.obb_yaw), std::sin(c.obb_yaw)) * (0.5f * c.obb_extent.x());
+        const Eigen::Vector2f v =
+            Eigen::Vector2f(-u.y(), u.x()).normalized() * (0.5f * c.obb_extent.y());
+        const Eigen::Vector2f travel = c.velocity.head<2>() * horizon;
+        std::array<Eigen::Vector2f, 8> corners;
+        for (int k = 0; k < 4; ++k) {
+            const Eigen::Vector2f corner =
+                centre + ((k & 1) ? u : Eigen::Vector2f(-u)) + ((k & 2) ? v : Eigen::Vector2f(-v));
+            corners[k] = corner, corners[k + 4] = corner + travel;
+        }
+        std::array<Eigen::Vector2f, 16> hull;
+        const int n = convexHull8(corners, hull);  // >= 1 (coincident points: 1 or 2)
+        const float top =
+            std::isfinite(c.height_above_ground) ? std::min(c.height_above_ground, max_h) : floor_z;
+        for (int e = 0; e < n; ++e) {
+            const Eigen::Vector2f a = hull[e], d = hull[(e + 1) % n] - a;
+            const int pieces = std::max(1, static_cast<int>(std::ceil(d.norm() / kOutlineSpacing)));
+            for (int i = 0; i < pieces; ++i) {  // the next edge adds the end vertex
+                const Eigen::Vector2f p = a + d * (float(i) / float(pieces));
+                for (float z = floor_z; z < top; z += step) out.push_back(p.x(), p.y(), z);
+                out.push_back(p.x(), p.y(), std::max(top, floor_z));
+            }
+        }
+    }
+}
+
 void TravelObstacles::compute(const Result& result, const AlignedCloud& aligned,
-                              const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out) {
+                              const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out,
+                              ObstaclePointCloud* moving) {
     const std::size_t n = aligned.x.size();
     if (result.labels.size() != n || aligned.y.size() != n || aligned.z.size() != n)
         throw std::invalid_argument("travel obstacles: " + std::to_string(result.labels.size()) +
@@ -84,9 +168,9 @@ void TravelObstacles::compute(const Result& result, const AlignedCloud& aligned,
 
     // Robot -> aligned rotation, and the robot origin and base-plane normal in the aligned
     // (sensor-centred) frame: the fallback ground and the origin of the output xy.
-    const Eigen::Matrix3f R_level = aligned.rotation * sensor_on_robot.linear().transpose();
-    const Eigen::Vector3f origin = -(R_level * sensor_on_robot.translation());
-    const Eigen::Vector3f base_normal = R_level.col(2);
+    const RobotInAligned robot = robotInAligned(aligned, sensor_on_robot);
+    const Eigen::Vector3f& origin = robot.origin;
+    const Eigen::Vector3f base_normal = robot.R_level.col(2);
     const auto baseHeight = [&](float x, float y) {
         return origin.z() -
                (base_normal.x() * (x - origin.x()) + base_normal.y() * (y - origin.y())) /
@@ -96,6 +180,12 @@ void TravelObstacles::compute(const Result& result, const AlignedCloud& aligned,
     const float max_step = static_cast<float>(options_.max_step_height);
     const float max_h = static_cast<float>(options_.max_height);
     const float floor_z = static_cast<float>(options_.report_floor);
+    // Points in a moving cluster's grown footprint are the mover's (StaticScene.hpp).
+    if (moving != nullptr)
+        movers_.build(result.clusters);
+    else
+        movers_.build({});
+    const auto inMover = [&](const Eigen::Vector3f& a) { return movers_.contains(a.x(), a.y()); };
     for (std::size_t i = 0; i < n; ++i) {
         const PointClass label = result.labels[i];
         if (label != PointClass::Ground && label != PointClass::NonGround) continue;
@@ -113,13 +203,20 @@ void TravelObstacles::compute(const Result& result, const AlignedCloud& aligned,
         const float rx = a.x() - origin.x(), ry = a.y() - origin.y();
         if (label == PointClass::Ground) {
             if (node >= 0 && step_height_[node] > 0.f)
-                out.push_back(rx, ry, std::max(step_height_[node], floor_z));
+                (!movers_.empty() && inMover(a) ? *moving : out)
+                    .push_back(rx, ry, std::max(step_height_[node], floor_z));
             continue;
         }
         const bool steep = node >= 0 && terrain.nodes[node].node_class == NodeClass::Obstacle;
         // In a too-steep node everything above the ground reference is an obstacle; elsewhere
         // only what the robot cannot climb.
-        if (h > (steep ? floor_z : max_step)) out.push_back(rx, ry, h);
+        if (!(h > (steep ? floor_z : max_step))) continue;
+        const uint32_t id = i < result.cluster_id.size() ? result.cluster_id[i] : 0;
+        const bool mover =
+            !movers_.empty() &&
+            ((id > 0 && id <= result.clusters.size() && result.clusters[id - 1].moving) ||
+             inMover(a));
+        (mover ? *moving : out).push_back(rx, ry, h);
     }
 }
 

@@ -311,7 +311,7 @@ double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses:
     const AlignedInWorld world = alignedInWorld(frame, robotPose);
     // Objects the tracker flags moving stay out of the static map (grid and OctoMap).
     const travel::Result& static_result =
-        travel::withoutMovingClusters(frame.result, scratch_->static_result);
+        travel::withoutMovingObjects(frame.result, *frame.aligned, scratch_->static_result);
     const travel::PlacedFrame placed{*frame.aligned, static_result, world.rotation, world.origin,
                                      mrpt::Clock::toDouble(frame.timestamp)};
     travel::fuseFrame(placed, options_, grid_, rays);

@@ -78,7 +78,8 @@ void MapObstacleSource::plannerGrid(std::vector<travel::CellState>& states,
     }
 }
 
-void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                                travel::ObstaclePointCloud& transient) {
     if (frame.travel == nullptr || frame.result == nullptr || frame.aligned == nullptr)
         throw std::invalid_argument(
             "map obstacle source: the frame has no TravelFrame, TRAVEL result or aligned cloud");
@@ -97,7 +98,11 @@ void MapObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out)
 
     // TRAVEL's obstacles, levelled robot frame (xy from the robot origin, yaw only).
     frame_points_.clear();
-    rule_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, frame_points_);
+    // Moving objects (tracking on) skip the obstacle grid: they and their predicted paths are
+    // handed for this frame only, or they would leave a trail of static obstacle cells.
+    rule_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, frame_points_, &transient);
+    rule_.predictMoving(*frame.result, *frame.aligned, frame.sensorOnRobot, transient,
+                        float(options_.column_step));
     const double yaw = std::atan2(robot.linear()(1, 0), robot.linear()(0, 0));
     const double c = std::cos(yaw), s = std::sin(yaw);
     const double rx = robot.translation().x(), ry = robot.translation().y();

@@ -20,9 +20,13 @@ void ObstacleSource::setMemory(const travel::NavSection& nav) {
 void ObstacleSource::update(const ObstacleFrame& frame) {
     std::lock_guard<std::mutex> lock(update_mutex_);
     work_.clear();
-    compute(frame, work_);
+    transient_.clear();
+    compute(frame, work_, transient_);
     recall_.recallAndRemember(frame.timestamp.time_since_epoch().count(), frame.robotOdometry,
                               work_);
+    work_.x.insert(work_.x.end(), transient_.x.begin(), transient_.x.end());
+    work_.y.insert(work_.y.end(), transient_.y.begin(), transient_.y.end());
+    work_.z.insert(work_.z.end(), transient_.z.begin(), transient_.z.end());
     work_.timestamp = frame.timestamp;
     {
         std::lock_guard<std::mutex> publish(publish_mutex_);

@@ -23,14 +23,17 @@ std::unique_ptr<RobotFrameBandSource> RobotFrameBandSource::heightThreshold(doub
     return std::make_unique<RobotFrameBandSource>("threshold", min_z, 3.0);
 }
 
-void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+void TravelObstacleSource::compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                                   travel::ObstaclePointCloud& transient) {
     if (frame.result == nullptr || frame.aligned == nullptr)
         throw std::invalid_argument(
             "travel obstacle source: the frame has no TRAVEL result or aligned cloud");
-    obstacles_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, out);
+    obstacles_.compute(*frame.result, *frame.aligned, frame.sensorOnRobot, out, &transient);
+    obstacles_.predictMoving(*frame.result, *frame.aligned, frame.sensorOnRobot, transient);
 }
 
-void RobotFrameBandSource::compute(const ObstacleFrame& frame, ObstaclePoints& out) {
+void RobotFrameBandSource::compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                                   travel::ObstaclePointCloud& /*transient*/) {
     if (frame.cloud == nullptr) throw std::invalid_argument(name() + " obstacle source: no cloud");
     const travel::PointCloud& c = *frame.cloud;
     const Eigen::Matrix3f& R = frame.sensorOnRobot.linear();

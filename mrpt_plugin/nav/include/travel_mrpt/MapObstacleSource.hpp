@@ -79,7 +79,8 @@ class MapObstacleSource : public ObstacleSource {
     double lastCpuMs() const { return cpu_ms_; }
 
   protected:
-    void compute(const ObstacleFrame& frame, ObstaclePoints& out) override;
+    void compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                 travel::ObstaclePointCloud& transient) override;
 
   private:
     void resetObstacles();  // the obstacle grid on the map's geometry, empty

@@ -13,7 +13,9 @@
 //
 // Optional short-term memory (travel::ObstacleMemory): obstacles of earlier frames are kept for
 // `memory_seconds` while they stay within `memory_radius` of the robot (moved with the robot's
-// odometry), because a LiDAR on a robot does not see the ground right around itself.
+// odometry), because a LiDAR on a robot does not see the ground right around itself. Moving
+// objects (tracking on: travel::ClusterSummary::moving) are not remembered: a source hands them,
+// with their predicted paths, for the current frame only.
 #pragma once
 
 #include <mrpt/core/Clock.h>
@@ -87,14 +89,18 @@ class ObstacleSource {
     bool latest(mrpt::maps::CSimplePointsMap& out, mrpt::Clock::time_point& stamp) const;
 
   protected:
-    /// Appends the obstacles of this frame (robot frame) to `out` (already cleared).
-    virtual void compute(const ObstacleFrame& frame, ObstaclePoints& out) = 0;
+    /// Appends the obstacles of this frame (robot frame) to `out` (already cleared), and to
+    /// `transient` (already cleared) those of this frame only: moving objects and their predicted
+    /// paths (travel::TravelObstacles::predictMoving), which the memory must not keep.
+    virtual void compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                         travel::ObstaclePointCloud& transient) = 0;
 
   private:
     travel::NavSection memory_;
-    std::mutex update_mutex_;        // one update() at a time
-    ObstaclePoints work_;            // written by update() only
-    travel::ObstacleMemory recall_;  // written by update() only
+    std::mutex update_mutex_;               // one update() at a time
+    ObstaclePoints work_;                   // written by update() only
+    travel::ObstaclePointCloud transient_;  // written by update() only
+    travel::ObstacleMemory recall_;         // written by update() only
     mutable std::mutex publish_mutex_;
     ObstaclePoints published_;
     bool has_published_ = false;

@@ -30,7 +30,8 @@ class RobotFrameBandSource : public ObstacleSource {
     double maxZ() const { return max_z_; }
 
   protected:
-    void compute(const ObstacleFrame& frame, ObstaclePoints& out) override;
+    void compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                 travel::ObstaclePointCloud& transient) override;
 
   private:
     std::string name_;

@@ -20,7 +20,8 @@ class TravelObstacleSource : public ObstacleSource {
     void setOptions(const travel::NavSection& options) { obstacles_.setOptions(options); }
 
   protected:
-    void compute(const ObstacleFrame& frame, ObstaclePoints& out) override;
+    void compute(const ObstacleFrame& frame, ObstaclePoints& out,
+                 travel::ObstaclePointCloud& transient) override;
 
   private:
     travel::TravelObstacles obstacles_;

@@ -38,6 +38,7 @@
 #include "travel/Preprocessing.hpp"
 #include "travel/Result.hpp"
 #include "travel/TerrainModel.hpp"
+#include "travel/traversability/StaticScene.hpp"
 
 namespace travel {
 
@@ -64,8 +65,25 @@ class TravelObstacles {
     /// robot origin, z above the local ground). `aligned` is the cloud `result` labels (same
     /// size); sensor_on_robot places the sensor on the robot (origin on the ground under the
     /// robot). Throws std::invalid_argument when the sizes differ. Buffers are reused.
+    /// With `moving` given, the obstacle points of clusters the tracker flags moving
+    /// (ClusterSummary::moving), and every obstacle point within MovingFootprints::kMargin of such
+    /// a cluster's oriented box, go there instead of into `out`: a memory or a static map must not
+    /// keep them (a trail of obstacles along the mover's path).
     void compute(const Result& result, const AlignedCloud& aligned,
-                 const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out);
+                 const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out,
+                 ObstaclePointCloud* moving = nullptr);
+
+    /// Appends to `out` (same frame as compute()) the predicted footprint of every cluster
+    /// flagged moving: the outline of its oriented box swept along its velocity over
+    /// predict_seconds (the convex hull of the box now and the box then), a point every
+    /// kOutlineSpacing, in a column from report_floor to the cluster's height above the ground
+    /// (at most max_height) every `column_step`. A reactive navigator then keeps out of where
+    /// the object is going, not only of where it is. Nothing without tracking (no cluster moves).
+    void predictMoving(const Result& result, const AlignedCloud& aligned,
+                       const Eigen::Isometry3f& sensor_on_robot, ObstaclePointCloud& out,
+                       float column_step = 0.25f) const;
+    /// [m] between the points of a predicted outline: less than a navigator's robot is wide.
+    static constexpr float kOutlineSpacing = 0.1f;
 
   private:
     void findGroundNodes(const TerrainModel& terrain);
@@ -74,6 +92,7 @@ class TravelObstacles {
     NavSection options_;
     std::vector<int> ground_node_;    // per node: node whose ground is its reference (-1 none)
     std::vector<float> step_height_;  // per node: step above a neighbour (0 = none)
+    MovingFootprints movers_;         // this frame's moving clusters (compute())
 };
 
 }  // namespace travel
