@@ -23,6 +23,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <deque>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -122,5 +123,122 @@ void forEachInOrder(std::size_t count, unsigned workers, Sequential sequential, 
     }
     finish();
 }
+
+/// -j N for a stream whose items must be prepared one after the other on the calling thread
+/// (travel-rawlog: each record's motion data feeds the next frames), then processed on N
+/// workers, then consumed on the calling thread in preparation order:
+///
+///   OrderedSlots<Slot> pool(jobs, [&](unsigned w, Slot& s) { ...worker w processes s... });
+///   while (...) {
+///       Slot& s = pool.next(consume);   // consumes finished items while no slot is free
+///       ...prepare s...
+///       pool.submit();                  // or pool.submitDone() when prepared and processed here
+///   }
+///   pool.drain(consume);
+///
+/// At most N + 1 slots exist (reused: each new one costs page faults). An exception thrown by
+/// the work reaches the caller when its item's turn to be consumed comes, as with -j 1; the
+/// destructor stops and joins the workers (a worker finishes its current item first).
+template <class Slot>
+class OrderedSlots {
+  public:
+    template <class Work>
+    OrderedSlots(unsigned workers, Work work)
+        : slots_(std::max(1u, workers) + 1), errors_(slots_.size()), done_(slots_.size(), 0) {
+        for (unsigned w = 0; w < std::max(1u, workers); ++w)
+            threads_.emplace_back([this, w, work]() mutable { run(w, work); });
+    }
+    ~OrderedSlots() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stop_ = true;
+        }
+        changed_.notify_all();
+        for (std::thread& t : threads_) t.join();
+    }
+    OrderedSlots(const OrderedSlots&) = delete;
+    OrderedSlots& operator=(const OrderedSlots&) = delete;
+
+    /// The slot of the next item; while all are in use, consumes the oldest once finished.
+    template <class Consume>
+    Slot& next(Consume consume) {
+        if (in_use_ == slots_.size()) consumeOldest(consume);
+        return slots_[(first_ + in_use_) % slots_.size()];
+    }
+    /// Hands the slot of the last next() to the workers.
+    void submit() { add(false); }
+    /// The slot of the last next() needs no worker (the caller processed it): it is consumed in
+    /// its turn.
+    void submitDone() { add(true); }
+    /// Consumes every submitted item, in order.
+    template <class Consume>
+    void drain(Consume consume) {
+        while (in_use_) consumeOldest(consume);
+    }
+
+  private:
+    template <class Work>
+    void run(unsigned w, Work& work) {
+        for (;;) {
+            std::size_t s;
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                changed_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+                if (stop_) return;
+                s = queue_.front();
+                queue_.pop_front();
+            }
+            std::exception_ptr error;
+            try {
+                work(w, slots_[s]);
+            } catch (...) {
+                error = std::current_exception();
+            }
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                errors_[s] = error;
+                done_[s] = 1;
+            }
+            changed_.notify_all();
+        }
+    }
+    void add(bool done) {
+        const std::size_t s = (first_ + in_use_) % slots_.size();
+        ++in_use_;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            errors_[s] = nullptr;
+            done_[s] = done;
+            if (!done) queue_.push_back(s);
+        }
+        if (!done) changed_.notify_all();
+    }
+    template <class Consume>
+    void consumeOldest(Consume& consume) {
+        const std::size_t s = first_;
+        std::exception_ptr error;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            changed_.wait(lock, [&] { return done_[s] != 0; });
+            done_[s] = 0;
+            error = errors_[s];
+        }
+        first_ = (first_ + 1) % slots_.size();
+        --in_use_;
+        if (error) std::rethrow_exception(error);
+        consume(slots_[s]);
+    }
+
+    std::vector<Slot> slots_;
+    std::vector<std::exception_ptr> errors_;
+    std::vector<char> done_;
+    std::deque<std::size_t> queue_;  // submitted slots not yet taken by a worker
+    std::size_t first_ = 0;          // oldest slot in use (caller's thread only)
+    std::size_t in_use_ = 0;         // slots prepared and not yet consumed (caller's thread only)
+    bool stop_ = false;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::vector<std::thread> threads_;
+};
 
 }  // namespace travel::apps

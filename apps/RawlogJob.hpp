@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
@@ -46,6 +47,15 @@ inline std::string where(const std::string& file, long record = -1) {
 /// the bird's-eye colours.
 void writePly(const std::string& path, const travel::AlignedCloud& aligned,
               const travel::Result& result);
+
+/// Segments frame.cloud into frame.result with `pipeline`; the milliseconds it took.
+inline double segmentFrame(travel::Pipeline& pipeline, travel_mrpt::TravelFrame& frame,
+                           const travel::FrameInput& input) {
+    const auto start = std::chrono::steady_clock::now();
+    pipeline.process(frame.cloud, input, frame.result);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
 
 struct Totals {
     std::size_t frames = 0, points = 0, skipped = 0, clusters = 0, levelled = 0, deskewed = 0;
@@ -93,6 +103,7 @@ struct Options {
     int png_size = 800;
     double png_metres_per_pixel = 0.075;
     std::size_t max_memory_mib = travel::apps::kDefaultMemoryLimitMiB;
+    unsigned jobs = 1;  ///< -j: segmentation threads (records are read and written in order)
 };
 
 /// The filter's options from a loaded configuration: its travel, filter and tracking sections.
@@ -136,42 +147,57 @@ class RawlogSegmenter {
     /// Processes one observation of the record, appending the outputs to `added`.
     void processObservation(const CObservation& obs, long record,
                             std::vector<CObservation::Ptr>& added) {
+        if (!prepare(obs, frame_, job_)) return;
+        const double segment_ms = segmentFrame(*job_.pipeline, frame_, job_.input);
+        complete(obs, record, frame_, job_, job_.pipeline->aligned(), segment_ms, added);
+    }
+
+    /// processObservation() in three steps (-j N): prepare() in record order (motion records,
+    /// the checks and notes, the conversion; true when `frame` is to be segmented with
+    /// job.pipeline or a settled copy of it), the segmentation on any thread, then complete()
+    /// in record order with the aligned cloud of that segmentation (kept alive by the caller).
+    bool prepare(const CObservation& obs, travel_mrpt::TravelFrame& frame,
+                 travel_mrpt::TravelFilter::FrameJob& job) {
         if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs) ||
             travel_mrpt::isTravelOutput(obs))
-            return;
+            return false;
         std::string why_not;
-        if (!filter_.filter(obs, frame_, &why_not)) {
-            if (!std::regex_match(obs.sensorLabel, label_filter_)) {
-                noteOnce("ignored (does not match the sensor label regex): " + obs.sensorLabel);
-                return;
-            }
-            ++totals_.skipped;
-            noteOnce("skipped " + obs.sensorLabel + " (" + why_not + ")");
-            return;
+        if (filter_.prepare(obs, frame, job, &why_not)) return true;
+        if (!std::regex_match(obs.sensorLabel, label_filter_)) {
+            noteOnce("ignored (does not match the sensor label regex): " + obs.sensorLabel);
+            return false;
         }
-        const travel::Result& result = frame_.result;
-        if (result.labels.size() != frame_.cloud.size())
+        ++totals_.skipped;
+        noteOnce("skipped " + obs.sensorLabel + " (" + why_not + ")");
+        return false;
+    }
+    void complete(const CObservation& obs, long record, travel_mrpt::TravelFrame& frame,
+                  const travel_mrpt::TravelFilter::FrameJob& job,
+                  const travel::AlignedCloud& aligned, double segment_ms,
+                  std::vector<CObservation::Ptr>& added) {
+        filter_.complete(frame, job, aligned, segment_ms);
+        const travel::Result& result = frame.result;
+        if (result.labels.size() != frame.cloud.size())
             throw AppError(where(options_.input, record) + ": pipeline returned " +
                            std::to_string(result.labels.size()) + " labels for " +
-                           std::to_string(frame_.cloud.size()) + " points");
+                           std::to_string(frame.cloud.size()) + " points");
 
-        outputs_.add(obs, frame_, options_.plain_clouds, added);
+        outputs_.add(obs, frame, options_.plain_clouds, added);
 
-        const std::size_t frame = totals_.frames++;
-        totals_.points += frame_.cloud.size();
+        const std::size_t index = totals_.frames++;
+        totals_.points += frame.cloud.size();
         for (std::size_t c = 0; c < 4; ++c) totals_.per_class[c] += result.class_counts[c];
         totals_.clusters += result.clusters.size();
-        totals_.levelled += frame_.levelled;
-        totals_.deskewed += frame_.deskewed;
-        if (frame_.tracked) addTracking(result.clusters);
-        totals_.process_ms.push_back(frame_.process_ms);
-        totals_.convert_ms.push_back(frame_.convert_ms);
-        csv_.add(frame, obs, frame_);
+        totals_.levelled += frame.levelled;
+        totals_.deskewed += frame.deskewed;
+        if (frame.tracked) addTracking(frame);
+        totals_.process_ms.push_back(frame.process_ms);
+        totals_.convert_ms.push_back(frame.convert_ms);
+        csv_.add(index, obs, frame);
         reference_.add(result);
         if (result.mount && !options_.quiet)
             say(mountNoteLine(options_.app, obs.sensorLabel, result.mount));
-        if (!options_.png_prefix.empty() && frame_.aligned)
-            writePictures(frame, obs, *frame_.aligned);
+        if (!options_.png_prefix.empty() && frame.aligned) writePictures(index, obs, frame);
     }
 
     /// Outputs of an earlier run (<label>_travel, <label>_ground ... of a label we process
@@ -189,17 +215,18 @@ class RawlogSegmenter {
     const Totals& totals() const { return totals_; }
 
   private:
-    void writePictures(std::size_t frame, const CObservation& obs,
-                       const travel::AlignedCloud& aligned) {
-        const travel::Result& result = frame_.result;
+    void writePictures(std::size_t index, const CObservation& obs,
+                       const travel_mrpt::TravelFrame& frame) {
+        const travel::AlignedCloud& aligned = *frame.aligned;
+        const travel::Result& result = frame.result;
         char suffix[32];
-        std::snprintf(suffix, sizeof suffix, "_%06zu", frame);
+        std::snprintf(suffix, sizeof suffix, "_%06zu", index);
         const std::string stem = options_.png_prefix + suffix;
-        const auto total = std::max<std::size_t>(1, frame_.cloud.size());
+        const auto total = std::max<std::size_t>(1, frame.cloud.size());
         char title[256];
         std::snprintf(title, sizeof title,
                       "frame %zu  %s  %zu pts  ground %.0f%%  non-ground %.0f%%  %zu clusters",
-                      frame, obs.sensorLabel.c_str(), frame_.cloud.size(),
+                      index, obs.sensorLabel.c_str(), frame.cloud.size(),
                       100.0 * result.count(PointClass::Ground) / total,
                       100.0 * result.count(PointClass::NonGround) / total, result.clusters.size());
         birds_eye_.title = title;
@@ -209,10 +236,10 @@ class RawlogSegmenter {
         travel::apps::writePly(stem + ".ply", aligned, result);
     }
 
-    void addTracking(const std::vector<travel::ClusterSummary>& clusters) {
+    void addTracking(const travel_mrpt::TravelFrame& frame) {
         ++totals_.tracked;
-        totals_.tracked_with_poses += frame_.egoFromPoses;
-        for (const travel::ClusterSummary& c : clusters) {
+        totals_.tracked_with_poses += frame.egoFromPoses;
+        for (const travel::ClusterSummary& c : frame.result.clusters) {
             totals_.tracked_clusters += c.track_id != 0;
             totals_.moving_clusters += c.moving;
             totals_.tracks = std::max(totals_.tracks, c.track_id);
@@ -240,7 +267,8 @@ class RawlogSegmenter {
     std::set<std::string> notes_;
     travel_mrpt::LabelledOutputPool outputs_;
     Totals totals_;
-    travel_mrpt::TravelFrame frame_;  // reused across frames
+    travel_mrpt::TravelFrame frame_;  // reused across frames (processObservation)
+    travel_mrpt::TravelFilter::FrameJob job_;
     ProgressLine* progress_ = nullptr;
 };
 

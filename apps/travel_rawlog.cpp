@@ -165,6 +165,10 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
         "consecutive scans",
         cmd);
     const travel::apps::MemoryLimitFlag max_memory(cmd);
+    const travel::apps::JobsFlag jobs(
+        line, "LiDAR frames",
+        "one pipeline each (records are read, and motion data applied, in order on the main "
+        "thread; tracking and the outputs too)");
     Options o;
     o.exit_code = line.parse(argc, argv);
     if (o.exit_code) return o;
@@ -187,6 +191,7 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     o.label_reference = reference.getValue();
     o.plain_clouds = !no_plain.getValue();
     o.max_memory_mib = max_memory.mib();
+    o.jobs = jobs.count();
 
     configuration = flags.config.load();
     if (!o.sensor_label_regex.empty()) configuration.filter.sensor_label = o.sensor_label_regex;
@@ -217,6 +222,183 @@ travel_mrpt::RawlogReader openInput(const Options& o) {
     return travel_mrpt::RawlogReader(o.input);  // built without mrpt-hwdrivers: no .pcap
 }
 #endif
+
+/// -j 1: each record read, segmented and written before the next.
+template <class Reader>
+void replayInOneThread(Reader& reader, RawlogSegmenter& segmenter,
+                       mrpt::serialization::CArchive& out, travel::apps::ProgressLine& progress) {
+    std::vector<CObservation::Ptr> added;
+    while (auto record = reader.next()) {
+        travel::apps::throwIfInterrupted();
+        const long index = reader.index() - 1;
+        segmenter.startRecord();
+        added.clear();
+        if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(record)) {
+            for (auto it = sf->begin(); it != sf->end();)
+                it = *it && segmenter.isStaleOutput(**it) ? sf->erase(it) : std::next(it);
+            // The new clouds join the SensoryFrame of their source observation.
+            for (const auto& obs : *sf)
+                if (obs) segmenter.processObservation(*obs, index, added);
+            for (const auto& obs : added) sf->insert(obs);
+            out << *sf;
+        } else if (auto obs = std::dynamic_pointer_cast<CObservation>(record)) {
+            if (segmenter.isStaleOutput(*obs)) continue;
+            segmenter.processObservation(*obs, index, added);
+            out << *obs;
+            for (const auto& extra : added) out << *extra;
+        } else {
+            segmenter.processMotion(*record);  // odometry actions
+            out << *record;                    // copied unchanged
+        }
+        progress.update(segmenter.totals().frames, reader.fractionRead());
+    }
+}
+
+/// One record in flight under -j N: its LiDAR observations, each with its frame (reused from
+/// record to record) and the aligned cloud of its segmentation.
+struct RecordSlot {
+    struct Item {
+        CObservation* obs = nullptr;  // owned by `record`
+        travel_mrpt::TravelFrame frame;
+        travel_mrpt::TravelFilter::FrameJob job;
+        /// The settled pipeline the workers copy (made on the main thread, read-only after).
+        std::shared_ptr<const travel::Pipeline> origin;
+        travel::AlignedCloud aligned;
+        double segment_ms = 0;
+    };
+    mrpt::serialization::CSerializable::Ptr record;
+    long index = 0;
+    bool skip = false;  // a stale output of an earlier run: not written
+    double fraction_read = 0;
+    std::vector<Item> items;  // grows to the most LiDARs of a record, then reused
+    std::size_t used = 0;
+    Item& add() {
+        if (used == items.size()) items.emplace_back();
+        return items[used++];
+    }
+};
+
+/// -j N: records are read, and their motion data and conversion done, in order on this
+/// thread; the frames are segmented on N workers, each with its own copy of every sensor's
+/// pipeline (once its mount is settled: until then frames are segmented here, in order);
+/// tracking, outputs and writing happen here again, in record order. The output is the same as
+/// with -j 1 (apps.travel_rawlog_jobs compares them).
+template <class Reader>
+void replayOnWorkers(Reader& reader, RawlogSegmenter& segmenter, mrpt::serialization::CArchive& out,
+                     travel::apps::ProgressLine& progress, unsigned jobs) {
+    // Worker w's pipelines: per sensor label, the copy and the settled pipeline it came from.
+    struct WorkerPipeline {
+        const travel::Pipeline* origin = nullptr;
+        std::unique_ptr<travel::Pipeline> pipeline;
+    };
+    std::vector<std::map<std::string, WorkerPipeline>> worker_pipelines(jobs);
+    const auto segment = [&](unsigned w, RecordSlot& slot) {
+        for (std::size_t k = 0; k < slot.used; ++k) {
+            RecordSlot::Item& item = slot.items[k];
+            WorkerPipeline& mine = worker_pipelines[w][item.frame.sensorLabel];
+            if (mine.origin != item.origin.get()) {  // first frame, or a new mount
+                mine.pipeline = std::make_unique<travel::Pipeline>(item.origin->settledCopy());
+                mine.origin = item.origin.get();
+            }
+            item.segment_ms =
+                travel::apps::segmentFrame(*mine.pipeline, item.frame, item.job.input);
+            item.aligned = mine.pipeline->aligned();  // the pipeline moves on to other frames
+        }
+    };
+    std::vector<CObservation::Ptr> added;
+    const auto consume = [&](RecordSlot& slot) {
+        travel::apps::throwIfInterrupted();
+        segmenter.startRecord();
+        added.clear();
+        std::size_t k = 0;
+        const auto completeNext = [&](const CObservation& obs) {
+            if (k < slot.used && slot.items[k].obs == &obs) {
+                RecordSlot::Item& item = slot.items[k++];
+                segmenter.complete(obs, slot.index, item.frame, item.job, item.aligned,
+                                   item.segment_ms, added);
+            }
+        };
+        if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(slot.record)) {
+            for (const auto& obs : *sf)
+                if (obs) completeNext(*obs);
+            for (const auto& obs : added) sf->insert(obs);
+            out << *sf;
+        } else if (auto obs = std::dynamic_pointer_cast<CObservation>(slot.record)) {
+            completeNext(*obs);
+            out << *obs;
+            for (const auto& extra : added) out << *extra;
+        } else {
+            out << *slot.record;
+        }
+        slot.record.reset();
+        progress.update(segmenter.totals().frames, slot.fraction_read);
+    };
+
+    // The settled pipeline of each sensor label that the workers copy, per generation.
+    struct Origin {
+        unsigned generation = 0;
+        std::shared_ptr<const travel::Pipeline> pipeline;
+    };
+    std::map<std::string, Origin> origins;
+    travel::apps::OrderedSlots<RecordSlot> pool(jobs, segment);
+    while (auto record = reader.next()) {
+        travel::apps::throwIfInterrupted();
+        RecordSlot& slot = pool.next(consume);
+        slot.record = record;
+        slot.index = reader.index() - 1;
+        slot.fraction_read = reader.fractionRead();
+        slot.used = 0;
+        const auto prepare = [&](CObservation& obs) {
+            RecordSlot::Item& item = slot.add();
+            if (segmenter.prepare(obs, item.frame, item.job))
+                item.obs = &obs;
+            else
+                --slot.used;
+        };
+        if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(record)) {
+            for (auto it = sf->begin(); it != sf->end();)
+                it = *it && segmenter.isStaleOutput(**it) ? sf->erase(it) : std::next(it);
+            for (const auto& obs : *sf)
+                if (obs) prepare(*obs);
+        } else if (auto obs = std::dynamic_pointer_cast<CObservation>(record)) {
+            if (segmenter.isStaleOutput(*obs)) {
+                slot.record.reset();
+                continue;  // the slot stays free
+            }
+            prepare(*obs);
+        } else {
+            segmenter.processMotion(*record);  // odometry actions
+        }
+        // A mount still being settled: frames of that sensor depend on the ones before, so
+        // they are segmented here, in order (the workers hold no copy of that pipeline yet).
+        // Records without a LiDAR frame need no worker either.
+        bool here = false;
+        for (std::size_t k = 0; k < slot.used; ++k)
+            here = here || !slot.items[k].job.pipeline->mountSettled();
+        if (here || slot.used == 0) {
+            for (std::size_t k = 0; k < slot.used; ++k) {
+                RecordSlot::Item& item = slot.items[k];
+                item.segment_ms =
+                    travel::apps::segmentFrame(*item.job.pipeline, item.frame, item.job.input);
+                item.aligned = item.job.pipeline->aligned();
+            }
+            pool.submitDone();
+            continue;
+        }
+        for (std::size_t k = 0; k < slot.used; ++k) {
+            RecordSlot::Item& item = slot.items[k];
+            Origin& origin = origins[item.frame.sensorLabel];
+            if (!origin.pipeline || origin.generation != item.job.generation) {
+                origin.pipeline =
+                    std::make_shared<const travel::Pipeline>(item.job.pipeline->settledCopy());
+                origin.generation = item.job.generation;
+            }
+            item.origin = origin.pipeline;
+        }
+        pool.submit();
+    }
+    pool.drain(consume);
+}
 
 int run(int argc, char** argv) {
     travel::Config configuration;
@@ -249,33 +431,11 @@ int run(int argc, char** argv) {
     travel::apps::ProgressLine progress(
         "travel-rawlog", 0, travel::apps::verbosityFrom(options.quiet, options.verbose));
     segmenter.attach(progress);
-    std::vector<CObservation::Ptr> added;
     try {
-        while (auto record = reader.next()) {
-            travel::apps::throwIfInterrupted();
-            const long index = reader.index() - 1;
-            segmenter.startRecord();
-            added.clear();
-            if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(record)) {
-                for (auto it = sf->begin(); it != sf->end();)
-                    it = *it && segmenter.isStaleOutput(**it) ? sf->erase(it) : std::next(it);
-                // The new clouds join the SensoryFrame of their source observation.
-                for (const auto& obs : *sf)
-                    if (obs) segmenter.processObservation(*obs, index, added);
-                for (const auto& obs : added) sf->insert(obs);
-                out << *sf;
-            } else if (auto obs = std::dynamic_pointer_cast<CObservation>(record)) {
-                if (segmenter.isStaleOutput(*obs)) continue;
-                segmenter.processObservation(*obs, index, added);
-                out << *obs;
-                for (const auto& extra : added) out << *extra;
-            } else {
-                segmenter.processMotion(*record);  // odometry actions
-                out << *record;                    // copied unchanged
-            }
-
-            progress.update(segmenter.totals().frames, reader.fractionRead());
-        }
+        if (options.jobs <= 1)
+            replayInOneThread(reader, segmenter, out, progress);
+        else
+            replayOnWorkers(reader, segmenter, out, progress, options.jobs);
         segmenter.finish();
         progress.finish();
     } catch (...) {

@@ -17,6 +17,20 @@ add_test(NAME apps.travel_rawlog_cli
     -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog.cmake)
 set_tests_properties(apps.travel_rawlog_cli PROPERTIES TIMEOUT 300)
 
+# travel-rawlog -j N: the same output as -j 1 (compared record by record, timings excepted).
+add_executable(compare_travel_rawlogs ${CMAKE_CURRENT_LIST_DIR}/compare_travel_rawlogs.cpp)
+target_link_libraries(compare_travel_rawlogs PRIVATE travel::mrpt mrpt::io mrpt::serialization)
+target_compile_options(compare_travel_rawlogs PRIVATE -Wall -Wextra)
+add_test(NAME apps.travel_rawlog_jobs
+  COMMAND ${CMAKE_COMMAND}
+    -DTRAVEL_RAWLOG=$<TARGET_FILE:travel-rawlog>
+    -DCOMPARE=$<TARGET_FILE:compare_travel_rawlogs>
+    -DMAKE_SYNTHETIC=$<TARGET_FILE:make_synthetic_rawlog>
+    -DSAMPLE=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/cli_rawlog_jobs
+    -P ${CMAKE_CURRENT_LIST_DIR}/cli/test_travel_rawlog_jobs.cmake)
+set_tests_properties(apps.travel_rawlog_jobs PROPERTIES TIMEOUT 300)
+
 # sensor_height: auto on MRPT's sample: reported, the preset's wrong height warned once.
 add_test(NAME apps.travel_rawlog_mount_auto
   COMMAND ${CMAKE_COMMAND}

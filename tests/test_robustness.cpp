@@ -15,10 +15,12 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "OrderedWork.hpp"  // apps/: -j N of the batch apps
 #include "SceneMetrics.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
@@ -634,6 +636,79 @@ TEST(Robustness, FourThreadsEachWithItsOwnPipelineMatchSingleThreaded) {
     }
     for (std::thread& th : threads) th.join();
     for (int t = 0; t < kThreads; ++t) EXPECT_EQ(mismatches[t], 0) << "thread " << t;
+}
+
+// The apps' -j N helpers (apps/OrderedWork.hpp), also run under ThreadSanitizer: items are
+// consumed in input order whatever order the workers finish them in, and a worker's exception
+// reaches the caller at its item's turn, after every earlier item.
+TEST(Robustness, ThreadsOfForEachInOrderConsumeInInputOrder) {
+    constexpr std::size_t kItems = 200;
+    for (unsigned workers : {1u, 2u, 3u}) {
+        std::vector<std::size_t> consumed;
+        apps::forEachInOrder<std::size_t>(
+            kItems, workers, [&] { return consumed.size() < 3; },  // 3 in order first
+            [](unsigned) {},
+            [](unsigned, std::size_t i, std::size_t& slot) {
+                // Uneven work so that workers overtake each other.
+                if (i % 7 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+                slot = i * i;
+            },
+            [&](std::size_t i, std::size_t& slot) {
+                EXPECT_EQ(slot, i * i);
+                consumed.push_back(i);
+            });
+        ASSERT_EQ(consumed.size(), kItems) << workers;
+        for (std::size_t i = 0; i < kItems; ++i) EXPECT_EQ(consumed[i], i) << workers;
+    }
+}
+
+TEST(Robustness, ThreadsOfOrderedSlotsConsumeInPreparationOrder) {
+    struct Slot {
+        std::size_t item = 0, result = 0;
+    };
+    constexpr std::size_t kItems = 300;
+    for (unsigned workers : {1u, 2u, 3u}) {
+        std::vector<std::size_t> consumed;
+        const auto consume = [&](Slot& s) {
+            EXPECT_EQ(s.result, s.item * 3 + 1);
+            consumed.push_back(s.item);
+        };
+        {
+            apps::OrderedSlots<Slot> pool(workers, [](unsigned, Slot& s) {
+                if (s.item % 5 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+                s.result = s.item * 3 + 1;
+            });
+            for (std::size_t i = 0; i < kItems; ++i) {
+                Slot& s = pool.next(consume);
+                s.item = i;
+                if (i % 11 == 0) {  // done by the caller, as travel-rawlog's unsettled frames
+                    s.result = i * 3 + 1;
+                    pool.submitDone();
+                } else {
+                    pool.submit();
+                }
+            }
+            pool.drain(consume);
+        }
+        ASSERT_EQ(consumed.size(), kItems) << workers;
+        for (std::size_t i = 0; i < kItems; ++i) EXPECT_EQ(consumed[i], i) << workers;
+    }
+    // A worker's exception: the items before it are consumed, then it is rethrown.
+    std::vector<std::size_t> consumed;
+    const auto consume = [&](Slot& s) { consumed.push_back(s.item); };
+    apps::OrderedSlots<Slot> pool(2, [](unsigned, Slot& s) {
+        if (s.item == 6) throw std::runtime_error("item 6 failed");
+    });
+    const auto run = [&] {
+        for (std::size_t i = 0; i < 20; ++i) {
+            Slot& s = pool.next(consume);
+            s.item = i;
+            pool.submit();
+        }
+        pool.drain(consume);
+    };
+    EXPECT_THROW(run(), std::runtime_error);
+    EXPECT_EQ(consumed, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
 }
 
 }  // namespace

@@ -117,6 +117,7 @@ TravelFilter::SensorPipeline& TravelFilter::pipelineFor(const std::string& label
         logStr(mrpt::system::LVL_INFO,
                "sensor '" + label + "' changed its mount: rebuilding its TRAVEL pipeline");
     entry.pipeline = std::make_unique<travel::Pipeline>(params);
+    ++entry.generation;
     // Fixed angles come from the sensorPose here: the configuration keys would change nothing.
     if (options_.use_sensor_pose)
         entry.pipeline->setMountAnglesSource(
@@ -130,6 +131,19 @@ TravelFilter::SensorPipeline& TravelFilter::pipelineFor(const std::string& label
 
 bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
                           std::string* why_not) {
+    FrameJob job;
+    if (!prepare(obs, out, job, why_not)) return false;
+    const Clock::time_point start = Clock::now();
+    {
+        mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
+        job.pipeline->process(out.cloud, job.input, out.result);
+    }
+    complete(out, job, job.pipeline->aligned(), msSince(start));
+    return true;
+}
+
+bool TravelFilter::prepare(const mrpt::obs::CObservation& obs, TravelFrame& out, FrameJob& job,
+                           std::string* why_not) {
     const auto fail = [&](const std::string& reason) {
         if (why_not) *why_not = reason;
         return false;
@@ -151,7 +165,9 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
     out.convert_ms = msSince(convert_start);
     out.sensorLabel = obs.sensorLabel;
     out.timestamp = obs.timestamp;
-    segment(out);
+    const Clock::time_point prepare_start = Clock::now();
+    prepareSegmentation(out, job);
+    job.prepare_ms = msSince(prepare_start);
     return true;
 }
 
@@ -168,13 +184,30 @@ void TravelFilter::filter(const travel::PointCloud& cloud, const mrpt::poses::CP
 }
 
 void TravelFilter::segment(TravelFrame& out) {
-    const Clock::time_point process_start = Clock::now();
-    mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
+    const Clock::time_point start = Clock::now();
+    FrameJob job;
+    prepareSegmentation(out, job);
+    job.prepare_ms = msSince(start);
+    const Clock::time_point segment_start = Clock::now();
+    {
+        mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
+        job.pipeline->process(out.cloud, job.input, out.result);
+    }
+    complete(out, job, job.pipeline->aligned(), msSince(segment_start));
+}
+
+void TravelFilter::prepareSegmentation(TravelFrame& out, FrameJob& job) {
     SensorPipeline& sensor = pipelineFor(out.sensorLabel, out.sensorPose);
+    job.pipeline = sensor.pipeline.get();
+    job.generation = sensor.generation;
     const travel::Params& params = sensor.pipeline->params();
 
     // Motion at the frame's time zero (see the header): robot frame -> sensor frame.
-    travel::FrameInput input;
+    job.robot_pose.reset();
+    if (options_.track_objects && out.timestamp != INVALID_TIMESTAMP)
+        job.robot_pose = egoPoseAt(out.timestamp);
+    travel::FrameInput& input = job.input;
+    input = travel::FrameInput{};
     input.reference_time = 0.0;
     out.levelled = out.deskewed = false;
     out.sensorLinearVelocity.setZero();
@@ -222,16 +255,19 @@ void TravelFilter::segment(TravelFrame& out) {
                          mrpt::system::LVL_INFO);
         }
     }
-
-    sensor.pipeline->process(out.cloud, input, out.result);
-    out.alignedRotation = sensor.pipeline->aligned().rotation;
-    out.aligned = &sensor.pipeline->aligned();
-    out.tracked = out.egoFromPoses = false;
-    if (options_.track_objects) track(out);
-    out.process_ms = msSince(process_start);
 }
 
-void TravelFilter::track(TravelFrame& out) {
+void TravelFilter::complete(TravelFrame& out, const FrameJob& job,
+                            const travel::AlignedCloud& aligned, double segment_ms) {
+    const Clock::time_point start = Clock::now();
+    out.alignedRotation = aligned.rotation;
+    out.aligned = &aligned;
+    out.tracked = out.egoFromPoses = false;
+    if (options_.track_objects) track(out, job.robot_pose);
+    out.process_ms = job.prepare_ms + segment_ms + msSince(start);
+}
+
+void TravelFilter::track(TravelFrame& out, const std::optional<Eigen::Isometry3d>& robot) {
     if (out.timestamp == INVALID_TIMESTAMP) {
         noteOnce(noted_track_time_,
                  "'" + out.sensorLabel + "' without timestamp: its clusters are not tracked",
@@ -240,7 +276,6 @@ void TravelFilter::track(TravelFrame& out) {
     }
     auto& tracker = trackers_[out.sensorLabel];
     if (!tracker) tracker = std::make_unique<travel::FrameTracker>(options_.tracking);
-    const std::optional<Eigen::Isometry3d> robot = egoPoseAt(out.timestamp);
     if (robot) {
         // The aligned frame is levelled (z up), so only the robot's yaw turns it in the world:
         // composing a planar pose (odometry: no roll, pitch) with the levelling rotation would

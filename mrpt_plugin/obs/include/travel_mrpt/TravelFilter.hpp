@@ -115,6 +115,32 @@ class TravelFilter : public mrpt::system::COutputLogger {
     /// Aligned cloud of the last frame of `sensor_label`; throws std::out_of_range if none.
     const travel::AlignedCloud& aligned(const std::string& sensor_label) const;
 
+    // ---- filter() in three steps, for replays that segment on several threads ----
+    /// What the segmentation of a prepared frame needs: the sensor's pipeline (a settled one
+    /// may be copied, travel::Pipeline::settledCopy(), and the copy used on another thread) and
+    /// the frame's input (levelling, deskew velocities).
+    struct FrameJob {
+        travel::Pipeline* pipeline = nullptr;
+        /// Changes when the sensor's pipeline is rebuilt (a new mount): copies made from an
+        /// older generation are stale.
+        unsigned generation = 0;
+        travel::FrameInput input;
+        /// The robot pose tracking uses (egoPoseAt the frame's time), taken when prepared:
+        /// motion data read after the frame must not change it.
+        std::optional<Eigen::Isometry3d> robot_pose;
+        double prepare_ms = 0;
+    };
+    /// filter()'s first step, in record order on this thread: the checks, the conversion, the
+    /// motion at the frame's time and the sensor's pipeline. false (and *why_not) as filter().
+    bool prepare(const mrpt::obs::CObservation& obs, TravelFrame& out, FrameJob& job,
+                 std::string* why_not = nullptr);
+    /// The last step, in record order on this thread, once job.pipeline (or a settled copy of
+    /// it) has segmented out.cloud into out.result: out.aligned = `aligned` (the aligned cloud
+    /// of that segmentation, which the caller keeps alive), tracking, out.process_ms
+    /// (prepare + `segment_ms` + this step).
+    void complete(TravelFrame& out, const FrameJob& job, const travel::AlignedCloud& aligned,
+                  double segment_ms);
+
     // ---- Motion inputs, in rawlog order ----
     /// Attitude from IMU_ORI_QUAT_* (or IMU_ROLL/IMU_PITCH[/IMU_YAW]) and gyro IMU_WX/WY/WZ,
     /// moved from the IMU frame to the robot frame with the IMU's sensorPose rotation.
@@ -148,14 +174,19 @@ class TravelFilter : public mrpt::system::COutputLogger {
   private:
     struct SensorPipeline {
         std::unique_ptr<travel::Pipeline> pipeline;
+        unsigned generation = 0;     ///< FrameJob::generation
         mrpt::poses::CPose3D mount;  ///< sensor pose the pipeline was built for
         bool noted_no_times = false;
     };
     SensorPipeline& pipelineFor(const std::string& label, const mrpt::poses::CPose3D& pose);
+    /// The sensor's pipeline and the frame input that levels and deskews out.cloud
+    /// (sensorPose, sensorLabel, timestamp set).
+    void prepareSegmentation(TravelFrame& out, FrameJob& job);
     /// Levels, deskews and segments out.cloud (sensorPose, sensorLabel, timestamp set).
     void segment(TravelFrame& out);
-    /// Fills the clusters' tracking fields of `out` (options_.track_objects).
-    void track(TravelFrame& out);
+    /// Fills the clusters' tracking fields of `out` (options_.track_objects), with the robot
+    /// at `robot` (else ego-motion from registration).
+    void track(TravelFrame& out, const std::optional<Eigen::Isometry3d>& robot);
     /// Logs `message` the first time `flag` is false, then sets it (no per-frame strings).
     void noteOnce(bool& flag, const std::string& message, mrpt::system::VerbosityLevel level);
 
