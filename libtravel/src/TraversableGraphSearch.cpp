@@ -32,6 +32,8 @@
 #include <cmath>
 #include <limits>
 
+#include "Prefault.hpp"
+
 namespace travel {
 
 bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params) {
@@ -43,6 +45,12 @@ bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params)
     const float max_offset = len * static_cast<float>(std::sin(params.eps1));
     return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn &&
            std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset;
+}
+
+void TraversableGraphSearch::reserve(const TriGridField& field) {
+    const std::size_t nodes = static_cast<std::size_t>(field.numNodes());
+    detail::prefault(reached_, nodes), detail::prefault(reached_where_, nodes);
+    detail::prefault(candidates_, nodes), detail::prefault(nearest_, nodes);
 }
 
 void TraversableGraphSearch::markReached(int node, int16_t component, const TriGridField& field,

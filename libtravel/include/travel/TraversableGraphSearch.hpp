@@ -19,6 +19,9 @@ class TraversableGraphSearch {
   public:
     /// Sets reached / component of every node and model.seed_node / num_components.
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
+    /// Sizes (and maps) the per-node buffers for the field, so the first frame pays no page
+    /// faults for them.
+    void reserve(const TriGridField& field);
 
   private:
     void searchFrom(int root, int16_t component, const TriGridField& field, const Params& params,
