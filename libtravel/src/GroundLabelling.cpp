@@ -14,6 +14,23 @@
 #include <limits>
 
 namespace travel {
+namespace {
+
+// Points per class. One counter per class, each a branch-free sum over all labels: a
+// ++counts[label] per point would chain the increments of equal labels through memory.
+std::array<std::size_t, 4> classCounts(const std::vector<PointClass>& labels) {
+    const uint8_t* l = reinterpret_cast<const uint8_t*>(labels.data());
+    const std::size_t n = labels.size();
+    std::size_t ground = 0, non_ground = 0, outlier = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        ground += l[i] == static_cast<uint8_t>(PointClass::Ground) ? 1 : 0;
+        non_ground += l[i] == static_cast<uint8_t>(PointClass::NonGround) ? 1 : 0;
+        outlier += l[i] == static_cast<uint8_t>(PointClass::Outlier) ? 1 : 0;
+    }
+    return {n - ground - non_ground - outlier, ground, non_ground, outlier};
+}
+
+}  // namespace
 
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
                                        const Params& params, const TerrainModel& model,
@@ -49,9 +66,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
             labels[order[i]] = classifyByPlaneDistance(e, ground_dist, outlier_dist);
         }
     }
-    std::array<std::size_t, 4> counts{};
-    for (const PointClass c : labels) ++counts[static_cast<int>(c)];
-    return counts;
+    return classCounts(labels);
 }
 
 }  // namespace travel

@@ -63,6 +63,41 @@ Moments accumulate(const float* x, const float* y, const float* z, uint32_t coun
     return mo;
 }
 
+// The seeds: points within the band [lo, hi) around the LPR (node-local z).
+struct SeedBand {
+    float lo, hi;
+    bool operator()(float, float, float pz) const { return pz >= lo && pz < hi; }
+};
+
+// The refit's points: s.p + d_local < plane_inlier_dist, written as s.p < limit.
+struct BelowPlane {
+    float a, b, c, limit;
+    bool operator()(float px, float py, float pz) const { return a * px + b * py + c * pz < limit; }
+};
+
+// True when `before` and `after` select the same points (same node-local coordinates as
+// accumulate(), so the same float results). Stops at the first block of kLanes that differs.
+template <class Before, class After>
+bool sameSelection(const float* x, const float* y, const float* z, uint32_t count,
+                   const float origin[3], Before before, After after) {
+    constexpr int kLanes = 8;
+    uint32_t i = 0;
+    for (; i + kLanes <= count; i += kLanes) {
+        int differ = 0;
+        for (int l = 0; l < kLanes; ++l) {
+            const float px = x[i + l] - origin[0], py = y[i + l] - origin[1];
+            const float pz = z[i + l] - origin[2];
+            differ |= before(px, py, pz) != after(px, py, pz) ? 1 : 0;
+        }
+        if (differ) return false;
+    }
+    for (; i < count; ++i) {
+        const float px = x[i] - origin[0], py = y[i] - origin[1], pz = z[i] - origin[2];
+        if (before(px, py, pz) != after(px, py, pz)) return false;
+    }
+    return true;
+}
+
 struct Plane {
     Eigen::Vector3d normal, mean_local, eigenvalues;  // eigenvalues descending (l1, l2, l3)
     double d_local = 0;                               // s.p_local + d_local = 0
@@ -101,26 +136,62 @@ bool fitPlane(double line_node_ratio, const Moments& m, Plane& plane) {
     return true;
 }
 
-// Mean of the k lowest values, k small. A branch-free min/max network: each value sinks through
-// the k kept values. (An insertion sort degenerates here: sensors often deliver a node's points
-// in decreasing z, so every point would be inserted at the front.)
-float lowestPointRepresentative(const float* z, uint32_t count, int k) {
-    constexpr int kMax = 64;
-    float lowest[kMax];
-    k = std::min({k, static_cast<int>(count), kMax});
-    for (int j = 0; j < k; ++j) lowest[j] = std::numeric_limits<float>::infinity();
-    for (uint32_t i = 0; i < count; ++i) {
-        float v = z[i];
-        if (!(v < lowest[k - 1])) continue;  // the common case in most scan orders
-        for (int j = 0; j < k; ++j) {
-            const float lo = std::min(lowest[j], v);
-            v = std::max(lowest[j], v);
-            lowest[j] = lo;
-        }
+BelowPlane belowPlane(const Plane& plane, double inlier_dist) {
+    return {static_cast<float>(plane.normal.x()), static_cast<float>(plane.normal.y()),
+            static_cast<float>(plane.normal.z()), static_cast<float>(inlier_dist - plane.d_local)};
+}
+
+// The k lowest values seen so far, ascending, in lowest[0..k): a new value v sinks through them
+// as through a min/max network. A value not below lowest[k - 1] leaves them unchanged.
+inline void sinkThrough(float v, float* lowest, int k) {
+    for (int j = 0; j < k; ++j) {
+        const float lo = std::min(lowest[j], v);
+        v = std::max(lowest[j], v);
+        lowest[j] = lo;
     }
+}
+
+double sumAscending(const float* lowest, int k) {
     double sum = 0;
     for (int j = 0; j < k; ++j) sum += lowest[j];
-    return static_cast<float>(sum / k);
+    return sum;
+}
+
+// Mean of the K lowest of count >= K values, K a compile-time constant: the network is unrolled
+// and its K values stay in registers. (An insertion sort degenerates here: sensors often deliver
+// a node's points in decreasing z, so every point would be inserted at the front.)
+template <int K>
+float lowestMean(const float* z, uint32_t count) {
+    float lowest[K];
+    for (int j = 0; j < K; ++j) lowest[j] = std::numeric_limits<float>::infinity();
+    for (uint32_t i = 0; i < count; ++i)
+        if (z[i] < lowest[K - 1]) sinkThrough(z[i], lowest, K);
+    return static_cast<float>(sumAscending(lowest, K) / K);
+}
+
+// Mean of the k lowest values (LPR), k small.
+float lowestPointRepresentative(const float* z, uint32_t count, int k) {
+    constexpr int kMax = 64;
+    k = std::min({k, static_cast<int>(count), kMax});
+    switch (k) {  // the usual lpr_num_points; the same values and sum as the loop below
+        case 3:
+            return lowestMean<3>(z, count);
+        case 4:
+            return lowestMean<4>(z, count);
+        case 5:
+            return lowestMean<5>(z, count);
+        case 6:
+            return lowestMean<6>(z, count);
+        case 8:
+            return lowestMean<8>(z, count);
+        default:
+            break;
+    }
+    float lowest[kMax];
+    for (int j = 0; j < k; ++j) lowest[j] = std::numeric_limits<float>::infinity();
+    for (uint32_t i = 0; i < count; ++i)
+        if (z[i] < lowest[k - 1]) sinkThrough(z[i], lowest, k);
+    return static_cast<float>(sumAscending(lowest, k) / k);
 }
 
 }  // namespace
@@ -146,28 +217,26 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
         // Node-local origin: cell centre in xy, LPR in z.
         const Eigen::Vector2f c = model.cellCenter(id / 4);
         const float origin[3] = {c.x(), c.y(), node.lpr};
-        const float seed_lo = -static_cast<float>(params.seed_margin_below_lpr);
-        const float seed_hi = static_cast<float>(params.seed_margin_above_lpr);
+        const SeedBand seeds{-static_cast<float>(params.seed_margin_below_lpr),
+                             static_cast<float>(params.seed_margin_above_lpr)};
         Plane plane;
-        bool ok = fitPlane(
-            params.line_node_ratio,
-            accumulate(x, y, z, node.count, origin,
-                       [=](float, float, float pz) { return pz >= seed_lo && pz < seed_hi; }),
-            plane);
+        bool ok =
+            fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin, seeds), plane);
+        BelowPlane fitted_from{};  // the selection of the last refit
         for (int it = 1; ok && it < params.plane_fit_iterations; ++it) {
-            const float a = static_cast<float>(plane.normal.x());
-            const float b = static_cast<float>(plane.normal.y());
-            const float cz = static_cast<float>(plane.normal.z());
-            const float limit = static_cast<float>(params.plane_inlier_dist - plane.d_local);
+            const BelowPlane inliers = belowPlane(plane, params.plane_inlier_dist);
+            // The same points as the last fit give the same plane: the iteration has converged
+            // (a check pass costs a fraction of a moment pass and its eigen solve).
+            const bool converged =
+                it == 1 ? sameSelection(x, y, z, node.count, origin, seeds, inliers)
+                        : sameSelection(x, y, z, node.count, origin, fitted_from, inliers);
+            if (converged) break;
             Plane next;
-            if (!fitPlane(params.line_node_ratio,
-                          accumulate(x, y, z, node.count, origin,
-                                     [=](float px, float py, float pz) {
-                                         return a * px + b * py + cz * pz < limit;
-                                     }),
+            if (!fitPlane(params.line_node_ratio, accumulate(x, y, z, node.count, origin, inliers),
                           next))
                 break;
             plane = next;
+            fitted_from = inliers;
         }
         if (!ok) {
             node.node_class = NodeClass::Unknown;

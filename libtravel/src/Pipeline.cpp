@@ -40,6 +40,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
     field_.reserve(points);
+    graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
     if (params_.cluster_objects) {
         range_image_.reserve(points);
         clustering_.reserve(points, points);  // the range image has beams x columns cells too

@@ -15,7 +15,14 @@
 #include <cmath>
 #include <limits>
 
+#include "Prefault.hpp"
+
 namespace travel {
+
+void TerrainModelFitting::reserve(const TriGridField& field) {
+    const std::size_t vertices = static_cast<std::size_t>(field.numVertices());
+    detail::prefault(vote_weight_, vertices), detail::prefault(vote_weighted_z_, vertices);
+}
 
 void TerrainModelFitting::run(const TriGridField& field, const Params& params,
                               TerrainModel& model) {

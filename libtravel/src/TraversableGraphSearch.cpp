@@ -32,6 +32,8 @@
 #include <cmath>
 #include <limits>
 
+#include "Prefault.hpp"
+
 namespace travel {
 
 bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params) {
@@ -45,42 +47,54 @@ bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params)
            std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset;
 }
 
+void TraversableGraphSearch::reserve(const TriGridField& field) {
+    const std::size_t nodes = static_cast<std::size_t>(field.numNodes());
+    detail::prefault(reached_, nodes), detail::prefault(reached_where_, nodes);
+    detail::prefault(candidates_, nodes), detail::prefault(nearest_, nodes);
+}
+
+void TraversableGraphSearch::markReached(int node, int16_t component, const TriGridField& field,
+                                         TerrainModel& model) {
+    TriNode& reached = model.nodes[node];
+    reached.reached = true;
+    reached.component = component;
+    const int cell = node / 4, n = field.cellsPerSide();
+    reached_.push_back(node);
+    reached_where_.push_back({reached.mean.head<2>(), cell % n, cell / n});
+}
+
 void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGridField& field,
                                         const Params& params, TerrainModel& model) {
-    queue_.clear();
-    queue_.push_back(root);
-    model.nodes[root].reached = true;
-    model.nodes[root].component = component;
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const int i = queue_[head];
+    // reached_ is the queue of every search of the frame: this one's nodes are appended.
+    std::size_t head = reached_.size();
+    markReached(root, component, field, model);
+    for (; head < reached_.size(); ++head) {
+        const int i = reached_[head];
         const TriGridField::Neighbours& nb = field.neighbours(i);
         for (int k = 0; k < nb.count; ++k) {
             const int j = nb.ids[k];
-            TriNode& next = model.nodes[j];
+            const TriNode& next = model.nodes[j];
             if (next.reached || next.node_class != NodeClass::Terrain) continue;
             if (!isTraversableEdge(model.nodes[i], next, params)) continue;
-            next.reached = true;
-            next.component = component;
-            queue_.push_back(j);
+            markReached(j, component, field, model);
         }
     }
 }
 
-// The reached node whose mean is nearest (xy) to `cand`'s, at most sqrt(max_dist2) away, or -1.
-// Cells are visited in rings of growing Chebyshev radius around the candidate's cell. Means lie
-// inside their cells, so a node of ring r is at least (r - 1) r_cell away: the scan stops when
-// that exceeds the best distance found (exact, not a heuristic).
-int TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
-                                           const TerrainModel& model, float max_dist2) const {
+// The reached node whose mean is nearest (xy) to `cand`'s, at most sqrt(max_dist2) away, or -1
+// (nearest = that node, best_d2 = its squared distance, or max_dist2; cx, cy = the candidate's
+// cell). Cells are visited in rings of growing Chebyshev radius around the candidate's cell, up
+// to window_rings. Means lie inside their cells, so a node of ring r is at least (r - 1) r_cell
+// away: the scan stops when that exceeds the best distance found (exact, not a heuristic): the
+// result is the nearest reached node of the window, ties to the lower id.
+void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
+                                            const TerrainModel& model, float max_dist2,
+                                            Nearest& near) const {
     const int n = field.cellsPerSide();
-    const int node = field.nodeOf(cand.mean.x(), cand.mean.y());
-    if (node < 0) return -1;
-    const int cell = node / 4;
-    const int cx = cell % n, cy = cell / n;
-    const int max_ring = static_cast<int>(std::ceil(std::sqrt(max_dist2) / field.resolution())) + 1;
+    const int cx = near.cx, cy = near.cy;
     int nearest = -1;
     float best = max_dist2;
-    for (int ring = 0; ring <= max_ring; ++ring) {
+    for (int ring = 0; ring <= window_rings_; ++ring) {
         const float gap = std::max(0, ring - 1) * field.resolution();
         if (gap * gap > best) break;
         for (int iy = cy - ring; iy <= cy + ring; ++iy) {
@@ -99,7 +113,38 @@ int TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridFie
             }
         }
     }
-    return nearest;
+    near.node = nearest;
+    near.d2 = best;
+}
+
+// nearestReached() of candidate c, from what it was when last asked: the reached set only
+// grows, so the nearest is the nearer of the last answer and the nodes reached since (in the
+// same window, same ties); a full ring scan only when more nodes were reached since than the
+// window has cells. Re-seeding asks every candidate again after each accepted seed.
+int TraversableGraphSearch::nearestReachedNow(std::size_t c, const TriGridField& field,
+                                              const TerrainModel& model, float max_dist2) {
+    Nearest& near = nearest_[c];
+    const TriNode& cand = model.nodes[candidates_[c]];
+    if (near.cx < 0) return -1;  // mean outside the grid
+    const std::size_t reached = reached_.size();
+    const std::size_t window = static_cast<std::size_t>((2 * window_rings_ + 1)) *
+                               static_cast<std::size_t>(2 * window_rings_ + 1);
+    if (near.seen == 0 || reached - near.seen > window) {
+        nearestReached(cand, field, model, max_dist2, near);
+    } else {
+        const Eigen::Vector2f xy = cand.mean.head<2>();
+        for (std::size_t k = near.seen; k < reached; ++k) {
+            const ReachedWhere& where = reached_where_[k];
+            if (std::abs(where.cx - near.cx) > window_rings_ ||
+                std::abs(where.cy - near.cy) > window_rings_)
+                continue;
+            const float d2 = (where.xy - xy).squaredNorm();
+            const int id = reached_[k];
+            if (d2 < near.d2 || (d2 == near.d2 && id < near.node)) near.d2 = d2, near.node = id;
+        }
+    }
+    near.seen = reached;
+    return near.node;
 }
 
 void TraversableGraphSearch::run(const TriGridField& field, const Params& params,
@@ -120,6 +165,7 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     }
     if (seed < 0) return;
     model.seed_node = seed;
+    reached_.clear(), reached_where_.clear();
     searchFrom(seed, 0, field, params, model);
     int16_t component = 1;
 
@@ -133,15 +179,29 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
                      [&](int a, int b) { return model.nodes[a].weight > model.nodes[b].weight; });
     const float min_weight =
         static_cast<float>(params.reseed_min_weight_ratio) * model.nodes[seed].weight;
+    // Too light candidates never qualify: drop them once (the order of the rest is kept).
+    candidates_.erase(std::remove_if(candidates_.begin(), candidates_.end(),
+                                     [&](int id) { return model.nodes[id].weight < min_weight; }),
+                      candidates_.end());
     const float max_dist2 =
         static_cast<float>(params.reseed_max_distance * params.reseed_max_distance);
+    window_rings_ = static_cast<int>(std::ceil(std::sqrt(max_dist2) / field.resolution())) + 1;
+    nearest_.resize(candidates_.size());
+    for (std::size_t c = 0; c < candidates_.size(); ++c) {
+        const TriNode& cand = model.nodes[candidates_[c]];
+        const int node = field.nodeOf(cand.mean.x(), cand.mean.y());
+        const int n = field.cellsPerSide();
+        nearest_[c] = Nearest{};
+        if (node >= 0) nearest_[c].cx = (node / 4) % n, nearest_[c].cy = (node / 4) / n;
+    }
     bool accepted_any = true;
     while (accepted_any && component < std::numeric_limits<int16_t>::max()) {
         accepted_any = false;
-        for (const int id : candidates_) {
+        for (std::size_t c = 0; c < candidates_.size(); ++c) {
+            const int id = candidates_[c];
             const TriNode& cand = model.nodes[id];
-            if (cand.reached || cand.weight < min_weight) continue;
-            const int nearest = nearestReached(cand, field, model, max_dist2);
+            if (cand.reached) continue;
+            const int nearest = nearestReachedNow(c, field, model, max_dist2);
             if (nearest < 0) continue;
             const TriNode& ref = model.nodes[nearest];
             const Eigen::Vector2f mid = 0.5f * (ref.mean + cand.mean).head<2>();

@@ -18,6 +18,8 @@ class TerrainModelFitting {
     /// Sets corner_z, refit_* and traversable of every node. With params.ttmf == false,
     /// traversable = reached and the refit plane is the node's own plane (ablation).
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
+    /// Sizes (and maps) the per-vertex buffers for the field (no page faults on the first frame).
+    void reserve(const TriGridField& field);
 
   private:
     std::vector<double> vote_weight_, vote_weighted_z_;

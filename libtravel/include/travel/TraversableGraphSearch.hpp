@@ -3,6 +3,7 @@
 // Breadth-first traversable graph search (B-TGS, paper Sec. III-C, eq. 2).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "travel/Params.hpp"
@@ -18,14 +19,37 @@ class TraversableGraphSearch {
   public:
     /// Sets reached / component of every node and model.seed_node / num_components.
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
+    /// Sizes (and maps) the per-node buffers for the field, so the first frame pays no page
+    /// faults for them.
+    void reserve(const TriGridField& field);
 
   private:
     void searchFrom(int root, int16_t component, const TriGridField& field, const Params& params,
                     TerrainModel& model);
-    int nearestReached(const TriNode& cand, const TriGridField& field, const TerrainModel& model,
-                       float max_dist2) const;
-    std::vector<int> queue_;
+    // The nearest reached node of a re-seeding candidate, as last computed: `seen` = how many
+    // nodes of reached_ it accounts for (0: none yet); cx, cy = the candidate's cell (-1:
+    // outside the grid).
+    struct Nearest {
+        int node = -1;
+        float d2 = 0.f;
+        std::size_t seen = 0;
+        int cx = -1, cy = -1;
+    };
+    void nearestReached(const TriNode& cand, const TriGridField& field, const TerrainModel& model,
+                        float max_dist2, Nearest& near) const;
+    int nearestReachedNow(std::size_t c, const TriGridField& field, const TerrainModel& model,
+                          float max_dist2);
+    void markReached(int node, int16_t component, const TriGridField& field, TerrainModel& model);
+    // Where a reached node is: its mean (xy) and its cell.
+    struct ReachedWhere {
+        Eigen::Vector2f xy;
+        int cx, cy;
+    };
+    std::vector<int> reached_;  // every reached node, in the order the searches reached them
+    std::vector<ReachedWhere> reached_where_;  // the same nodes' positions
     std::vector<int> candidates_;
+    std::vector<Nearest> nearest_;  // per candidate
+    int window_rings_ = 0;          // Chebyshev radius [cells] of the nearest-node window
 };
 
 }  // namespace travel
