@@ -54,8 +54,8 @@ struct Tracking {
     void add(std::size_t f, const travel::PointCloud& cloud, travel::eval::Segmentation& s) {
         const auto start = std::chrono::steady_clock::now();
         const Eigen::Isometry3d* pose = given ? &given->poses[f] : nullptr;
-        const Eigen::Isometry3d world_T_sensor =
-            tracker->update(0.1 * double(f), cloud, s.labels, s.aligned_rotation, s.clusters, pose);
+        const Eigen::Isometry3d world_T_sensor = tracker->update(
+            0.1 * double(f), cloud, s.labels, s.aligned_rotation, s.clusters, pose, &s.cluster_id);
         ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());

@@ -21,7 +21,7 @@ PACKAGES=(
 )
 # Only for the test suite, the benchmarks, the fuzzers and the Python module (not with --demo).
 TEST_PACKAGES=(
-  libgtest-dev googletest libbenchmark-dev
+  libgtest-dev googletest libbenchmark-dev libmrpt-slam-dev
   clang libclang-rt-14-dev
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-open3d
 )

@@ -4,10 +4,12 @@
 // association gates and determinism; the `tracking` configuration section.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
+#include "travel/tracking/TrackShapeAlignment.hpp"
 #include "travel/tracking/Tracker.hpp"
 
 namespace {
@@ -181,4 +183,72 @@ TEST(TrackingSection, LoadsValidatesAndRejectsUnknownKeys) {
     travel::applyConfigText("tracking:\n  moving_speed_off: 2\n", "t.yaml", bad);
     EXPECT_THROW(bad.validate(), travel::ConfigError);
     EXPECT_NE(travel::configToYaml(travel::Config{}).find("\ntracking:\n"), std::string::npos);
+}
+
+// ---------------------------------------------------------------- shape alignment
+
+namespace {
+
+/// Points on the faces y = y0 (x in [x0, x0 + 4.5]) and, if `end`, x = x0 (y in [y0, y0 + 1.8]),
+/// every 0.1 m from `phase`, at three heights (scan rings): a car's side and rear as a LiDAR
+/// samples them (the beams, not the car, fix where the points are).
+std::vector<Eigen::Vector3d> carFaces(double x0, double y0, bool end, double phase) {
+    std::vector<Eigen::Vector3d> points;
+    for (const double z : {-1.0, -0.7, -0.4}) {
+        for (double s = phase; s < 4.5; s += 0.1) points.emplace_back(x0 + s, y0, z);
+        if (end)
+            for (double s = phase; s < 1.8; s += 0.1) points.emplace_back(x0, y0 + s, z);
+    }
+    return points;
+}
+
+}  // namespace
+
+TEST(TrackShape, TwoFacesGiveTheDisplacementWhateverTheCentroidSays) {
+    travel::TrackShape shape;
+    shape.remember(carFaces(10, 3, true, 0.0), {12, 3.5});
+    // Moved by (0.4, -0.3), sampled elsewhere on the faces; the guess (a centroid's shift) is
+    // 0.5 m off along the car.
+    Eigen::Vector2d d;
+    ASSERT_TRUE(shape.displacement(carFaces(10.4, 2.7, true, 0.05), {0.9, -0.3}, 0.5, d));
+    EXPECT_NEAR(d.x(), 0.4, 0.03);
+    EXPECT_NEAR(d.y(), -0.3, 0.03);
+}
+
+TEST(TrackShape, OneFaceLeavesItsLengthToTheGuess) {
+    travel::TrackShape shape;
+    shape.remember(carFaces(10, 3, false, 0.0), {12, 3});
+    // A side seen alone says nothing along itself: x is the guess's, y the face's.
+    Eigen::Vector2d d;
+    ASSERT_TRUE(shape.displacement(carFaces(10.7, 3.2, false, 0.05), {0.6, 0.5}, 0.5, d));
+    EXPECT_NEAR(d.x(), 0.6, 0.05);
+    EXPECT_NEAR(d.y(), 0.2, 0.03);
+    // Another object: no overlap, no displacement.
+    EXPECT_FALSE(shape.displacement(carFaces(30, 20, false, 0.0), {0, 0}, 0.5, d));
+}
+
+TEST(ClusterSamples, AtMost64PointsOfClustersLongEnough) {
+    travel::PointCloud cloud;
+    std::vector<uint32_t> ids;
+    std::vector<travel::ClusterSummary> clusters(2);
+    for (int i = 0; i < 1000; ++i) {  // cluster 1: a 5 m car of 1000 points, 2: a pedestrian
+        const bool car = i % 10 != 0;
+        cloud.x.push_back(car ? 0.005f * i : 20.f);
+        cloud.y.push_back(car ? 3.f : 0.f);
+        cloud.z.push_back(0.f);
+        ids.push_back(car ? 1 : 2);
+    }
+    clusters[0].id = 1, clusters[0].num_points = 900, clusters[0].obb_extent = {5.f, 1.8f, 1.5f};
+    clusters[1].id = 2, clusters[1].num_points = 100, clusters[1].obb_extent = {0.5f, 0.5f, 1.7f};
+    travel::ClusterSamples samples;
+    samples.build(cloud, ids, Eigen::Matrix3f::Identity(), clusters);
+    const uint32_t n = samples.end(0) - samples.begin(0);
+    EXPECT_GT(n, 50u);
+    EXPECT_LE(n, travel::ClusterSamples::kMaxSamples);
+    EXPECT_EQ(samples.end(1), samples.begin(1));  // too short to need it
+    // Spread over the whole car, not its first points.
+    float lo = 1e9f, hi = -1e9f;
+    for (uint32_t i = samples.begin(0); i < samples.end(0); ++i)
+        lo = std::min(lo, samples.points()[i].x()), hi = std::max(hi, samples.points()[i].x());
+    EXPECT_GT(hi - lo, 4.5f);
 }

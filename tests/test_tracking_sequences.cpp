@@ -90,7 +90,7 @@ SimRun runSim(bool given_poses, const travel::TrackingParams& params = {}) {
         const Eigen::Isometry3d pose = simFrames()[0].world_T_sensor.inverse() * f.world_T_sensor;
         const Eigen::Isometry3d used =
             tracker.update(k * seq.frame_period, f.cloud, f.labels, f.aligned_rotation, clusters,
-                           given_poses ? &pose : nullptr);
+                           given_poses ? &pose : nullptr, &f.cluster_id);
         run.poses.push_back(used);
         const auto matches = travel::eval::objectClusters(f.instance, f.cluster_id, clusters.size(),
                                                           kMinObjectPoints);
@@ -159,11 +159,13 @@ TEST(TrackingSynthetic, FiguresWithGivenPoses) {
         for (std::size_t k = 10; k < errors.size(); ++k)
             EXPECT_LT(errors[k], 0.3) << "pedestrian " << pedestrian << " tracked frame " << k;
     }
-    // The oncoming car passes the ego vehicle: its visible faces change and move the centroid.
-    EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 0.7);
+    // The oncoming car passes the ego vehicle: its visible faces change and move the centroid;
+    // the displacement comes from aligning its faces (TrackShapeAlignment.hpp; 0.51 m/s mean
+    // with the centroid alone).
+    EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 0.25);
     // The crossing car, occluded for 4 frames, is found again as a new track that inherits the
     // old track's velocity (Tracker::velocityDonor; 1.68 m/s mean when it started at rest).
-    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 0.7);
+    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 0.5);
     for (const uint32_t parked : {3u, 5u}) {
         EXPECT_EQ(run.mot.track_ids.at(parked).size(), 1u) << "parked object " << parked;
     }
@@ -182,11 +184,12 @@ TEST(TrackingSynthetic, AcceptanceParkedKeepOneId) {
     }
 }
 
-// Issue 19's acceptance, moving cars' velocity within 0.3 m/s: NOT met yet (docs/tracking.md,
-// "Limits"): the oncoming car's visible faces change as it passes (the centroid of the visible
-// part is the measurement), and the crossing car, found again after a 4-frame occlusion as a new
-// track with the old track's velocity, underestimates its speed while its visible part grows.
-// Run with --gtest_also_run_disabled_tests.
+// Issue 19's acceptance, moving cars' velocity within 0.3 m/s in every frame: NOT met yet
+// (docs/tracking.md, "Limits"). With the faces' alignment the oncoming car is within 0.3 m/s
+// until it passes the ego vehicle (then only its side is seen in both views, which says nothing
+// along its motion: the centroid decides there, up to 0.53 m/s off); the crossing car, found
+// again after a 4-frame occlusion as a new track with the old track's velocity, converges slowly
+// (0.52 m/s at worst). Run with --gtest_also_run_disabled_tests.
 TEST(TrackingSynthetic, DISABLED_AcceptanceCarsVelocityWithin0_3) {
     const SimRun run = runSim(true);
     for (const uint32_t car : {11u, 12u}) {
@@ -248,7 +251,7 @@ TEST(TrackingReal, LargeClustersKeepTheirIdAndPosesAgreeWithRegistration) {
         travel::readScan(scans.files[k], cloud);
         pipeline.process(cloud, {}, result);
         pose = tracker.update(0.1 * k, cloud, result.labels, pipeline.aligned().rotation,
-                              result.clusters);
+                              result.clusters, nullptr, &result.cluster_id);
         frames.push_back({result.clusters, tracker.worldTAligned()});
         points.clear();
         for (std::size_t i = 0; i < cloud.size(); ++i) {

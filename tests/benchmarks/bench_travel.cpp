@@ -19,8 +19,10 @@
 //                   file measures that)
 //   BM_Stage_C/<stage> each stage alone on the state the previous stages leave
 //   BM_Tracking_KITTI   travel::Tracker::update on the clusters of KITTI frames 0, 1, 2 in turn
-//                   (given poses; a reset before frame 0), i.e. the tracker alone
-//                   (docs/tracking.md)
+//                   (given poses; a reset before frame 0), i.e. the tracker alone, with the
+//                   clusters' point samples (ClusterSamples::build) and the tracks' shape
+//                   alignment (docs/tracking.md); BM_Tracking_KITTI_CentroidOnly without them
+//                   (the tracker before the alignment)
 //   BM_Registration_KITTI the ego-motion estimate of travel-kitti --track without poses:
 //                   ScanRegistration of frame 1's non-ground points to frame 0's
 // (KITTI cases take the frame as argument: BM_Ground_KITTI/0..2; stages use frame 0.)
@@ -327,10 +329,11 @@ const SegmentedKitti& segmentedKitti() {
     return s;
 }
 
-void runTracking(benchmark::State& state) {
+void runTracking(benchmark::State& state, bool shape) {
     const SegmentedKitti& kitti = segmentedKitti();
     if (kitti.results.empty()) return state.SkipWithError("KITTI frames not found");
     Tracker tracker;
+    ClusterSamples samples;
     std::vector<ClusterSummary> clusters;
     std::size_t k = 0;
     for (auto _ : state) {
@@ -339,7 +342,10 @@ void runTracking(benchmark::State& state) {
         if (f == 0) tracker.reset();
         clusters = kitti.results[f].clusters;
         state.ResumeTiming();
-        tracker.update(0.1 * double(k++), Eigen::Isometry3d::Identity(), clusters);
+        if (shape)
+            samples.build(kitti.clouds[f], kitti.results[f].cluster_id, kitti.rotation, clusters);
+        tracker.update(0.1 * double(k++), Eigen::Isometry3d::Identity(), clusters,
+                       shape ? &samples : nullptr);
         benchmark::DoNotOptimize(clusters.data());
     }
     state.counters["clusters"] = static_cast<double>(kitti.results[0].clusters.size());
@@ -412,7 +418,9 @@ void registerAll() {
                     runStage(s, id, static_cast<Stage>(stage));
                 })
                 ->Unit(benchmark::kMicrosecond);
-    RegisterBenchmark("BM_Tracking_KITTI", runTracking)->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_Tracking_KITTI", runTracking, true)->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_Tracking_KITTI_CentroidOnly", runTracking, false)
+        ->Unit(benchmark::kMicrosecond);
     RegisterBenchmark("BM_Registration_KITTI", runRegistration)->Unit(benchmark::kMillisecond);
 }
 

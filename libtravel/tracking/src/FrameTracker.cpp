@@ -10,7 +10,8 @@ Eigen::Isometry3d FrameTracker::update(double t, const PointCloud& cloud,
                                        const std::vector<PointClass>& labels,
                                        const Eigen::Matrix3f& aligned_rotation,
                                        std::vector<ClusterSummary>& clusters,
-                                       const Eigen::Isometry3d* world_T_sensor) {
+                                       const Eigen::Isometry3d* world_T_sensor,
+                                       const std::vector<uint32_t>* cluster_id) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     if (world_T_sensor) {
         pose = *world_T_sensor;
@@ -29,7 +30,8 @@ Eigen::Isometry3d FrameTracker::update(double t, const PointCloud& cloud,
     Eigen::Isometry3d sensor_T_aligned = Eigen::Isometry3d::Identity();
     sensor_T_aligned.linear() = aligned_rotation.cast<double>().transpose();
     world_T_aligned_ = pose * sensor_T_aligned;
-    tracker_.update(t, world_T_aligned_, clusters);
+    if (cluster_id) samples_.build(cloud, *cluster_id, aligned_rotation, clusters);
+    tracker_.update(t, world_T_aligned_, clusters, cluster_id ? &samples_ : nullptr);
     return pose;
 }
 

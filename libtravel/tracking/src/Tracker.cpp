@@ -40,6 +40,16 @@ bool footprintInsideGrown(const WorldBox& box, const WorldBox& part, double grow
     return insideGrown(box, part.min.head<2>(), grow) && insideGrown(box, part.max.head<2>(), grow);
 }
 
+/// Cluster c's sample moved into the world frame (into `view`); false when it has none.
+bool worldView(const ClusterSamples* samples, std::size_t c,
+               const Eigen::Isometry3d& world_T_aligned, std::vector<Eigen::Vector3d>& view) {
+    view.clear();
+    if (!samples) return false;
+    for (uint32_t i = samples->begin(c); i < samples->end(c); ++i)
+        view.push_back(world_T_aligned * samples->points()[i].cast<double>());
+    return !view.empty();
+}
+
 }  // namespace
 
 Tracker::Tracker(const TrackingParams& params) : params_(params) {
@@ -177,7 +187,7 @@ void Tracker::fillCluster(const Track& track, const Eigen::Matrix3d& aligned_R_w
 }
 
 void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
-                     std::vector<ClusterSummary>& clusters) {
+                     std::vector<ClusterSummary>& clusters, const ClusterSamples* samples) {
     cluster_boxes_.clear();
     for (const ClusterSummary& c : clusters)
         cluster_boxes_.push_back(worldBox(c, world_T_aligned, params_.max_object_extent));
@@ -215,8 +225,27 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         const Eigen::Vector2d before = positionOf(track, measured);
         track.extent.update(measured.flat);
         const Eigen::Vector2d position = positionOf(track, measured);
-        track.motion.shift(position - before);
+        const bool viewed = worldView(samples, track.cluster, world_T_aligned, view_);
+        Eigen::Vector2d moved;
+        // Only for objects the centroid says move: at rest, a slide of the centroid over the
+        // object reads as motion and brings the alignment in; most clusters of a drive are at
+        // rest, and the alignment costs (~10 us a track).
+        const bool worth_it = track.velocity().norm() >= params_.moving_speed_off;
+        if (viewed && worth_it && track.shape.known() &&
+            track.shape.displacement(view_, position - track.shape.position(),
+                                     params_.position_sigma, moved)) {
+            // The object moved by `moved` since the last view: the rest of the measured
+            // position's shift is the view sliding over the object (faces coming into or out
+            // of sight), a new reference point like the larger box above.
+            track.motion.shift(position - (track.shape.position() + moved));
+        } else {
+            track.motion.shift(position - before);
+        }
         track.motion.correct(position, params_.position_sigma);
+        if (viewed)
+            track.shape.remember(view_, position);
+        else
+            track.shape.forget();
         track.box = measured;
         for (std::size_t c = 0; c < clusters.size(); ++c)  // a split: the union box
             if (cluster_to_track_[c] == static_cast<int>(k)) {
@@ -248,6 +277,7 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         else
             track.motion.start(position, params_.position_sigma, params_.initial_velocity_sigma);
         track.box = cluster_boxes_[c];
+        if (worldView(samples, c, world_T_aligned, view_)) track.shape.remember(view_, position);
         track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();
         track.hits = 1;
         track.cluster = static_cast<int>(c);
@@ -256,7 +286,7 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
             track.confirmed = true;
             track.id = next_id_++;
         }
-        tracks_.push_back(track);
+        tracks_.push_back(std::move(track));
     }
 
     // Every cluster of a track (its fragments too) carries the track's id and velocity.

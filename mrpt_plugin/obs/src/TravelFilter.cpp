@@ -294,9 +294,9 @@ void TravelFilter::track(TravelFrame& out, const std::optional<Eigen::Isometry3d
                  "consecutive scans",
                  mrpt::system::LVL_INFO);
     }
-    out.worldTSensor =
-        tracker->update(seconds(out.timestamp), out.cloud, out.result.labels, out.alignedRotation,
-                        out.result.clusters, robot ? &out.worldTSensor : nullptr);
+    out.worldTSensor = tracker->update(seconds(out.timestamp), out.cloud, out.result.labels,
+                                       out.alignedRotation, out.result.clusters,
+                                       robot ? &out.worldTSensor : nullptr, &out.result.cluster_id);
     out.tracked = true;
 }
 

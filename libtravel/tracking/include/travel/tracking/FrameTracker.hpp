@@ -25,12 +25,15 @@ class FrameTracker {
     /// sensor -> aligned (the frame of `clusters`). world_T_sensor: the frame's pose when known;
     /// nullptr: registered (non-ground points within registration_range of the sensor) to the
     /// previous frame. Returns the pose used (the first frame's estimate is the identity) and
-    /// fills the clusters' tracking fields (Tracker::update).
+    /// fills the clusters' tracking fields (Tracker::update). cluster_id: one per point
+    /// (travel::Result::cluster_id); with it each track measures its object's displacement from
+    /// the points' shape (ClusterSamples, TrackShapeAlignment.hpp), without it from its centroid.
     Eigen::Isometry3d update(double t, const PointCloud& cloud,
                              const std::vector<PointClass>& labels,
                              const Eigen::Matrix3f& aligned_rotation,
                              std::vector<ClusterSummary>& clusters,
-                             const Eigen::Isometry3d* world_T_sensor = nullptr);
+                             const Eigen::Isometry3d* world_T_sensor = nullptr,
+                             const std::vector<uint32_t>* cluster_id = nullptr);
 
     const Tracker& tracker() const { return tracker_; }
     /// The last frame's aligned frame in the world (the frame of its clusters).
@@ -42,6 +45,7 @@ class FrameTracker {
     ScanOdometry odometry_;
     Tracker tracker_;
     std::vector<Eigen::Vector3d> points_;
+    ClusterSamples samples_;
     Eigen::Isometry3d world_T_aligned_ = Eigen::Isometry3d::Identity();
 };
 

@@ -12,6 +12,10 @@
 //    misses (meanwhile it coasts on its prediction and can be picked up again, same id);
 //  - position: the centre of the largest box the track has seen, placed on the visible faces
 //    (ObjectExtent.hpp); the centroid for tracks longer than full_box_max_length;
+//  - displacement: with the clusters' points (ClusterSamples), a track measures how far its
+//    object moved by aligning the new view onto the last one (TrackShapeAlignment.hpp) and
+//    re-anchors its state by the rest of the measured position's shift (the view sliding over
+//    the object), so the velocity is that of the object, not of its visible part;
 //  - found again: a track born near where a moving track that lost its object (coasting, or
 //    ended up to max_misses frames ago) is predicted starts with that track's velocity instead
 //    of at rest (an occluded car found again as a new track);
@@ -29,6 +33,7 @@
 #include "travel/Config.hpp"
 #include "travel/tracking/ConstantVelocityModel.hpp"
 #include "travel/tracking/TrackAssociation.hpp"
+#include "travel/tracking/TrackShapeAlignment.hpp"
 
 namespace travel {
 
@@ -45,6 +50,7 @@ struct Track {
     ConstantVelocityModel motion;  ///< world-frame xy position and velocity
     WorldBox box;  ///< last associated cluster's box, world frame (centre: filtered position)
     ObjectExtent extent;  ///< the largest box seen: locates partial views
+    TrackShape shape;     ///< the last view's points: the displacement to the next view
     double z = 0;         ///< last measured centroid height, world frame [m]
     int cluster = -1;     ///< index of this frame's cluster in the last update() (-1: missed)
 
@@ -62,8 +68,10 @@ class Tracker {
     /// frame; t [s], non-decreasing. Fills track_id / velocity / velocity_sigma / moving of each
     /// cluster (velocity in the aligned frame's axes, ego-motion removed; zero for clusters of
     /// no confirmed track).
+    /// samples: a few points of each cluster (same frame and order as `clusters`); null: the
+    /// displacement is that of the measured position alone.
     void update(double t, const Eigen::Isometry3d& world_T_aligned,
-                std::vector<ClusterSummary>& clusters);
+                std::vector<ClusterSummary>& clusters, const ClusterSamples* samples = nullptr);
 
     /// The live tracks (tentative and confirmed), in birth order.
     const std::vector<Track>& tracks() const { return tracks_; }
@@ -98,6 +106,7 @@ class Tracker {
     std::vector<WorldBox> track_boxes_, cluster_boxes_;
     std::vector<AssociationPair> pairs_;
     std::vector<int> track_to_cluster_, cluster_to_track_;
+    std::vector<Eigen::Vector3d> view_;  ///< one cluster's sample in the world frame
 };
 
 }  // namespace travel
