@@ -65,6 +65,12 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         if (!(words >> line.keyword)) continue;
         const std::string& k = line.keyword;
         const std::string id = k + " " + std::to_string(++counts[k]);
+        // Object ids of the simulated LiDAR's ground truth: 1, 2, ... over boxes, poles, walls
+        // and movers in file order.
+        const auto objectId = [&] {
+            return static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
+                                         counts["mover"]);
+        };
         if (k == "name") {
             if (!(words >> w.name)) line.fail("expected a name");
             continue;
@@ -139,24 +145,34 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         } else if (k == "roughness") {
             line.expect(2, 2, "AMPLITUDE WAVELENGTH");
             w.scene.roughness = {v[0], line.positive(1, "WAVELENGTH")};
-        } else if (k == "box") {
-            line.expect(6, 6, "X Y YAW_DEG LENGTH WIDTH HEIGHT");
+        } else if (k == "box" || k == "mover") {
+            const bool mover = k == "mover";
+            if (mover)
+                line.expect(8, 8, "X Y YAW_DEG LENGTH WIDTH HEIGHT VX VY");
+            else
+                line.expect(6, 6, "X Y YAW_DEG LENGTH WIDTH HEIGHT");
             sim::Box b;
-            b.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
-                                         counts["mover"]);
+            b.id = objectId();
             b.centre = {v[0], v[1]};
             b.yaw_deg = v[2];
             b.length = line.positive(3, "LENGTH");
             b.width = line.positive(4, "WIDTH");
             b.height = line.positive(5, "HEIGHT");
+            if (mover) {
+                Mover m;
+                m.motion.box = b;
+                m.motion.velocity = {v[6], v[7]};
+                m.box = w.scene.boxes.size();
+                m.obstacle = w.obstacles.size();
+                w.movers.push_back(m);
+            }
             w.scene.boxes.push_back(b);
             w.obstacles.push_back(
-                {id, rectangle(b.centre, v[2], b.length, b.width), 0.0, b.height});
+                {id, rectangle(b.centre, v[2], b.length, b.width), 0.0, b.height, mover});
         } else if (k == "pole") {
             line.expect(4, 4, "X Y RADIUS HEIGHT");
             sim::Pole p;
-            p.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
-                                         counts["mover"]);
+            p.id = objectId();
             p.centre = {v[0], v[1]};
             p.radius = line.positive(2, "RADIUS");
             p.height = line.positive(3, "HEIGHT");
@@ -165,8 +181,7 @@ World parseWorld(const std::string& text, const std::string& source_name) {
         } else if (k == "wall") {
             line.expect(6, 6, "X1 Y1 X2 Y2 THICKNESS HEIGHT");
             sim::Wall wl;
-            wl.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
-                                          counts["mover"]);
+            wl.id = objectId();
             wl.a = {v[0], v[1]};
             wl.b = {v[2], v[3]};
             if ((wl.b - wl.a).norm() < 1e-6) line.fail("the two ends coincide");
@@ -178,24 +193,6 @@ World parseWorld(const std::string& text, const std::string& source_name) {
                                    rectangle(0.5 * (wl.a + wl.b), std::atan2(d.y(), d.x()) / kDeg,
                                              d.norm(), wl.thickness),
                                    0.0, wl.height});
-        } else if (k == "mover") {
-            line.expect(8, 8, "X Y YAW_DEG LENGTH WIDTH HEIGHT VX VY");
-            Mover m;
-            sim::Box& b = m.motion.box;
-            b.id = static_cast<uint32_t>(counts["box"] + counts["pole"] + counts["wall"] +
-                                         counts["mover"]);
-            b.centre = {v[0], v[1]};
-            b.yaw_deg = v[2];
-            b.length = line.positive(3, "LENGTH");
-            b.width = line.positive(4, "WIDTH");
-            b.height = line.positive(5, "HEIGHT");
-            m.motion.velocity = {v[6], v[7]};
-            m.box = w.scene.boxes.size();
-            m.obstacle = w.obstacles.size();
-            w.scene.boxes.push_back(b);
-            w.obstacles.push_back(
-                {id, rectangle(b.centre, v[2], b.length, b.width), 0.0, b.height, true});
-            w.movers.push_back(m);
         } else {
             line.fail(
                 "unknown keyword (expected name, start, goal, bounds, ramp, step, kerb, "
