@@ -133,12 +133,7 @@ bool TravelFilter::filter(const mrpt::obs::CObservation& obs, TravelFrame& out,
                           std::string* why_not) {
     FrameJob job;
     if (!prepare(obs, out, job, why_not)) return false;
-    const Clock::time_point start = Clock::now();
-    {
-        mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
-        job.pipeline->process(out.cloud, job.input, out.result);
-    }
-    complete(out, job, job.pipeline->aligned(), msSince(start));
+    segmentPrepared(out, job);
     return true;
 }
 
@@ -165,9 +160,7 @@ bool TravelFilter::prepare(const mrpt::obs::CObservation& obs, TravelFrame& out,
     out.convert_ms = msSince(convert_start);
     out.sensorLabel = obs.sensorLabel;
     out.timestamp = obs.timestamp;
-    const Clock::time_point prepare_start = Clock::now();
     prepareSegmentation(out, job);
-    job.prepare_ms = msSince(prepare_start);
     return true;
 }
 
@@ -184,19 +177,22 @@ void TravelFilter::filter(const travel::PointCloud& cloud, const mrpt::poses::CP
 }
 
 void TravelFilter::segment(TravelFrame& out) {
-    const Clock::time_point start = Clock::now();
     FrameJob job;
     prepareSegmentation(out, job);
-    job.prepare_ms = msSince(start);
-    const Clock::time_point segment_start = Clock::now();
+    segmentPrepared(out, job);
+}
+
+void TravelFilter::segmentPrepared(TravelFrame& out, const FrameJob& job) {
+    const Clock::time_point start = Clock::now();
     {
         mrpt::system::CTimeLoggerEntry entry(time_logger_, "travel");
         job.pipeline->process(out.cloud, job.input, out.result);
     }
-    complete(out, job, job.pipeline->aligned(), msSince(segment_start));
+    complete(out, job, job.pipeline->aligned(), msSince(start));
 }
 
 void TravelFilter::prepareSegmentation(TravelFrame& out, FrameJob& job) {
+    const Clock::time_point start = Clock::now();
     SensorPipeline& sensor = pipelineFor(out.sensorLabel, out.sensorPose);
     job.pipeline = sensor.pipeline.get();
     job.generation = sensor.generation;
@@ -255,6 +251,7 @@ void TravelFilter::prepareSegmentation(TravelFrame& out, FrameJob& job) {
                          mrpt::system::LVL_INFO);
         }
     }
+    job.prepare_ms = msSince(start);
 }
 
 void TravelFilter::complete(TravelFrame& out, const FrameJob& job,

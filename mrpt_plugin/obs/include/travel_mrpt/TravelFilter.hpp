@@ -184,6 +184,8 @@ class TravelFilter : public mrpt::system::COutputLogger {
     void prepareSegmentation(TravelFrame& out, FrameJob& job);
     /// Levels, deskews and segments out.cloud (sensorPose, sensorLabel, timestamp set).
     void segment(TravelFrame& out);
+    /// Segments a prepared frame with the sensor's own pipeline, then complete().
+    void segmentPrepared(TravelFrame& out, const FrameJob& job);
     /// Fills the clusters' tracking fields of `out` (options_.track_objects), with the robot
     /// at `robot` (else ego-motion from registration).
     void track(TravelFrame& out, const std::optional<Eigen::Isometry3d>& robot);
