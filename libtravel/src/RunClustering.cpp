@@ -102,8 +102,9 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(near_, runs);
+    prefault(run_size_, runs), prefault(run_first_input_, runs);
     for (int d = 0; d < 3; ++d) prefault(run_lo_[d], runs), prefault(run_hi_[d], runs);
-    prefault(run_root_, runs), prefault(root_size_, runs);
+    prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
 
@@ -146,6 +147,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_last_range_.clear();
+    run_size_.clear(), run_first_input_.clear();
     for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
     point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
@@ -183,6 +185,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 run_last_[joined] = k;
                 run_last_range_[joined] = range;
                 run_col_end_[joined] = sorted_col_[k];
+                ++run_size_[joined];
+                run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
                 point_run_[k] = joined;
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
@@ -195,6 +199,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
+            run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
             parent_.push_back(run);
             for (int d = 0; d < 3; ++d)
                 run_lo_[d].push_back(point(d)[k]), run_hi_[d].push_back(point(d)[k]);
@@ -300,15 +305,16 @@ void RunClustering::vertical(const Params& params) {
 
 void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& cluster_id) {
     const std::size_t num_runs = run_first_.size();
-    // Root of every run once (not a find() per point), then sizes and first points per root.
+    // Root of every run once (not a find() per point), then sizes and first points per root
+    // from the runs' (counted as the runs were built).
     run_root_.resize(num_runs);
     for (std::size_t run = 0; run < num_runs; ++run) run_root_[run] = find(static_cast<int>(run));
     root_size_.assign(num_runs, 0);
     root_first_.assign(num_runs, std::numeric_limits<uint32_t>::max());
-    for (uint32_t k = 0; k < sorted_.size(); ++k) {
-        const int root = run_root_[point_run_[k]];
-        ++root_size_[root];
-        root_first_[root] = std::min(root_first_[root], sorted_[k]);
+    for (std::size_t run = 0; run < num_runs; ++run) {
+        const int root = run_root_[run];
+        root_size_[root] += run_size_[run];
+        root_first_[root] = std::min(root_first_[root], run_first_input_[run]);
     }
     root_order_.clear();
     for (std::size_t run = 0; run < num_runs; ++run) {
@@ -323,10 +329,19 @@ void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& clust
     root_id_.assign(num_runs, 0);
     for (std::size_t k = 0; k < root_order_.size(); ++k)
         root_id_[root_order_[k]] = static_cast<uint32_t>(k + 1);
-    point_id_.resize(sorted_.size());
-    for (uint32_t k = 0; k < sorted_.size(); ++k) {
-        point_id_[k] = root_id_[run_root_[point_run_[k]]];
-        cluster_id[sorted_[k]] = point_id_[k];
+    // Id of every run once, then one lookup per point.
+    run_id_.resize(num_runs);
+    for (std::size_t run = 0; run < num_runs; ++run) run_id_[run] = root_id_[run_root_[run]];
+    const uint32_t num_points = static_cast<uint32_t>(sorted_.size());
+    const int32_t* point_run = point_run_.data();
+    const uint32_t* input = sorted_.data();
+    point_id_.resize(num_points);
+    uint32_t* point_id = point_id_.data();
+    const uint32_t* run_id = run_id_.data();
+    uint32_t* id_of_input = cluster_id.data();
+    for (uint32_t k = 0; k < num_points; ++k) {
+        point_id[k] = run_id[point_run[k]];
+        id_of_input[input[k]] = point_id[k];
     }
 }
 
