@@ -359,41 +359,36 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         clusters[k].num_points = 0;
     }
     // Pass 1 over the clustered points (sorted order, contiguous): counts, boxes, moments.
-    // Consecutive points mostly share a cluster: accumulate in locals and flush when the id
-    // changes, instead of chaining every += through the cluster's memory.
-    struct Acc {
-        uint32_t n = 0;
-        Eigen::Array3f lo = Eigen::Array3f::Constant(std::numeric_limits<float>::infinity());
-        Eigen::Array3f hi = Eigen::Array3f::Constant(-std::numeric_limits<float>::infinity());
-        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
-    };
-    auto flush = [&](uint32_t id, const Acc& a) {
-        if (id == 0 || a.n == 0) return;
-        ClusterSummary& c = clusters[id - 1];
-        Sums& s = sums_[id - 1];
-        c.num_points += a.n;
-        c.aabb_min = c.aabb_min.cwiseMin(a.lo.matrix());
-        c.aabb_max = c.aabb_max.cwiseMax(a.hi.matrix());
-        s.sx += a.sx, s.sy += a.sy, s.sz += a.sz, s.sxx += a.sxx, s.sxy += a.sxy, s.syy += a.syy;
-    };
-    Acc acc;
-    uint32_t current = 0;
-    for (uint32_t k = 0; k < point_id_.size(); ++k) {
-        const uint32_t id = point_id_[k];
-        if (id != current) {
-            flush(current, acc);
-            current = id;
-            acc = Acc{};
+    // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
+    // locals (registers) and add it to the cluster once, instead of chaining every += through
+    // the cluster's memory.
+    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data();
+    const uint32_t* ids = point_id_.data();
+    const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
+    for (uint32_t k = 0; k < num_points;) {
+        const uint32_t id = ids[k];
+        if (id == 0) {
+            ++k;
+            continue;
         }
-        if (id == 0) continue;
-        const Eigen::Array3f p(px_[k], py_[k], pz_[k]);
-        ++acc.n;
-        acc.lo = acc.lo.min(p), acc.hi = acc.hi.max(p);
-        acc.sx += p.x(), acc.sy += p.y(), acc.sz += p.z();
-        acc.sxx += double(p.x()) * p.x(), acc.sxy += double(p.x()) * p.y();
-        acc.syy += double(p.y()) * p.y();
+        const uint32_t begin = k;
+        float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
+        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
+        for (; k < num_points && ids[k] == id; ++k) {
+            const float x = xs[k], y = ys[k], z = zs[k];
+            lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
+            hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
+            sx += x, sy += y, sz += z;
+            sxx += double(x) * x, sxy += double(x) * y, syy += double(y) * y;
+        }
+        ClusterSummary& c = clusters[id - 1];
+        Sums& sum = sums_[id - 1];
+        c.num_points += k - begin;
+        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo_x, lo_y, lo_z));
+        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi_x, hi_y, hi_z));
+        sum.sx += sx, sum.sy += sy, sum.sz += sz;
+        sum.sxx += sxx, sum.sxy += sxy, sum.syy += syy;
     }
-    flush(current, acc);
     // Oriented box axes from the 2-D covariance of xy.
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
@@ -407,26 +402,25 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         s.cos_yaw = std::cos(c.obb_yaw), s.sin_yaw = std::sin(c.obb_yaw);
         s.extent = Eigen::Vector4f(inf, -inf, inf, -inf);  // umin, umax, vmin, vmax
     }
-    // Pass 2: extents along the box axes (same run-length accumulation).
-    Eigen::Vector4f ext(inf, -inf, inf, -inf);
-    current = 0;
-    for (uint32_t k = 0; k <= point_id_.size(); ++k) {
-        const uint32_t id = k < point_id_.size() ? point_id_[k] : 0;
-        if (id != current) {
-            if (current) {
-                Eigen::Vector4f& e = sums_[current - 1].extent;
-                e[0] = std::min(e[0], ext[0]), e[1] = std::max(e[1], ext[1]);
-                e[2] = std::min(e[2], ext[2]), e[3] = std::max(e[3], ext[3]);
-            }
-            current = id;
-            ext = Eigen::Vector4f(inf, -inf, inf, -inf);
+    // Pass 2: extents along the box axes (same stretch accumulation).
+    for (uint32_t k = 0; k < num_points;) {
+        const uint32_t id = ids[k];
+        if (id == 0) {
+            ++k;
+            continue;
         }
-        if (id == 0) continue;
-        const Sums& s = sums_[id - 1];
-        const float u = s.cos_yaw * px_[k] + s.sin_yaw * py_[k];
-        const float v = -s.sin_yaw * px_[k] + s.cos_yaw * py_[k];
-        ext[0] = std::min(ext[0], u), ext[1] = std::max(ext[1], u);
-        ext[2] = std::min(ext[2], v), ext[3] = std::max(ext[3], v);
+        Sums& sum = sums_[id - 1];
+        const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
+        float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
+        for (; k < num_points && ids[k] == id; ++k) {
+            const float u = cos_yaw * xs[k] + sin_yaw * ys[k];
+            const float v = -sin_yaw * xs[k] + cos_yaw * ys[k];
+            u_min = std::min(u_min, u), u_max = std::max(u_max, u);
+            v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+        }
+        Eigen::Vector4f& e = sum.extent;
+        e[0] = std::min(e[0], u_min), e[1] = std::max(e[1], u_max);
+        e[2] = std::min(e[2], v_min), e[3] = std::max(e[3], v_max);
     }
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
