@@ -73,7 +73,7 @@ inline void RunClustering::growBox(int run, uint32_t k) {
     }
 }
 
-int RunClustering::find(int run) {
+inline int RunClustering::find(int run) {
     while (parent_[run] != run) {
         parent_[run] = parent_[parent_[run]];  // path halving
         run = parent_[run];
@@ -265,8 +265,14 @@ void RunClustering::vertical(const Params& params) {
     const int span = params.vertical_ring_span;
     window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
     long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
+    // Every merge while run a is compared involves a, so its root is found once per run a and
+    // kept up to date here (the root of a union is the smaller one, as in unite()).
+    int root_a = 0;
     auto mergeIfTouching = [&](int a, int b) {
-        if (find(a) != find(b) && runsTouch(a, b, ext, merge2)) unite(a, b);
+        const int root_b = find(b);
+        if (root_a == root_b || !runsTouch(a, b, ext, merge2)) return;
+        parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
+        root_a = std::min(root_a, root_b);
     };
     for (int r = 1; r < rows; ++r) {
         const int lowest = std::max(0, r - span);
@@ -275,6 +281,7 @@ void RunClustering::vertical(const Params& params) {
             long_start_[r - 1 - rr] = long_runs_begin_[rr];
         }
         for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
+            root_a = find(static_cast<int>(a));
             RunBox box_a;
             for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
