@@ -415,21 +415,47 @@ class RowAssigner {
         constexpr int kMinRingSweep = kTurn / 4;
         int cut = kNoAngle, previous = 0, previous_offset = 0, sweep = 0, rings = 1;
         ring_start[0] = 0;
-        for (std::size_t i = 0; i < n_; ++i) {
-            const int a = azimuth[i];
-            if (a == kNoAngle) continue;
-            if (cut == kNoAngle) cut = previous = a;
-            int offset = Direction * (a - cut);  // swept since the cut, in [0, turn)
-            offset += offset < 0 ? kTurn : 0;
-            if (previous_offset - offset > kHalfTurn && sweep > kMinRingSweep) {
-                if (rings == max_rings) return max_rings + 1;
-                ring_start[rings++] = i;
-                sweep = 0;
-            } else {
-                sweep += Direction * angleDifference(a, previous);
+        auto offsetOf = [&cut](int a) {  // swept since the cut, in [0, turn)
+            const int offset = Direction * (a - cut);
+            return offset + (offset < 0 ? kTurn : 0);
+        };
+        // Most blocks of points hold no wrap (drop of the offset) and no point without azimuth:
+        // there only the sweep grows, by the block's sum, found in one vectorised pass. The
+        // other blocks take the point-by-point walk. Same rings as walking every point.
+        constexpr std::size_t kBlock = 64;
+        std::size_t i = 0;
+        while (i < n_) {
+            const std::size_t block_end = std::min(n_, i + kBlock);
+            if (cut != kNoAngle && i > 0 && azimuth[i - 1] != kNoAngle && block_end - i == kBlock) {
+                int block_sweep = 0, irregular = 0;
+                for (std::size_t j = i; j < block_end; ++j) {
+                    const int a = azimuth[j], p = azimuth[j - 1];
+                    irregular |= (a == kNoAngle) | (offsetOf(p) - offsetOf(a) > kHalfTurn);
+                    block_sweep += Direction * angleDifference(a, p);
+                }
+                if (!irregular) {
+                    sweep += block_sweep;
+                    previous = azimuth[block_end - 1];
+                    previous_offset = offsetOf(previous);
+                    i = block_end;
+                    continue;
+                }
             }
-            previous_offset = offset;
-            previous = a;
+            for (; i < block_end; ++i) {
+                const int a = azimuth[i];
+                if (a == kNoAngle) continue;
+                if (cut == kNoAngle) cut = previous = a;
+                const int offset = offsetOf(a);
+                if (previous_offset - offset > kHalfTurn && sweep > kMinRingSweep) {
+                    if (rings == max_rings) return max_rings + 1;
+                    ring_start[rings++] = i;
+                    sweep = 0;
+                } else {
+                    sweep += Direction * angleDifference(a, previous);
+                }
+                previous_offset = offset;
+                previous = a;
+            }
         }
         return rings;
     }

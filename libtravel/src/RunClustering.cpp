@@ -73,7 +73,7 @@ inline void RunClustering::growBox(int run, uint32_t k) {
     }
 }
 
-int RunClustering::find(int run) {
+inline int RunClustering::find(int run) {
     while (parent_[run] != run) {
         parent_[run] = parent_[parent_[run]];  // path halving
         run = parent_[run];
@@ -102,8 +102,9 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(near_, runs);
+    prefault(run_size_, runs), prefault(run_first_input_, runs);
     for (int d = 0; d < 3; ++d) prefault(run_lo_[d], runs), prefault(run_hi_[d], runs);
-    prefault(run_root_, runs), prefault(root_size_, runs);
+    prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
 
@@ -146,6 +147,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_last_range_.clear();
+    run_size_.clear(), run_first_input_.clear();
     for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
     point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
@@ -183,6 +185,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 run_last_[joined] = k;
                 run_last_range_[joined] = range;
                 run_col_end_[joined] = sorted_col_[k];
+                ++run_size_[joined];
+                run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
                 point_run_[k] = joined;
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
@@ -195,6 +199,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
+            run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
             parent_.push_back(run);
             for (int d = 0; d < 3; ++d)
                 run_lo_[d].push_back(point(d)[k]), run_hi_[d].push_back(point(d)[k]);
@@ -260,8 +265,14 @@ void RunClustering::vertical(const Params& params) {
     const int span = params.vertical_ring_span;
     window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
     long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
+    // Every merge while run a is compared involves a, so its root is found once per run a and
+    // kept up to date here (the root of a union is the smaller one, as in unite()).
+    int root_a = 0;
     auto mergeIfTouching = [&](int a, int b) {
-        if (find(a) != find(b) && runsTouch(a, b, ext, merge2)) unite(a, b);
+        const int root_b = find(b);
+        if (root_a == root_b || !runsTouch(a, b, ext, merge2)) return;
+        parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
+        root_a = std::min(root_a, root_b);
     };
     for (int r = 1; r < rows; ++r) {
         const int lowest = std::max(0, r - span);
@@ -270,6 +281,7 @@ void RunClustering::vertical(const Params& params) {
             long_start_[r - 1 - rr] = long_runs_begin_[rr];
         }
         for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
+            root_a = find(static_cast<int>(a));
             RunBox box_a;
             for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
@@ -300,15 +312,16 @@ void RunClustering::vertical(const Params& params) {
 
 void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& cluster_id) {
     const std::size_t num_runs = run_first_.size();
-    // Root of every run once (not a find() per point), then sizes and first points per root.
+    // Root of every run once (not a find() per point), then sizes and first points per root
+    // from the runs' (counted as the runs were built).
     run_root_.resize(num_runs);
     for (std::size_t run = 0; run < num_runs; ++run) run_root_[run] = find(static_cast<int>(run));
     root_size_.assign(num_runs, 0);
     root_first_.assign(num_runs, std::numeric_limits<uint32_t>::max());
-    for (uint32_t k = 0; k < sorted_.size(); ++k) {
-        const int root = run_root_[point_run_[k]];
-        ++root_size_[root];
-        root_first_[root] = std::min(root_first_[root], sorted_[k]);
+    for (std::size_t run = 0; run < num_runs; ++run) {
+        const int root = run_root_[run];
+        root_size_[root] += run_size_[run];
+        root_first_[root] = std::min(root_first_[root], run_first_input_[run]);
     }
     root_order_.clear();
     for (std::size_t run = 0; run < num_runs; ++run) {
@@ -323,10 +336,19 @@ void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& clust
     root_id_.assign(num_runs, 0);
     for (std::size_t k = 0; k < root_order_.size(); ++k)
         root_id_[root_order_[k]] = static_cast<uint32_t>(k + 1);
-    point_id_.resize(sorted_.size());
-    for (uint32_t k = 0; k < sorted_.size(); ++k) {
-        point_id_[k] = root_id_[run_root_[point_run_[k]]];
-        cluster_id[sorted_[k]] = point_id_[k];
+    // Id of every run once, then one lookup per point.
+    run_id_.resize(num_runs);
+    for (std::size_t run = 0; run < num_runs; ++run) run_id_[run] = root_id_[run_root_[run]];
+    const uint32_t num_points = static_cast<uint32_t>(sorted_.size());
+    const int32_t* point_run = point_run_.data();
+    const uint32_t* input = sorted_.data();
+    point_id_.resize(num_points);
+    uint32_t* point_id = point_id_.data();
+    const uint32_t* run_id = run_id_.data();
+    uint32_t* id_of_input = cluster_id.data();
+    for (uint32_t k = 0; k < num_points; ++k) {
+        point_id[k] = run_id[point_run[k]];
+        id_of_input[input[k]] = point_id[k];
     }
 }
 
@@ -344,41 +366,36 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         clusters[k].num_points = 0;
     }
     // Pass 1 over the clustered points (sorted order, contiguous): counts, boxes, moments.
-    // Consecutive points mostly share a cluster: accumulate in locals and flush when the id
-    // changes, instead of chaining every += through the cluster's memory.
-    struct Acc {
-        uint32_t n = 0;
-        Eigen::Array3f lo = Eigen::Array3f::Constant(std::numeric_limits<float>::infinity());
-        Eigen::Array3f hi = Eigen::Array3f::Constant(-std::numeric_limits<float>::infinity());
-        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
-    };
-    auto flush = [&](uint32_t id, const Acc& a) {
-        if (id == 0 || a.n == 0) return;
-        ClusterSummary& c = clusters[id - 1];
-        Sums& s = sums_[id - 1];
-        c.num_points += a.n;
-        c.aabb_min = c.aabb_min.cwiseMin(a.lo.matrix());
-        c.aabb_max = c.aabb_max.cwiseMax(a.hi.matrix());
-        s.sx += a.sx, s.sy += a.sy, s.sz += a.sz, s.sxx += a.sxx, s.sxy += a.sxy, s.syy += a.syy;
-    };
-    Acc acc;
-    uint32_t current = 0;
-    for (uint32_t k = 0; k < point_id_.size(); ++k) {
-        const uint32_t id = point_id_[k];
-        if (id != current) {
-            flush(current, acc);
-            current = id;
-            acc = Acc{};
+    // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
+    // locals (registers) and add it to the cluster once, instead of chaining every += through
+    // the cluster's memory.
+    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data();
+    const uint32_t* ids = point_id_.data();
+    const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
+    for (uint32_t k = 0; k < num_points;) {
+        const uint32_t id = ids[k];
+        if (id == 0) {
+            ++k;
+            continue;
         }
-        if (id == 0) continue;
-        const Eigen::Array3f p(px_[k], py_[k], pz_[k]);
-        ++acc.n;
-        acc.lo = acc.lo.min(p), acc.hi = acc.hi.max(p);
-        acc.sx += p.x(), acc.sy += p.y(), acc.sz += p.z();
-        acc.sxx += double(p.x()) * p.x(), acc.sxy += double(p.x()) * p.y();
-        acc.syy += double(p.y()) * p.y();
+        const uint32_t begin = k;
+        float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
+        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
+        for (; k < num_points && ids[k] == id; ++k) {
+            const float x = xs[k], y = ys[k], z = zs[k];
+            lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
+            hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
+            sx += x, sy += y, sz += z;
+            sxx += double(x) * x, sxy += double(x) * y, syy += double(y) * y;
+        }
+        ClusterSummary& c = clusters[id - 1];
+        Sums& sum = sums_[id - 1];
+        c.num_points += k - begin;
+        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo_x, lo_y, lo_z));
+        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi_x, hi_y, hi_z));
+        sum.sx += sx, sum.sy += sy, sum.sz += sz;
+        sum.sxx += sxx, sum.sxy += sxy, sum.syy += syy;
     }
-    flush(current, acc);
     // Oriented box axes from the 2-D covariance of xy.
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
@@ -392,26 +409,25 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         s.cos_yaw = std::cos(c.obb_yaw), s.sin_yaw = std::sin(c.obb_yaw);
         s.extent = Eigen::Vector4f(inf, -inf, inf, -inf);  // umin, umax, vmin, vmax
     }
-    // Pass 2: extents along the box axes (same run-length accumulation).
-    Eigen::Vector4f ext(inf, -inf, inf, -inf);
-    current = 0;
-    for (uint32_t k = 0; k <= point_id_.size(); ++k) {
-        const uint32_t id = k < point_id_.size() ? point_id_[k] : 0;
-        if (id != current) {
-            if (current) {
-                Eigen::Vector4f& e = sums_[current - 1].extent;
-                e[0] = std::min(e[0], ext[0]), e[1] = std::max(e[1], ext[1]);
-                e[2] = std::min(e[2], ext[2]), e[3] = std::max(e[3], ext[3]);
-            }
-            current = id;
-            ext = Eigen::Vector4f(inf, -inf, inf, -inf);
+    // Pass 2: extents along the box axes (same stretch accumulation).
+    for (uint32_t k = 0; k < num_points;) {
+        const uint32_t id = ids[k];
+        if (id == 0) {
+            ++k;
+            continue;
         }
-        if (id == 0) continue;
-        const Sums& s = sums_[id - 1];
-        const float u = s.cos_yaw * px_[k] + s.sin_yaw * py_[k];
-        const float v = -s.sin_yaw * px_[k] + s.cos_yaw * py_[k];
-        ext[0] = std::min(ext[0], u), ext[1] = std::max(ext[1], u);
-        ext[2] = std::min(ext[2], v), ext[3] = std::max(ext[3], v);
+        Sums& sum = sums_[id - 1];
+        const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
+        float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
+        for (; k < num_points && ids[k] == id; ++k) {
+            const float u = cos_yaw * xs[k] + sin_yaw * ys[k];
+            const float v = -sin_yaw * xs[k] + cos_yaw * ys[k];
+            u_min = std::min(u_min, u), u_max = std::max(u_max, u);
+            v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+        }
+        Eigen::Vector4f& e = sum.extent;
+        e[0] = std::min(e[0], u_min), e[1] = std::max(e[1], u_max);
+        e[2] = std::min(e[2], v_min), e[3] = std::max(e[3], v_max);
     }
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];

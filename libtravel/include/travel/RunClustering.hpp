@@ -71,6 +71,7 @@ class RunClustering {
     std::vector<float> run_last_range_;
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
+    std::vector<uint32_t> run_size_, run_first_input_;  // points, smallest input index
     std::vector<uint32_t> row_runs_begin_;      // runs of row r: [row_runs_begin_[r], [r + 1])
     std::vector<float> run_lo_[3], run_hi_[3];  // bounding box of each run (x, y, z)
     struct RunBox {
@@ -108,6 +109,7 @@ class RunClustering {
     std::vector<int32_t> root_order_;
     std::vector<uint32_t> root_id_;
     std::vector<int32_t> run_root_;
+    std::vector<uint32_t> run_id_;    // cluster id of each run
     std::vector<uint32_t> point_id_;  // cluster id of each sorted point
     struct Sums {
         double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
