@@ -1,8 +1,10 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "Interrupt.hpp"
 
+#include <time.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 
 namespace travel::apps {
@@ -10,10 +12,26 @@ namespace travel::apps {
 namespace {
 
 volatile std::sig_atomic_t g_signals = 0;
+std::atomic<long long> g_first_signal_ms{0};  // lock-free on the targets we build for
+static_assert(std::atomic<long long>::is_always_lock_free, "used in a signal handler");
+
+long long monotonicMs() {
+    timespec t{};
+    clock_gettime(CLOCK_MONOTONIC, &t);  // async-signal-safe (POSIX)
+    return static_cast<long long>(t.tv_sec) * 1000 + t.tv_nsec / 1000000;
+}
 
 extern "C" void onInterrupt(int) {
-    // Only async-signal-safe work here: count, and leave at once on the second signal.
-    if (g_signals > 0) _exit(kInterruptedExitCode);
+    // Only async-signal-safe work here: note the first signal, and leave at once on a second
+    // one. A signal within half a second of the first is the same request delivered twice:
+    // `timeout -s INT` signals the process and then its process group, and exiting there
+    // would skip the cleanup the first one asked for.
+    const long long now = monotonicMs();
+    if (g_signals > 0) {
+        if (now - g_first_signal_ms.load() >= 500) _exit(kInterruptedExitCode);
+        return;
+    }
+    g_first_signal_ms.store(now);
     g_signals = 1;
 }
 

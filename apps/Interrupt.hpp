@@ -2,8 +2,9 @@
 //
 // Ctrl-C (SIGINT) and SIGTERM for the apps: the handler only sets a flag; the frame loops call
 // throwIfInterrupted(), which unwinds the stack (RAII removes temporary files and partial
-// outputs) and runMain() exits with 130. A second signal exits at once (_exit(130)), without
-// any cleanup: the user asked twice.
+// outputs) and runMain() exits with 130. A second signal, half a second or more after the
+// first, exits at once (_exit(130)), without any cleanup: the user asked twice. One arriving
+// sooner is the first delivered twice (`timeout` signals the process, then its group).
 #pragma once
 
 #include <filesystem>
