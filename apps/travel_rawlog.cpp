@@ -268,7 +268,6 @@ struct RecordSlot {
     };
     mrpt::serialization::CSerializable::Ptr record;
     long index = 0;
-    bool skip = false;  // a stale output of an earlier run: not written
     double fraction_read = 0;
     std::vector<Item> items;  // grows to the most LiDARs of a record, then reused
     std::size_t used = 0;
