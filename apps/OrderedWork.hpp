@@ -124,6 +124,45 @@ void forEachInOrder(std::size_t count, unsigned workers, Sequential sequential, 
     finish();
 }
 
+/// -j N: objects (the workers' segmenters) built on their own threads while the caller goes on.
+/// Each TRAVEL pipeline maps ~20 MB of buffers when it is built; on a virtual machine that
+/// backs its memory lazily a first write to a page costs ~15 us (~100 ms a pipeline), so
+/// workers built one after the other, once the first frame has settled the mount, start late:
+/// built here, next to the first one, they are ready with it and only take its settled state.
+template <class T>
+class BackgroundBuilds {
+  public:
+    template <class Make>
+    BackgroundBuilds(unsigned count, Make make) : items_(count), errors_(count) {
+        for (unsigned i = 0; i < count; ++i)
+            threads_.emplace_back([this, i, make]() mutable {
+                try {
+                    items_[i] = make(i);
+                } catch (...) {
+                    errors_[i] = std::current_exception();
+                }
+            });
+    }
+    ~BackgroundBuilds() {
+        for (std::thread& t : threads_)
+            if (t.joinable()) t.join();
+    }
+    BackgroundBuilds(const BackgroundBuilds&) = delete;
+    BackgroundBuilds& operator=(const BackgroundBuilds&) = delete;
+
+    /// Item i, once built (rethrows what building it threw). Once per item, from one thread.
+    T take(unsigned i) {
+        if (threads_.at(i).joinable()) threads_[i].join();
+        if (errors_[i]) std::rethrow_exception(errors_[i]);
+        return std::move(items_[i]);
+    }
+
+  private:
+    std::vector<T> items_;
+    std::vector<std::exception_ptr> errors_;
+    std::vector<std::thread> threads_;
+};
+
 /// -j N for a stream whose items must be prepared one after the other on the calling thread
 /// (travel-rawlog: each record's motion data feeds the next frames), then processed on N
 /// workers, then consumed on the calling thread in preparation order:

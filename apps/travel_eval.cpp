@@ -46,8 +46,9 @@ using travel::eval::MethodRun;
 // ---------------------------------------------------------------------------------------------
 // Running one method over the frames, with a progress display
 
-// Frames are evaluated on `jobs` workers (one segmenter each, cloned once the first one's mount
-// is settled) and added to the run in frame order: the same run as with one worker.
+// Frames are evaluated on `jobs` workers (one segmenter each, built with the first one and given
+// its state once its mount is settled) and added to the run in frame order: the same run as with
+// one worker.
 MethodRun runMethod(const std::string& method, const travel::Params& params,
                     const std::vector<FrameRef>& frames, const std::string& progress_label,
                     travel::apps::Verbosity verbosity, unsigned jobs) {
@@ -59,14 +60,21 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     MethodRun run;
     run.method = method;
     travel::eval::EvaluationAccumulator totals;
+    // The other workers' segmenters are built on their own threads meanwhile.
+    const unsigned workers =
+        static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(jobs, frames.size())));
+    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
+        workers - 1, [&](unsigned) { return travel::eval::makeSegmenter(method, params); });
     std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;
     segmenters.push_back(travel::eval::makeSegmenter(method, params));
     travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
-        frames.size(), jobs, [&] { return !segmenters[0]->independentFrames(); },
+        frames.size(), workers, [&] { return !segmenters[0]->independentFrames(); },
         [&](unsigned workers) { segmenters.resize(workers); },
         [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
-            // Each worker builds its own copy, on its thread (page faults in parallel).
-            if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
+            if (!segmenters[w]) {
+                segmenters[w] = worker_segmenters.take(w - 1);
+                segmenters[w]->adoptSettledState(*segmenters[0]);
+            }
             travel::eval::evaluateFrame(frames[f].scan, frames[f].label, *segmenters[w], frame,
                                         frames[f].format);
         },

@@ -140,6 +140,10 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const std::string out = flags.outputPath();
     const travel::ScanFormat format = flags.scanFormat();
+    // -j N: the other workers' segmenters are built on their own threads meanwhile.
+    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
+        jobs.count() - 1,
+        [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
     // Configuration errors first, before any file is touched.
     std::unique_ptr<travel::eval::Segmenter> segmenter =
         travel::eval::makeSegmenter(method.getValue(), params);
@@ -211,13 +215,15 @@ int run(int argc, char** argv) {
             ++unlabelled_frames;
         }
     }
-    // -j N: worker w segments with segmenters[w] (clones of the first, made once its mount is
-    // settled); frames are consumed here, in input order.
+    // -j N: worker w segments with segmenters[w] (built with the first one, given its state
+    // once its mount is settled); frames are consumed here, in input order.
     std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;
     segmenters.push_back(std::move(segmenter));
     const auto produce = [&](unsigned w, std::size_t f, travel::eval::FrameEvaluation& frame) {
-        // Each worker builds its own copy, on its thread (page faults in parallel).
-        if (!segmenters[w]) segmenters[w] = segmenters[0]->clone();
+        if (!segmenters[w]) {
+            segmenters[w] = worker_segmenters.take(w - 1);
+            segmenters[w]->adoptSettledState(*segmenters[0]);
+        }
         travel::eval::evaluateFrame(files[f], label_paths[f], *segmenters[w], frame, format);
     };
     const auto fork = [&](unsigned workers) { segmenters.resize(workers); };

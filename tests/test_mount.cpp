@@ -119,6 +119,38 @@ TEST_P(EveryMount, AutoLabelsLikeTheTrueValues) {
 
 INSTANTIATE_TEST_SUITE_P(Mounts, EveryMount, ::testing::Range(0, int(mounts().size())));
 
+// -j N: a worker's pipeline is built before the first frame, then takes the first pipeline's
+// settled state (its estimated mount): it labels the next frames like that pipeline and like
+// settledCopy(), and unlike its own unsettled self.
+TEST(MountCheck, PipelineBuiltEarlyTakesTheSettledStateOfAnother) {
+    const Mount m{1.2, 3.0, -2.0};
+    const sim::Scan scan = scanFrom(sim::urbanObjects(), m);
+    Params automatic;
+    automatic.sensor_height = AutoReal::makeAuto(1.73);
+    automatic.mount_roll_deg = AutoReal::makeAuto(0.0);
+    automatic.mount_pitch_deg = AutoReal::makeAuto(0.0);
+    Pipeline first(automatic), early(automatic), unsettled(automatic);
+    Result settled_result, early_result, copy_result;
+    first.process(scan.cloud, {}, settled_result);
+    ASSERT_TRUE(first.mountSettled());
+    ASSERT_EQ(settled_result.mount.kind, MountNote::Kind::Estimated);
+
+    early.adoptSettledState(first);
+    EXPECT_TRUE(early.mountSettled());
+    EXPECT_EQ(double(early.params().sensor_height), double(first.params().sensor_height));
+    early.process(scan.cloud, {}, early_result);
+    EXPECT_EQ(early_result.mount.kind, MountNote::Kind::None);  // nothing estimated again
+    EXPECT_EQ(early_result.labels, settled_result.labels);
+    EXPECT_EQ(early_result.cluster_id, settled_result.cluster_id);
+    first.settledCopy().process(scan.cloud, {}, copy_result);
+    EXPECT_EQ(copy_result.labels, early_result.labels);
+
+    // Without the state it would estimate again (a note on its first frame).
+    Result own;
+    unsettled.process(scan.cloud, {}, own);
+    EXPECT_EQ(own.mount.kind, MountNote::Kind::Estimated);
+}
+
 TEST(MountCheck, WrongHeightWarnsOnceWithTheMeasuredValue) {
     const sim::Scan scan = scanFrom(sim::urbanObjects(), {1.73, 0, 0});
     Params wrong;

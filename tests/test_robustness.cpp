@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -660,6 +662,30 @@ TEST(Robustness, ThreadsOfForEachInOrderConsumeInInputOrder) {
         ASSERT_EQ(consumed.size(), kItems) << workers;
         for (std::size_t i = 0; i < kItems; ++i) EXPECT_EQ(consumed[i], i) << workers;
     }
+}
+
+TEST(Robustness, ThreadsOfBackgroundBuildsGiveEachItemOnceBuiltAndRethrowItsError) {
+    std::atomic<int> built{0};
+    {
+        apps::BackgroundBuilds<std::unique_ptr<std::vector<int>>> items(
+            3, [&](unsigned i) -> std::unique_ptr<std::vector<int>> {
+                if (i == 1) throw std::runtime_error("item 1 failed");
+                std::this_thread::sleep_for(std::chrono::microseconds(300 * (3 - i)));
+                ++built;
+                return std::make_unique<std::vector<int>>(1000, int(i));
+            });
+        const auto two = items.take(2);  // any order
+        ASSERT_TRUE(two);
+        EXPECT_EQ(two->at(999), 2);
+        const auto zero = items.take(0);
+        ASSERT_TRUE(zero);
+        EXPECT_EQ(zero->at(0), 0);
+        EXPECT_THROW(items.take(1), std::runtime_error);
+        EXPECT_THROW(items.take(3), std::out_of_range);
+    }
+    EXPECT_EQ(built.load(), 2);
+    // Items never taken are joined by the destructor.
+    apps::BackgroundBuilds<int> untaken(2, [](unsigned i) { return int(i); });
 }
 
 TEST(Robustness, ThreadsOfOrderedSlotsConsumeInPreparationOrder) {

@@ -49,10 +49,15 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
 
 Pipeline Pipeline::settledCopy() const {
     Pipeline copy(configured_);
-    copy.params_ = params_;  // the `auto` estimates, the raised seed search radius
-    copy.angles_source_ = angles_source_;
-    copy.mount_done_ = mount_done_;  // (frame_index_, which process() counts, only numbers notes)
+    copy.adoptSettledState(*this);
     return copy;
+}
+
+void Pipeline::adoptSettledState(const Pipeline& settled) {
+    params_ = settled.params_;  // the `auto` estimates, the raised seed search radius
+    angles_source_ = settled.angles_source_;
+    mount_done_ =
+        settled.mount_done_;  // (frame_index_, which process() counts, only numbers notes)
 }
 
 std::size_t Pipeline::expectedPoints() const {

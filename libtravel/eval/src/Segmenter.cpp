@@ -163,6 +163,14 @@ class MethodSegmenter final : public Segmenter {
             new MethodSegmenter(method_, params_, pipeline_->settledCopy()));
     }
 
+    void adoptSettledState(const Segmenter& settled) override {
+        const auto* other = dynamic_cast<const MethodSegmenter*>(&settled);
+        if (!other || std::string(other->method_.name) != method_.name)
+            throw std::invalid_argument(std::string("travel::eval::") + method_.name +
+                                        ": adoptSettledState from another method");
+        if (pipeline_) pipeline_->adoptSettledState(*other->pipeline_);
+    }
+
   private:
     Method method_;
     Params params_;

@@ -65,6 +65,12 @@ class Pipeline {
     /// mountSettled(), so another thread may call it while this pipeline processes a frame.
     Pipeline settledCopy() const;
 
+    /// Takes `settled`'s settled state (as settledCopy() gives it) into this pipeline, built from
+    /// the same configured Params and not yet used, keeping this one's buffers: a worker's
+    /// pipeline can be built (its pages mapped) before the first frame settles the mount.
+    /// Reads only what `settled`.process() no longer changes once it is mountSettled().
+    void adoptSettledState(const Pipeline& settled);
+
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
     /// Rings and columns of the last frame (valid when params.cluster_objects).

@@ -55,6 +55,10 @@ class Segmenter {
     /// An independent copy in the same state (same settled mount), for another thread. Once
     /// independentFrames(), a thread may clone while another segments with this one.
     virtual std::unique_ptr<Segmenter> clone() const = 0;
+    /// Takes `settled`'s state (as clone() gives it) into this segmenter, made by makeSegmenter()
+    /// with the same method and Params and not yet used, keeping its buffers (apps build the
+    /// workers' segmenters before the first frame, Pipeline::adoptSettledState()).
+    virtual void adoptSettledState(const Segmenter& settled) = 0;
 };
 
 /// Methods by name: "travel", "travel-no-ttmf", "tgs", "ransac", "gpf", "gpf+slr", "tgs+slr",
