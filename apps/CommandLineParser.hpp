@@ -125,7 +125,25 @@ class CommandLine {
     /// Returns the exit code to stop with (0 after --help / --version, 1 after an error, the
     /// message printed), or nothing when the program should go on.
     std::optional<int> parse(int argc, char** argv) {
-        if (!cmd.parse(argc, argv)) return output_.failed() ? 1 : 0;
+        // "-j2" as "-j 2" (getopt's attached value, what make users type) for the short flags
+        // that take a value; TCLAP alone reads "-j2" as an unknown flag.
+        std::vector<std::string> args(argv, argv + argc);
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            const std::string& a = args[i];
+            if (a == "--") break;
+            if (a.size() < 3 || a[0] != '-' || a[1] == '-') continue;
+            for (const TCLAP::Arg* arg : cmd.getArgList())
+                if (arg->isValueRequired() && arg->getFlag() == a.substr(1, 1)) {
+                    args.insert(args.begin() + static_cast<std::ptrdiff_t>(i) + 1, a.substr(2));
+                    args[i].resize(2);
+                    ++i;
+                    break;
+                }
+        }
+        std::vector<const char*> split(args.size());
+        for (std::size_t i = 0; i < args.size(); ++i) split[i] = args[i].c_str();
+        if (!cmd.parse(static_cast<int>(split.size()), split.data()))
+            return output_.failed() ? 1 : 0;
         for (const auto& check : checks) check();  // throw usageError()
         return std::nullopt;
     }
