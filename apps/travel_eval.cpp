@@ -323,6 +323,11 @@ int run(int argc, char** argv) {
                                          false, "", "A,B,...", cmd);
     TCLAP::ValueArg<std::string> method("", "method", "sweep: the method (default travel)", false,
                                         "travel", "NAME", cmd);
+    TCLAP::ValueArg<std::string> loo_score(
+        "", "loo-score",
+        "sweep: what the leave-one-out choice maximises per frame: f1b (ground F1, protocol B; "
+        "the default), f1a, coverage or purity",
+        false, "f1b", "SCORE", cmd);
     TCLAP::ValueArg<std::string> sweep("", "sweep",
                                        "sweep: KEY=v1,v2,... e.g. tgf_resolution=2,4,6,8,10", false,
                                        "", "KEY=VALUES", cmd);
@@ -344,6 +349,8 @@ int run(int argc, char** argv) {
         throw travel::apps::usageError("report takes --methods; --sweep/--method are for sweep");
     if (is_sweep && !sweep.isSet())
         throw travel::apps::usageError("sweep needs --sweep KEY=v1,v2,...");
+    if (!is_sweep && loo_score.isSet()) throw travel::apps::usageError("--loo-score is for sweep");
+    const travel::eval::SweepScore score = travel::eval::parseSweepScore(loo_score.getValue());
     const travel::Params& params = configuration.travel;
     const std::string setup = flags.config.describe();
 
@@ -376,6 +383,7 @@ int run(int argc, char** argv) {
     }
 
     std::vector<EvaluationSummary> sums;
+    std::vector<std::vector<travel::eval::FrameRow>> rows;  // per value, for the leave-one-out
     for (const std::string& value : spec.values) {
         travel::Params p = params;
         travel::applyOverride(spec.key + "=" + value, p);
@@ -383,6 +391,7 @@ int run(int argc, char** argv) {
         const MethodRun run =
             runMethod(names[0], p, frames, spec.key + "=" + value, verbosity, jobs.count());
         sums.push_back(run.summary);
+        rows.push_back(run.rows);
         const EvaluationSummary& s = sums.back();
         if (quiet) continue;
         std::printf("%s=%-8s B F1 %6.2f  A F1 %6.2f", spec.key.c_str(), value.c_str(), s.f1[1].mean,
@@ -394,9 +403,25 @@ int run(int argc, char** argv) {
     }
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
+    if (frames.size() >= 2) {
+        const travel::eval::LeaveOneOut loo = travel::eval::leaveOneOut(rows, score);
+        std::ofstream loo_csv = openOut(stem + "_loo.csv");
+        travel::eval::writeLeaveOneOutCsv(loo_csv, spec, score, loo);
+        if (!quiet) {
+            std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others):\n",
+                        frames.size(), travel::eval::sweepScoreName(score));
+            for (const auto& fold : loo.folds)
+                std::printf("  held out %-16s chosen %s=%-8s held-out %s %.4g\n",
+                            fold.frame.c_str(), spec.key.c_str(), spec.values[fold.chosen].c_str(),
+                            travel::eval::sweepScoreName(score), fold.held_out);
+            std::printf("  mean held-out %.4g; in-sample best %s=%s: %.4g\n", loo.held_out_mean,
+                        spec.key.c_str(), spec.values[loo.in_sample].c_str(), loo.in_sample_mean);
+        }
+    }
     if (!quiet)
-        std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png\n", stem.c_str(),
-                    stem.c_str(), stem.c_str(), stem.c_str());
+        std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png%s\n", stem.c_str(),
+                    stem.c_str(), stem.c_str(), stem.c_str(),
+                    frames.size() >= 2 ? (", " + stem + "_loo.csv").c_str() : "");
     return 0;
 }
 

@@ -14,6 +14,7 @@
 #include "travel/Errors.hpp"
 #include "travel/eval/FrameEvaluation.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel/eval/Report.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 
@@ -200,6 +201,40 @@ TEST(EvaluateFrame, ErrorsNameTheFile) {
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find(short_label), std::string::npos) << e.what();
     }
+}
+
+// travel-eval sweep's leave-one-out: the value chosen without a frame is scored on it.
+TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
+    // Per value, per frame: ground F1 (B). Value 1 is best on frames 0 and 1 but poor on frame 2;
+    // value 0 is best on frame 2 alone.
+    const double f1[2][3] = {{97.0, 97.0, 99.0}, {99.0, 99.0, 95.0}};
+    std::vector<std::vector<eval::FrameRow>> rows(2, std::vector<eval::FrameRow>(3));
+    for (int v = 0; v < 2; ++v)
+        for (int f = 0; f < 3; ++f) {
+            rows[v][f].frame = "00/" + std::to_string(f);
+            rows[v][f].ground[1].f1 = f1[v][f];
+            rows[v][f].coverage = 0.5 + 0.1 * f;  // the same for both values: ties
+        }
+    const eval::LeaveOneOut loo = eval::leaveOneOut(rows, eval::SweepScore::GroundF1B);
+    ASSERT_EQ(loo.folds.size(), 3u);
+    // Without frame 0: value 0 has (97 + 99) / 2 = 98, value 1 has 97: value 0, scored 97.
+    EXPECT_EQ(loo.folds[0].chosen, 0u);
+    EXPECT_DOUBLE_EQ(loo.folds[0].held_out, 97.0);
+    EXPECT_EQ(loo.folds[1].chosen, 0u);
+    EXPECT_DOUBLE_EQ(loo.folds[1].held_out, 97.0);
+    // Without frame 2: value 1 (99) over value 0 (97), scored 95 on frame 2.
+    EXPECT_EQ(loo.folds[2].chosen, 1u);
+    EXPECT_DOUBLE_EQ(loo.folds[2].held_out, 95.0);
+    EXPECT_DOUBLE_EQ(loo.held_out_mean, (97.0 + 97.0 + 95.0) / 3);
+    // In sample both values average 97.67 ((97 + 97 + 99) / 3 = (99 + 99 + 95) / 3): the first.
+    EXPECT_EQ(loo.in_sample, 0u);
+    EXPECT_NEAR(loo.in_sample_mean, 293.0 / 3, 1e-12);
+    // Coverage is the same for both values: ties choose the first.
+    EXPECT_EQ(eval::leaveOneOut(rows, eval::SweepScore::Coverage).folds[1].chosen, 0u);
+    EXPECT_EQ(eval::parseSweepScore("purity"), eval::SweepScore::Purity);
+    EXPECT_THROW(eval::parseSweepScore("f2"), ConfigError);
+    EXPECT_THROW(eval::leaveOneOut({{rows[0][0]}}, eval::SweepScore::GroundF1B),
+                 std::invalid_argument);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
@@ -261,6 +262,84 @@ void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
             csv << ",,,,";
         csv << ',' << s.ground_ms << ',' << s.objects_ms << '\n';
     }
+}
+
+SweepScore parseSweepScore(const std::string& name) {
+    for (SweepScore s :
+         {SweepScore::GroundF1B, SweepScore::GroundF1A, SweepScore::Coverage, SweepScore::Purity})
+        if (name == sweepScoreName(s)) return s;
+    throw ConfigError("unknown leave-one-out score '" + name +
+                      "' (valid: f1b, f1a, coverage, purity)");
+}
+
+const char* sweepScoreName(SweepScore score) {
+    switch (score) {
+        case SweepScore::GroundF1B:
+            return "f1b";
+        case SweepScore::GroundF1A:
+            return "f1a";
+        case SweepScore::Coverage:
+            return "coverage";
+        case SweepScore::Purity:
+            return "purity";
+    }
+    return "?";
+}
+
+double sweepScore(const FrameRow& row, SweepScore score) {
+    switch (score) {
+        case SweepScore::GroundF1B:
+            return row.ground[1].f1;
+        case SweepScore::GroundF1A:
+            return row.ground[0].f1;
+        case SweepScore::Coverage:
+            return row.coverage;
+        case SweepScore::Purity:
+            return row.purity;
+    }
+    return 0;
+}
+
+LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score) {
+    if (rows.empty()) throw std::invalid_argument("leaveOneOut: no values");
+    const std::size_t frames = rows[0].size();
+    if (frames < 2) throw std::invalid_argument("leaveOneOut: needs two frames or more");
+    for (const auto& r : rows)
+        if (r.size() != frames) throw std::invalid_argument("leaveOneOut: frame counts differ");
+    // Mean score of value v over every frame but `skip` (skip = frames: none skipped).
+    const auto mean_without = [&](std::size_t v, std::size_t skip) {
+        double sum = 0;
+        for (std::size_t f = 0; f < frames; ++f)
+            if (f != skip) sum += sweepScore(rows[v][f], score);
+        return sum / double(skip < frames ? frames - 1 : frames);
+    };
+    const auto best_without = [&](std::size_t skip) {
+        std::size_t best = 0;
+        for (std::size_t v = 1; v < rows.size(); ++v)
+            if (mean_without(v, skip) > mean_without(best, skip)) best = v;
+        return best;
+    };
+    LeaveOneOut loo;
+    for (std::size_t f = 0; f < frames; ++f) {
+        LeaveOneOut::Fold fold;
+        fold.frame = rows[0][f].frame;
+        fold.chosen = best_without(f);
+        fold.held_out = sweepScore(rows[fold.chosen][f], score);
+        loo.held_out_mean += fold.held_out / double(frames);
+        loo.folds.push_back(fold);
+    }
+    loo.in_sample = best_without(frames);
+    loo.in_sample_mean = mean_without(loo.in_sample, frames);
+    return loo;
+}
+
+void writeLeaveOneOutCsv(std::ostream& csv, const SweepSpec& spec, SweepScore score,
+                         const LeaveOneOut& loo) {
+    csv << "held_out_frame,chosen_" << spec.key << ",held_out_" << sweepScoreName(score) << '\n';
+    for (const LeaveOneOut::Fold& fold : loo.folds)
+        csv << fold.frame << ',' << spec.values[fold.chosen] << ',' << fold.held_out << '\n';
+    csv << "mean (leave-one-out),," << loo.held_out_mean << '\n';
+    csv << "in-sample best," << spec.values[loo.in_sample] << ',' << loo.in_sample_mean << '\n';
 }
 
 }  // namespace travel::eval

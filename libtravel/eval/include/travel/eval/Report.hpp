@@ -92,4 +92,32 @@ std::vector<double> sweepPositions(const std::vector<std::string>& values);
 void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
                    const std::vector<EvaluationSummary>& sums, std::size_t frames);
 
+/// What a leave-one-out choice of a swept value maximises, per frame.
+enum class SweepScore { GroundF1B, GroundF1A, Coverage, Purity };
+/// "f1b", "f1a", "coverage", "purity"; throws ConfigError for any other name.
+SweepScore parseSweepScore(const std::string& name);
+const char* sweepScoreName(SweepScore score);
+double sweepScore(const FrameRow& row, SweepScore score);
+
+/// Leave-one-out over the frames of a sweep: a value chosen on some frames and scored on one it
+/// was not chosen on, the honest figure for a default picked from a handful of labelled frames.
+struct LeaveOneOut {
+    struct Fold {
+        std::string frame;       ///< the held-out frame
+        std::size_t chosen = 0;  ///< index of the value best on the other frames (ties: first)
+        double held_out = 0;     ///< that value's score on the held-out frame
+    };
+    std::vector<Fold> folds;
+    double held_out_mean = 0;   ///< mean of the folds' held-out scores
+    std::size_t in_sample = 0;  ///< index of the value best on all frames (ties: first)
+    double in_sample_mean = 0;  ///< its mean score over all frames
+};
+/// `rows[v]` are the frame rows of value v (MethodRun::rows, same frames in the same order for
+/// every value). Needs two frames or more; throws std::invalid_argument otherwise.
+LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score);
+
+/// sweep_KEY_loo.csv: one row per fold, then the in-sample row.
+void writeLeaveOneOutCsv(std::ostream& csv, const SweepSpec& spec, SweepScore score,
+                         const LeaveOneOut& loo);
+
 }  // namespace travel::eval
