@@ -16,6 +16,10 @@
 //    object moved by aligning the new view onto the last one (TrackShapeAlignment.hpp) and
 //    re-anchors its state by the rest of the measured position's shift (the view sliding over
 //    the object), so the velocity is that of the object, not of its visible part;
+//  - two filters: Track::motion (the velocity) takes that displacement as an anisotropic
+//    measurement, precise across the faces seen, loose along them (correctWithFaces);
+//    Track::centroid, fed with centroids alone, predicts where the next centroid lands for the
+//    gates, so a face's centimetre precision never shrinks them;
 //  - found again: a track born near where a moving track that lost its object (coasting, or
 //    ended up to max_misses frames ago) is predicted starts with that track's velocity instead
 //    of at rest (an occluded car found again as a new track);
