@@ -249,7 +249,7 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         const bool viewed = worldView(samples, track.cluster, world_T_aligned, view_);
         Eigen::Vector2d moved;
         Eigen::Matrix2d faces_information;
-        // Only for objects the centroid says move: at rest, a slide of the centroid over the
+        // Only for objects the track says move: at rest, a slide of the centroid over the
         // object reads as motion and brings the alignment in; most clusters of a drive are at
         // rest, and the alignment costs (~10 us a track).
         const bool worth_it = track.velocity().norm() >= params_.moving_speed_off;
