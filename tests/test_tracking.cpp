@@ -44,6 +44,20 @@ TEST(ConstantVelocityModel, RecoversAConstantVelocity) {
     EXPECT_LT(m.velocityCovariance()(0, 0), 0.5);
 }
 
+TEST(ConstantVelocityModel, AnisotropicMeasurementLeavesTheLooseAxisToThePrediction) {
+    // Settled at 7 m/s along x; then measured precisely in y (a side seen across) and loosely
+    // in x, where the measurements slide back by 5 cm a frame (a centroid over the side).
+    travel::ConstantVelocityModel m;
+    m.start({0, 0}, 0.5, 5.0);
+    for (int k = 1; k <= 30; ++k) m.predict(0.1, 0.5), m.correct({0.7 * k, 0.0}, 0.2);
+    Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+    noise.diagonal() << 1.3 * 1.3, 0.03 * 0.03;
+    for (int k = 31; k <= 40; ++k)
+        m.predict(0.1, 0.5), m.correct(Eigen::Vector2d(0.7 * k - 0.05 * (k - 30), 0.0), noise);
+    EXPECT_NEAR(m.velocity().x(), 7.0, 0.1);  // 6.96; 6.70 with the 0.2 m isotropic noise
+    EXPECT_NEAR(m.velocity().y(), 0.0, 0.01);
+}
+
 TEST(TrackAssociation, GatesAndTieOrder) {
     travel::WorldBox a;
     a.centre = {0, 0};
@@ -223,6 +237,12 @@ TEST(TrackShape, OneFaceLeavesItsLengthToTheGuess) {
     ASSERT_TRUE(shape.displacement(carFaces(10.7, 3.2, false, 0.05), {0.6, 0.5}, 0.5, d));
     EXPECT_NEAR(d.x(), 0.6, 0.05);
     EXPECT_NEAR(d.y(), 0.2, 0.03);
+    // ... and its information is all across the side (y): none along it.
+    Eigen::Matrix2d information;
+    ASSERT_TRUE(
+        shape.displacement(carFaces(10.7, 3.2, false, 0.05), {0.6, 0.5}, 0.5, d, &information));
+    EXPECT_GT(information(1, 1), 100.0);  // sigma < 0.1 m across
+    EXPECT_NEAR(information(0, 0), 0.0, 1e-6);
     // Another object: no overlap, no displacement.
     EXPECT_FALSE(shape.displacement(carFaces(30, 20, false, 0.0), {0, 0}, 0.5, d));
 }

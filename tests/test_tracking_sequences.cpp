@@ -161,11 +161,12 @@ TEST(TrackingSynthetic, FiguresWithGivenPoses) {
     }
     // The oncoming car passes the ego vehicle: its visible faces change and move the centroid;
     // the displacement comes from aligning its faces (TrackShapeAlignment.hpp; 0.51 m/s mean
-    // with the centroid alone).
-    EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 0.25);
+    // with the centroid alone, 0.17 with the faces fused isotropically), 0.04 now.
+    EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 0.1);
     // The crossing car, occluded for 4 frames, is found again as a new track that inherits the
-    // old track's velocity (Tracker::velocityDonor; 1.68 m/s mean when it started at rest).
-    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 0.5);
+    // old track's velocity (Tracker::velocityDonor; 1.68 m/s mean when it started at rest,
+    // 0.38 with the faces fused isotropically), 0.10 now.
+    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 0.2);
     for (const uint32_t parked : {3u, 5u}) {
         EXPECT_EQ(run.mot.track_ids.at(parked).size(), 1u) << "parked object " << parked;
     }
@@ -184,14 +185,25 @@ TEST(TrackingSynthetic, AcceptanceParkedKeepOneId) {
     }
 }
 
-// Issue 19's acceptance, moving cars' velocity within 0.3 m/s in every frame: NOT met yet
-// (docs/tracking.md, "Limits"). With the faces' alignment the oncoming car is within 0.3 m/s
-// until it passes the ego vehicle (then only its side is seen in both views, which says nothing
-// along its motion: the centroid decides there, up to 0.53 m/s off); the crossing car, found
-// again after a 4-frame occlusion as a new track with the old track's velocity, converges slowly
-// (0.52 m/s at worst). Run with --gtest_also_run_disabled_tests.
-TEST(TrackingSynthetic, DISABLED_AcceptanceCarsVelocityWithin0_3) {
+// Issue 19's acceptance, moving cars' velocity within 0.3 m/s in every tracked frame after the
+// 10th, with the simulator's poses: the faces' alignment measures the displacement across the
+// faces, the centroid (loosely) along them (Tracker::correctWithFaces).
+TEST(TrackingSynthetic, AcceptanceCarsVelocityWithin0_3) {
     const SimRun run = runSim(true);
+    for (const uint32_t car : {11u, 12u}) {
+        const auto& errors = run.velocity_error.at(car);
+        ASSERT_GT(errors.size(), 20u);
+        for (std::size_t k = 10; k < errors.size(); ++k)
+            EXPECT_LT(errors[k], 0.3) << "car " << car << " tracked frame " << k;
+    }
+}
+
+// The same with the poses of the ICP of non-ground points: NOT met (docs/tracking.md,
+// "Limits"). The registration's frame-to-frame error alone makes a static point seem to move
+// at 0.8 m/s on average (EgoMotionFromRegistration prints it); the cars' errors (~0.75 m/s
+// mean) are that. Run with --gtest_also_run_disabled_tests.
+TEST(TrackingSynthetic, DISABLED_AcceptanceCarsVelocityWithin0_3RegisteredPoses) {
+    const SimRun run = runSim(false);
     for (const uint32_t car : {11u, 12u}) {
         const auto& errors = run.velocity_error.at(car);
         for (std::size_t k = 10; k < errors.size(); ++k)
@@ -213,10 +225,33 @@ TEST(TrackingSynthetic, EgoMotionFromRegistration) {
     const double end_error = (run.poses.back().translation() - truth.translation()).norm();
     std::printf("registration: end point %.3f m off after %.1f m (%.2f %%)\n", end_error, driven,
                 100 * end_error / driven);
+    // What the ego-motion alone adds to a velocity: a static point `ahead` metres in front of
+    // the sensor seems to move by the frame-to-frame pose error.
+    const travel::sim::TrafficSequence seq = travel::sim::urbanTraffic();
+    for (const double ahead : {0.0, 20.0, 40.0}) {
+        double sum = 0, worst = 0;
+        for (std::size_t k = 1; k < frames.size(); ++k) {
+            const Eigen::Isometry3d truth_k =
+                frames[0].world_T_sensor.inverse() * frames[k].world_T_sensor;
+            const Eigen::Isometry3d truth_j =
+                frames[0].world_T_sensor.inverse() * frames[k - 1].world_T_sensor;
+            const Eigen::Vector3d w = truth_k * Eigen::Vector3d(ahead, 0, 0);
+            const Eigen::Vector3d seen_k = run.poses[k] * (truth_k.inverse() * w);
+            const Eigen::Vector3d seen_j = run.poses[k - 1] * (truth_j.inverse() * w);
+            const double speed = (seen_k - seen_j).head<2>().norm() / seq.frame_period;
+            sum += speed, worst = std::max(worst, speed);
+        }
+        std::printf("  a static point %.0f m ahead seems to move at mean %.3f max %.3f m/s\n",
+                    ahead, sum / double(frames.size() - 1), worst);
+    }
     // A street of boxes on a flat plane is a poor registration scene (few static structures,
     // two moving cars among them): ~10 % drift here, ~2 % on the real drive below.
     EXPECT_LT(end_error, 0.15 * driven);
     EXPECT_GE(run.mot.mota(), 0.85);
+    EXPECT_LE(run.mot.id_switches, 2u);
+    // Velocity errors ~0.75 m/s mean: the registration's (above), not the tracker's.
+    EXPECT_LT(meanAfter(run.velocity_error.at(11), 10), 1.0);
+    EXPECT_LT(meanAfter(run.velocity_error.at(12), 10), 1.0);
 }
 
 TEST(TrackingSynthetic, SameInputSameIds) {

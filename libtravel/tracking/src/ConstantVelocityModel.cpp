@@ -38,15 +38,18 @@ void ConstantVelocityModel::predict(double dt, double acceleration_sigma) {
 }
 
 void ConstantVelocityModel::correct(const Eigen::Vector2d& position, double position_sigma) {
+    correct(position, Eigen::Matrix2d::Identity() * (position_sigma * position_sigma));
+}
+
+void ConstantVelocityModel::correct(const Eigen::Vector2d& position, const Eigen::Matrix2d& noise) {
     // H = [I 0]: the innovation covariance is the top-left block plus R.
-    const Eigen::Matrix2d S =
-        P_.topLeftCorner<2, 2>() + Eigen::Matrix2d::Identity() * (position_sigma * position_sigma);
+    const Eigen::Matrix2d S = P_.topLeftCorner<2, 2>() + noise;
     const Eigen::Matrix<double, 4, 2> K = P_.leftCols<2>() * S.inverse();
     x_ += K * (position - x_.head<2>());
     // Joseph form keeps P symmetric and positive definite.
     Eigen::Matrix4d IKH = Eigen::Matrix4d::Identity();
     IKH.leftCols<2>() -= K;
-    P_ = IKH * P_ * IKH.transpose() + K * K.transpose() * (position_sigma * position_sigma);
+    P_ = IKH * P_ * IKH.transpose() + K * noise * K.transpose();
 }
 
 }  // namespace travel

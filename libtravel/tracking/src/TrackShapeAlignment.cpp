@@ -131,8 +131,8 @@ void TrackShape::prepare() {
 }
 
 bool TrackShape::displacement(const std::vector<Eigen::Vector3d>& world,
-                              const Eigen::Vector2d& guess, double guess_sigma,
-                              Eigen::Vector2d& d) {
+                              const Eigen::Vector2d& guess, double guess_sigma, Eigen::Vector2d& d,
+                              Eigen::Matrix2d* faces_information) {
     if (!prepared_) prepare();
     // Without faces (a bush, a tree: no point has a normal) d would be the guess: not worth
     // the search.
@@ -148,6 +148,7 @@ bool TrackShape::displacement(const std::vector<Eigen::Vector3d>& world,
     // The guess as a prior on d, in units of one point's weight.
     const double prior = (kPointSigma * kPointSigma) / (guess_sigma * guess_sigma);
     Eigen::Vector2d t = guess;
+    Eigen::Matrix2d faces = Eigen::Matrix2d::Zero();  // the last iteration's, in point units
     double reach = kFirstReach;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         // Point-to-line normal equations: sum w n n^T t = sum w n n^T (q - r), plus the prior.
@@ -179,6 +180,7 @@ bool TrackShape::displacement(const std::vector<Eigen::Vector3d>& world,
             b += w * n * n.dot(q - partner->p);
         }
         if (inliers < min_inliers) return false;
+        faces = A - prior * Eigen::Matrix2d::Identity();
         const Eigen::Vector2d next = A.ldlt().solve(b);
         const double step = (next - t).norm();
         t = next;
@@ -188,6 +190,7 @@ bool TrackShape::displacement(const std::vector<Eigen::Vector3d>& world,
         }
     }
     d = t;
+    if (faces_information) *faces_information = faces / (kPointSigma * kPointSigma);
     return true;
 }
 

@@ -1,6 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/tracking/Tracker.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -67,6 +68,7 @@ void Tracker::predictTracks(double t) {
     track_boxes_.clear();
     for (Track& track : tracks_) {
         const Eigen::Vector2d before = track.position();
+        track.centroid.predict(t - track.last_time, params_.acceleration_sigma);
         track.motion.predict(t - track.last_time, params_.acceleration_sigma);
         track.last_time = std::max(track.last_time, t);
         const Eigen::Vector2d shift = track.position() - before;
@@ -77,8 +79,8 @@ void Tracker::predictTracks(double t) {
         // young track (velocity still unknown) of a thin, fast object (a car's front face) is
         // not lost on its second frame.
         WorldBox gate_box = track.box;
-        const double grow = 2.0 * std::sqrt(std::max(track.motion.covariance()(0, 0),
-                                                     track.motion.covariance()(1, 1)));
+        const double grow = 2.0 * std::sqrt(std::max(track.centroid.covariance()(0, 0),
+                                                     track.centroid.covariance()(1, 1)));
         gate_box.min.head<2>().array() -= grow;
         gate_box.max.head<2>().array() += grow;
         track_boxes_.push_back(gate_box);
@@ -86,6 +88,7 @@ void Tracker::predictTracks(double t) {
     std::size_t kept = 0;
     for (Track& track : lost_) {
         const Eigen::Vector2d before = track.position();
+        track.centroid.predict(t - track.last_time, params_.acceleration_sigma);
         track.motion.predict(t - track.last_time, params_.acceleration_sigma);
         track.box.min.head<2>() += track.position() - before;
         track.box.max.head<2>() += track.position() - before;
@@ -96,7 +99,7 @@ void Tracker::predictTracks(double t) {
     lost_.resize(kept);
 }
 
-const ConstantVelocityModel* Tracker::velocityDonor(const Eigen::Vector2d& position) {
+const Track* Tracker::velocityDonor(const Eigen::Vector2d& position) {
     Track* best = nullptr;
     double best_distance = 0;
     const auto consider = [&](Track& track) {
@@ -104,8 +107,8 @@ const ConstantVelocityModel* Tracker::velocityDonor(const Eigen::Vector2d& posit
         // Inside the predicted box grown by the margin, 2 sigma and the object's length: the
         // part seen again (a car's front) need not be the part last seen (its rear).
         const double grow = params_.gate_box_margin + track.extent.box().size.x() +
-                            2.0 * std::sqrt(std::max(track.motion.covariance()(0, 0),
-                                                     track.motion.covariance()(1, 1)));
+                            2.0 * std::sqrt(std::max(track.centroid.covariance()(0, 0),
+                                                     track.centroid.covariance()(1, 1)));
         if (!insideGrown(track.box, position, grow)) return;
         const double distance = (track.position() - position).norm();
         if (!best || distance < best_distance) best = &track, best_distance = distance;
@@ -114,12 +117,30 @@ const ConstantVelocityModel* Tracker::velocityDonor(const Eigen::Vector2d& posit
     for (Track& track : lost_) consider(track);
     if (!best) return nullptr;
     best->velocity_given = true;
-    return &best->motion;
+    return best;
 }
 
 Eigen::Vector2d Tracker::positionOf(const Track& track, const WorldBox& cluster) const {
     if (track.extent.box().size.x() > params_.full_box_max_length) return cluster.centre;
     return track.extent.centreOf(cluster.flat, sensor_);
+}
+
+void Tracker::correctWithFaces(Track& track, const Eigen::Vector2d& position,
+                               const Eigen::Matrix2d& faces_information) const {
+    // The measurement's information: the faces' across themselves, plus the centroid's
+    // everywhere. The centroid of the visible part lies anywhere along the object as faces come
+    // into and out of view: uniform over the longest length seen, L, it has the variance
+    // L^2 / 12 (never less than that of a centroid, position_sigma^2).
+    const double length = track.extent.box().size.x();
+    const double centroid_variance =
+        std::max(params_.position_sigma * params_.position_sigma, length * length / 12.0);
+    const Eigen::Matrix2d noise =
+        (faces_information + Eigen::Matrix2d::Identity() / centroid_variance).inverse();
+    // The faces measure the displacement since the last view, whose position the filter
+    // took only in part (`residual`): across the faces the measured position is the filter's
+    // last position moved by the faces, i.e. the centroid less that residual; along them it is
+    // the centroid.
+    track.motion.correct(position - noise * faces_information * track.residual, noise);
 }
 
 void Tracker::updateMovingFlag(Track& track) const {
@@ -227,21 +248,29 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         const Eigen::Vector2d position = positionOf(track, measured);
         const bool viewed = worldView(samples, track.cluster, world_T_aligned, view_);
         Eigen::Vector2d moved;
-        // Only for objects the centroid says move: at rest, a slide of the centroid over the
+        Eigen::Matrix2d faces_information;
+        // Only for objects the track says move: at rest, a slide of the centroid over the
         // object reads as motion and brings the alignment in; most clusters of a drive are at
         // rest, and the alignment costs (~10 us a track).
         const bool worth_it = track.velocity().norm() >= params_.moving_speed_off;
         if (viewed && worth_it && track.shape.known() &&
             track.shape.displacement(view_, position - track.shape.position(),
-                                     params_.position_sigma, moved)) {
+                                     params_.position_sigma, moved, &faces_information)) {
             // The object moved by `moved` since the last view: the rest of the measured
             // position's shift is the view sliding over the object (faces coming into or out
             // of sight), a new reference point like the larger box above.
-            track.motion.shift(position - (track.shape.position() + moved));
+            const Eigen::Vector2d slide = position - (track.shape.position() + moved);
+            track.centroid.shift(slide);
+            track.motion.shift(slide);
+            track.centroid.correct(position, params_.position_sigma);
+            correctWithFaces(track, position, faces_information);
         } else {
+            track.centroid.shift(position - before);
             track.motion.shift(position - before);
+            track.centroid.correct(position, params_.position_sigma);
+            track.motion.correct(position, params_.position_sigma);
         }
-        track.motion.correct(position, params_.position_sigma);
+        track.residual = position - track.motion.position();
         if (viewed)
             track.shape.remember(view_, position);
         else
@@ -272,10 +301,13 @@ void Tracker::update(double t, const Eigen::Isometry3d& world_T_aligned,
         track.last_time = t;
         track.extent.update(cluster_boxes_[c].flat);
         const Eigen::Vector2d position = positionOf(track, cluster_boxes_[c]);
-        if (const ConstantVelocityModel* donor = velocityDonor(position))
-            track.motion.startWithVelocityOf(position, params_.position_sigma, *donor);
-        else
+        if (const Track* donor = velocityDonor(position)) {
+            track.centroid.startWithVelocityOf(position, params_.position_sigma, donor->centroid);
+            track.motion.startWithVelocityOf(position, params_.position_sigma, donor->motion);
+        } else {
+            track.centroid.start(position, params_.position_sigma, params_.initial_velocity_sigma);
             track.motion.start(position, params_.position_sigma, params_.initial_velocity_sigma);
+        }
         track.box = cluster_boxes_[c];
         if (worldView(samples, c, world_T_aligned, view_)) track.shape.remember(view_, position);
         track.z = (world_T_aligned * clusters[c].centroid.cast<double>()).z();

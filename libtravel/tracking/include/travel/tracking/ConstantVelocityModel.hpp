@@ -28,6 +28,9 @@ class ConstantVelocityModel {
     void shift(const Eigen::Vector2d& delta) { x_.head<2>() += delta; }
     /// Fuses a measured position with 1-sigma `position_sigma` [m] per axis.
     void correct(const Eigen::Vector2d& position, double position_sigma);
+    /// Fuses a measured position with the 2x2 covariance `noise` [m^2] (an anisotropic
+    /// measurement: a face fixes the position across itself, not along it).
+    void correct(const Eigen::Vector2d& position, const Eigen::Matrix2d& noise);
 
     Eigen::Vector2d position() const { return x_.head<2>(); }
     Eigen::Vector2d velocity() const { return x_.tail<2>(); }

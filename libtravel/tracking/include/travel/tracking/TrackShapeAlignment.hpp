@@ -76,9 +76,12 @@ class TrackShape {
     /// `guess` (the measured position's shift, 1-sigma `guess_sigma` per axis) in information
     /// form: the faces decide across themselves, the guess where no face does (a side seen
     /// alone, along its length). False when fewer than half of the new points find a partner:
-    /// the views do not overlap (a split, another object).
+    /// the views do not overlap (a split, another object). faces_information (optional): the
+    /// information [1/m^2] the faces alone give on d, sum of w n n^T / kPointSigma^2 over the
+    /// matched points (w: the robust weight): large across the faces seen, zero along them.
     bool displacement(const std::vector<Eigen::Vector3d>& world, const Eigen::Vector2d& guess,
-                      double guess_sigma, Eigen::Vector2d& d);
+                      double guess_sigma, Eigen::Vector2d& d,
+                      Eigen::Matrix2d* faces_information = nullptr);
 
     /// [m] radius of the neighbourhood giving a point's face normal.
     static constexpr double kNormalRadius = 0.5;

@@ -16,6 +16,10 @@
 //    object moved by aligning the new view onto the last one (TrackShapeAlignment.hpp) and
 //    re-anchors its state by the rest of the measured position's shift (the view sliding over
 //    the object), so the velocity is that of the object, not of its visible part;
+//  - two filters: Track::motion (the velocity) takes that displacement as an anisotropic
+//    measurement, precise across the faces seen, loose along them (correctWithFaces);
+//    Track::centroid, fed with centroids alone, predicts where the next centroid lands for the
+//    gates, so a face's centimetre precision never shrinks them;
 //  - found again: a track born near where a moving track that lost its object (coasting, or
 //    ended up to max_misses frames ago) is predicted starts with that track's velocity instead
 //    of at rest (an occluded car found again as a new track);
@@ -42,19 +46,29 @@ struct Track {
     uint64_t birth = 0;  ///< serial number of its birth (the tie order)
     bool confirmed = false;
     bool moving = false;
-    int hits = 0;                  ///< associated frames
-    int misses = 0;                ///< consecutive frames without a cluster
-    int fast_frames = 0;           ///< consecutive frames above moving_speed_on
-    bool velocity_given = false;   ///< a new track took its velocity (Tracker::velocityDonor)
-    double last_time = 0;          ///< [s] time of the last update
-    ConstantVelocityModel motion;  ///< world-frame xy position and velocity
+    int hits = 0;                 ///< associated frames
+    int misses = 0;               ///< consecutive frames without a cluster
+    int fast_frames = 0;          ///< consecutive frames above moving_speed_on
+    bool velocity_given = false;  ///< a new track took its velocity (Tracker::velocityDonor)
+    double last_time = 0;         ///< [s] time of the last update
+    /// Where the visible part's centroid is and goes (world xy, measured by centroids alone):
+    /// the gates, the predicted box and the found-again rule compare clusters' centroids with
+    /// it.
+    ConstantVelocityModel centroid;
+    /// The object's position and velocity (world xy): measured by the faces where they see
+    /// it move, by the centroid (loosely, along the faces) elsewhere (Tracker::correctWithFaces).
+    /// Its velocity is the track's.
+    ConstantVelocityModel motion;
+    /// Measured position minus motion's position after the last update [m]: the part of the
+    /// last measurement the filter did not take.
+    Eigen::Vector2d residual{0, 0};
     WorldBox box;  ///< last associated cluster's box, world frame (centre: filtered position)
     ObjectExtent extent;  ///< the largest box seen: locates partial views
     TrackShape shape;     ///< the last view's points: the displacement to the next view
     double z = 0;         ///< last measured centroid height, world frame [m]
     int cluster = -1;     ///< index of this frame's cluster in the last update() (-1: missed)
 
-    Eigen::Vector2d position() const { return motion.position(); }
+    Eigen::Vector2d position() const { return centroid.position(); }
     Eigen::Vector2d velocity() const { return motion.velocity(); }
 };
 
@@ -86,10 +100,14 @@ class Tracker {
     /// Gives the unassigned clusters inside a confirmed, associated track's gate box to it.
     void attachFragments(const std::vector<ClusterSummary>& clusters);
     void updateMovingFlag(Track& track) const;
+    /// motion's update with the faces' displacement (information [1/m^2] across the faces,
+    /// TrackShape::displacement) and the centroid `position`.
+    void correctWithFaces(Track& track, const Eigen::Vector2d& position,
+                          const Eigen::Matrix2d& faces_information) const;
     /// The velocity a track born at `position` inherits: that of the moving track predicted
     /// nearest to it (within the gate distance plus 2 sigma) among those coasting or ended in
     /// the last max_misses frames, each given once; null if none.
-    const ConstantVelocityModel* velocityDonor(const Eigen::Vector2d& position);
+    const Track* velocityDonor(const Eigen::Vector2d& position);
     /// Where `track` locates `cluster`: the centre of its full box on the visible faces, or the
     /// centroid for long tracks (full_box_max_length).
     Eigen::Vector2d positionOf(const Track& track, const WorldBox& cluster) const;
