@@ -19,13 +19,20 @@
 // or more above its own plane. A car, wall, fence or trunk in the node reaches higher, and the
 // bases of such objects must not become ground (the unrestricted option lowered the dev-frame
 // object coverage 0.933 -> 0.916); grass, verges and kerbs stay below.
+// Sub-node handling: a node straddling the foot or the top of an embankment fits one part of it
+// (its lowest seeds, Sec. III-B); a point of a clear node that neither plane accepts is also
+// ground within [-outlier_dist, eps3) of the own plane of a clear neighbour near it (see
+// onClearNeighbourPlane): its height is judged against the verified surface beside it.
 #include "travel/GroundLabelling.hpp"
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace travel {
 namespace {
+
+thread_local std::vector<uint8_t> clear_scratch;  // per node, reused across frames
 
 // Points per class. One counter per class, each a branch-free sum over all labels: a
 // ++counts[label] per point would chain the increments of equal labels through memory.
@@ -51,6 +58,31 @@ bool clearAbovePlane(const float* x, const float* y, const float* z, uint32_t be
     return highest < clearance;
 }
 
+// True when (x, y, z) lies within [-outlier_dist, eps3) of the own plane of a clear neighbour
+// of node k whose mean is within 0.75 r (xy): the point continues the verified surface next to
+// it (a node straddling the top of an embankment fits its lower part; the plateau beyond is its
+// neighbour's plane). A triangle's points lie within 0.53 r of its centroid, so 0.75 r reaches
+// about a quarter of a cell past them into node k; a plane extrapolated farther (tilted by a
+// bump) reaches the feet of bushes (synthetic meadow: 32 bush points as ground unbounded, 1 at
+// 0.75 r).
+bool onClearNeighbourPlane(const TriGridField& field, const TerrainModel& model,
+                           const std::vector<uint8_t>& clear, int k, float x, float y, float z,
+                           float ground_dist, float outlier_dist) {
+    const float max_dist = 0.75f * field.resolution();
+    const float max_dist2 = max_dist * max_dist;
+    const TriGridField::Neighbours& nb = field.neighbours(k);
+    for (int m = 0; m < nb.count; ++m) {
+        const int j = nb.ids[m];
+        if (!clear[j]) continue;
+        const TriNode& other = model.nodes[j];
+        if ((other.mean.head<2>() - Eigen::Vector2f(x, y)).squaredNorm() > max_dist2) continue;
+        const float e =
+            other.normal.x() * x + other.normal.y() * y + other.normal.z() * z + other.d;
+        if (e >= -outlier_dist && e < ground_dist) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
@@ -69,6 +101,18 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float outlier_dist = static_cast<float>(params.outlier_dist);
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
     const int num_nodes = static_cast<int>(model.nodes.size());
+    // Reached nodes whose own plane may label points (see the header comment).
+    std::vector<uint8_t>& clear = clear_scratch;
+    clear.assign(model.nodes.size(), 0);
+    if (params.label_with_node_plane) {
+        for (int k = 0; k < num_nodes; ++k) {
+            const TriNode& node = model.nodes[k];
+            if (!node.reached || node.count == 0) continue;
+            clear[k] =
+                clearAbovePlane(sx, sy, sz, node.begin, node.begin + node.count, node.normal.x(),
+                                node.normal.y(), node.normal.z(), node.d, own_plane_clearance);
+        }
+    }
     for (int k = 0; k < num_nodes; ++k) {
         const TriNode& node = model.nodes[k];
         const std::optional<GroundPlane> ground = model.groundPlane(k);
@@ -79,15 +123,18 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         // ground. Its signed distance is folded in as min(e, e_own) unless e_own says outlier.
         const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z();
         const uint32_t end = node.begin + node.count;
-        const bool own =
-            params.label_with_node_plane && node.reached &&
-            clearAbovePlane(sx, sy, sz, node.begin, end, o0, o1, o2, node.d, own_plane_clearance);
+        const bool own = clear[k] != 0;
         const float od = own ? node.d : std::numeric_limits<float>::infinity();
         for (uint32_t i = node.begin; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
             const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
-            labels[order[i]] = classifyByPlaneDistance(e, ground_dist, outlier_dist);
+            PointClass label = classifyByPlaneDistance(e, ground_dist, outlier_dist);
+            if (own && label == PointClass::NonGround &&
+                onClearNeighbourPlane(field, model, clear, k, sx[i], sy[i], sz[i], ground_dist,
+                                      outlier_dist))
+                label = PointClass::Ground;
+            labels[order[i]] = label;
         }
     }
     return classCounts(labels);
