@@ -114,7 +114,7 @@ struct AutoReal {
       "A point of a node the search accepted (eq. 2) is also ground when it lies within eps3 "    \
       "of the node's own plane, if the node is clear (own_plane_clearance): keeps verges and "    \
       "both sides of kerbs that TTMF's corner averaging smooths away")                            \
-    X(double, own_plane_clearance, 0.8, "m", 0.0, 1e9,                                            \
+    X(double, own_plane_clearance, 0.8, "m", 0.0, 100.0,                                          \
       "A node is clear when none of its points stands this high or higher above its own "         \
       "plane: no car, wall, fence or trunk, whose bases must not join the ground; grass, "        \
       "verges (0.1-0.5 m) and kerbs stay below. Leave-one-out over the dev frames: 0.8")          \
