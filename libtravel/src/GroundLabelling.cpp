@@ -22,7 +22,8 @@
 // Sub-node handling: a node straddling the foot or the top of an embankment fits one part of it
 // (its lowest seeds, Sec. III-B); a point of a clear node that neither plane accepts is also
 // ground within [-outlier_dist, eps3) of the own plane of a clear neighbour near it (see
-// onClearNeighbourPlane): its height is judged against the verified surface beside it.
+// onClearNeighbourPlane): its height is judged against the verified surface beside it. The
+// same holds for the points of a node too sparse for a plane of its own (labelSparseNode).
 #include "travel/GroundLabelling.hpp"
 
 #include <algorithm>
@@ -83,6 +84,27 @@ bool onClearNeighbourPlane(const TriGridField& field, const TerrainModel& model,
     return false;
 }
 
+// A node with too few points for a plane (NodeClass::Unknown, far nodes crossed by one or two
+// rings) that TTMF left without ground: its points are ground when every one of them lies
+// within eps3 of a clear neighbour's own plane (onClearNeighbourPlane) and the node spans less
+// than own_plane_clearance in z. All or nothing: one point above the band (the bottom of an
+// object) keeps the whole node non-ground.
+void labelSparseNode(const TriGridField& field, const TerrainModel& model,
+                     const std::vector<uint8_t>& clear, int k, const float* x, const float* y,
+                     const float* z, const uint32_t* order, float ground_dist, float outlier_dist,
+                     float clearance, std::vector<PointClass>& labels) {
+    const TriNode& node = model.nodes[k];
+    const uint32_t end = node.begin + node.count;
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (uint32_t i = node.begin; i < end; ++i) lo = std::min(lo, z[i]), hi = std::max(hi, z[i]);
+    if (!(hi - lo < clearance)) return;
+    for (uint32_t i = node.begin; i < end; ++i)
+        if (!onClearNeighbourPlane(field, model, clear, k, x[i], y[i], z[i], ground_dist,
+                                   outlier_dist))
+            return;
+    for (uint32_t i = node.begin; i < end; ++i) labels[order[i]] = PointClass::Ground;
+}
+
 }  // namespace
 
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
@@ -116,6 +138,12 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     for (int k = 0; k < num_nodes; ++k) {
         const TriNode& node = model.nodes[k];
         const std::optional<GroundPlane> ground = model.groundPlane(k);
+        if (!ground && node.count > 0 && node.node_class == NodeClass::Unknown &&
+            params.label_with_node_plane) {
+            labelSparseNode(field, model, clear, k, sx, sy, sz, order, ground_dist, outlier_dist,
+                            own_plane_clearance, labels);
+            continue;
+        }
         if (!ground || node.count == 0) continue;
         const float s0 = ground->normal.x(), s1 = ground->normal.y();
         const float s2 = ground->normal.z(), d = ground->d;
