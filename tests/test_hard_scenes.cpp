@@ -127,12 +127,13 @@ TEST(HardScenes, GrassVergesAndEmbankmentsAreGround) {
         segment(sim::grassVerges(), sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight);
     print("grass_verges", run.scores);
     // TTMF's corner averaging left the verges 0.13-0.3 m above the refitted planes: recall
-    // 0.964, F1 0.974. Labelling against the own planes of clear reached nodes: 0.986; and
-    // against clear neighbours' planes (nodes straddling the embankment top): 0.994, F1 0.988.
-    // The false ground (fp ~2000) is the embankment's own rough surface where the 3 cm
-    // roughness makes it locally steeper than 25 deg (ground truth NonGround, instance 0).
-    EXPECT_GE(run.scores.recall(), 0.99);
-    EXPECT_GE(run.scores.f1(), 0.985);
+    // 0.964, F1 0.974. Labelling against the own planes of clear reached nodes: 0.986; against
+    // clear neighbours' planes too (nodes straddling the embankment top): 0.994; and the nodes
+    // too sparse for a plane (far rings): 0.998, F1 0.990. The false ground (fp ~2000) is the
+    // embankment's own rough surface where the 3 cm roughness makes it locally steeper than
+    // 25 deg (ground truth NonGround, instance 0).
+    EXPECT_GE(run.scores.recall(), 0.995);
+    EXPECT_GE(run.scores.f1(), 0.987);
     EXPECT_EQ(run.scores.high_obstacle_as_ground, 0u);
 }
 

@@ -114,10 +114,10 @@ struct AutoReal {
       "A point of a node the search accepted (eq. 2) is also ground when it lies within eps3 "    \
       "of the node's own plane, if the node is clear (own_plane_clearance): keeps verges and "    \
       "both sides of kerbs that TTMF's corner averaging smooths away")                            \
-    X(double, own_plane_clearance, 0.8, "m", 0.0, 100.0,                                          \
+    X(double, own_plane_clearance, 0.5, "m", 0.0, 100.0,                                          \
       "A node is clear when none of its points stands this high or higher above its own "         \
-      "plane: no car, wall, fence or trunk, whose bases must not join the ground; grass, "        \
-      "verges (0.1-0.5 m) and kerbs stay below. Leave-one-out over the dev frames: 0.8")          \
+      "plane: no car body, wall, fence, trunk or bush, whose bases must not join the ground; "    \
+      "grass, verges and kerbs stay below. Leave-one-out over the dev frames: 0.5")               \
     X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this is on a wall, fence, trunk or bush face: NonGround, left out of the object "     \
