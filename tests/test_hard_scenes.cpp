@@ -126,10 +126,49 @@ TEST(HardScenes, GrassVergesAndEmbankmentsAreGround) {
     const SceneRun run =
         segment(sim::grassVerges(), sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight);
     print("grass_verges", run.scores);
-    // Not fixed yet (issue 14): recall 0.964, the verges' rough slopes are missed. The
-    // thresholds hold today's level; the goal is recall >= 0.98.
-    EXPECT_GE(run.scores.recall(), 0.955);
-    EXPECT_GE(run.scores.f1(), 0.965);
+    // TTMF's corner averaging left the verges 0.13-0.3 m above the refitted planes: recall
+    // 0.964, F1 0.974. Labelling against the own planes of clear reached nodes: 0.986; against
+    // clear neighbours' planes too (nodes straddling the embankment top): 0.994; and the nodes
+    // too sparse for a plane (far rings): 0.998, F1 0.990. The false ground (fp ~2000) is the
+    // embankment's own rough surface where the 3 cm roughness makes it locally steeper than
+    // 25 deg (ground truth NonGround, instance 0).
+    EXPECT_GE(run.scores.recall(), 0.995);
+    EXPECT_GE(run.scores.f1(), 0.987);
+    EXPECT_EQ(run.scores.high_obstacle_as_ground, 0u);
+}
+
+// Verges farther out (the dev frames' second case: terrain missed mostly 10-40 m away): a
+// straight road with a verge rising 0.3 m over 1 m at 10 m on the left and at 22 m on the
+// right, 3 cm roughness. Scored on the points 8-40 m away.
+TEST(HardScenes, VergesAt10And22MetresAreGround) {
+    sim::Scene scene;
+    sim::Ramp left;
+    left.start = {0.0, 10.0};
+    left.direction = {0.0, 1.0};
+    left.length = 1.0;
+    left.width = 400.0;
+    left.slope_deg = std::atan(0.3 / 1.0) / sim::kDegToRad;
+    sim::Ramp right = left;
+    right.start = {0.0, -22.0};
+    right.direction = {0.0, -1.0};
+    scene.ramps = {left, right};
+    scene.roughness.amplitude = 0.03;
+    scene.roughness.wavelength = 1.0;
+    const SceneRun run =
+        segment(scene, sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight);
+    sim::GroundTruth scored = run.scan.gt;  // points outside 8-40 m left unscored
+    for (std::size_t i = 0; i < scored.size(); ++i) {
+        const float r = std::hypot(run.scan.cloud.x[i], run.scan.cloud.y[i]);
+        if (r < 8.f || r > 40.f) scored.cls[i] = sim::NoReturn;
+    }
+    const test::SceneScores s = test::scoreScene(scored, run.result.labels);
+    print("verges_10_22m", s);
+    // Refitted planes only: recall 0.9916 (451 verge points missed), F1 0.9929; with the own
+    // and neighbour planes of clear nodes: recall 1.0000, F1 0.9970 (the false ground is the
+    // slopes' rough surface where it is locally steeper than 25 deg, as above: 309 -> 321).
+    EXPECT_GE(s.recall(), 0.998);
+    EXPECT_GE(s.f1(), 0.995);
+    EXPECT_EQ(s.high_obstacle_as_ground, 0u);
 }
 
 TEST(HardScenes, OffRoadMeadowWithBushesAndTrunks) {

@@ -1,6 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// Per-point labels (paper eq. 5) from the refitted planes of the terrain model.
+// Per-point labels (paper eq. 5) from the refitted planes of the terrain model, and (with
+// label_with_node_plane) the own planes of clear reached nodes and their neighbours: verges.
 #pragma once
 
 #include <array>

@@ -110,9 +110,14 @@ struct AutoReal {
       "epsilon_3: a point of a traversable node is ground when its signed distance to the "       \
       "refitted plane is below this (paper 0.1; 0.13 keeps road points beside cars out of "       \
       "their clusters, see README)")                                                              \
-    X(bool, label_with_node_plane, false, "", 0, 1,                                               \
-      "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
-      "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
+    X(bool, label_with_node_plane, true, "", 0, 1,                                                \
+      "A point of a node the search accepted (eq. 2) is also ground when it lies within eps3 "    \
+      "of the node's own plane, if the node is clear (own_plane_clearance): keeps verges and "    \
+      "both sides of kerbs that TTMF's corner averaging smooths away")                            \
+    X(double, own_plane_clearance, 0.5, "m", 0.0, 100.0,                                          \
+      "A node is clear when none of its points stands this high or higher above its own "         \
+      "plane: no car body, wall, fence, trunk or bush, whose bases must not join the ground; "    \
+      "grass, verges and kerbs stay below. Leave-one-out over the dev frames: 0.5")               \
     X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this is on a wall, fence, trunk or bush face: NonGround, left out of the object "     \
