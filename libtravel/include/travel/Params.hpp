@@ -144,6 +144,14 @@ struct AutoReal {
       "Skipped linkage across an occlusion: a point continues an open run across a gap up to "    \
       "this wide when every point seen in between is nearer to the sensor (by T_horz) and the "   \
       "two ends' ranges differ by less than T_horz")                                              \
+    X(double, see_through_depth, 2.5, "m", 0.0, 100.0,                                            \
+      "Windows: points of a ring seen through a gap of at most occlusion_max_gap in an object "   \
+      "(both sides already one cluster) join it when they lie behind both sides by at most "      \
+      "this (a vehicle's far side and seats; 2.5 m = the widest road vehicles). 0 = off")         \
+    X(double, seam_max_shift, 2.0, "m", 0.0, 100.0,                                               \
+      "Runs of a ring facing each other across the column where the sweep started (0.1 s "        \
+      "apart in time) merge when their facing ends are closer than this: a car moving at up to "  \
+      "20 m/s relative to the sensor shifts 2 m in a 10 Hz sweep. 0 = off")                       \
     X(int, vertical_ring_span, 3, "", 1, 1024,                                                    \
       "T_ring: a run is compared with the runs of this many rings below it")                      \
     X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \
