@@ -127,7 +127,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     // Runs: a few points each on real scans; more grow the buffers once.
     const std::size_t runs = points / 4 + 1;
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
-    prefault(run_far_range_, runs);
+    prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
@@ -184,6 +184,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_last_range_.clear(), run_far_range_.clear();
+    run_near_range_.clear();
     run_size_.clear(), run_first_input_.clear();
     for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
     point_run_.resize(total), next_in_run_.resize(total);
@@ -224,6 +225,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 run_last_[joined] = k;
                 run_last_range_[joined] = range;
                 run_far_range_[joined] = std::max(run_far_range_[joined], range);
+                run_near_range_[joined] = std::min(run_near_range_[joined], range);
                 run_col_end_[joined] = sorted_col_[k];
                 ++run_size_[joined];
                 run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
@@ -237,7 +239,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             }
             const int run = static_cast<int>(run_first_.size());
             run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
-            run_far_range_.push_back(range);
+            run_far_range_.push_back(range), run_near_range_.push_back(range);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
             run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
@@ -391,18 +393,19 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
                                  float nearer_than) {
     // The points in front of the run before and after it on its ring, nearest first, skipping
     // background seen through the far window as well and occluders in front of the object.
-    constexpr int kEnclosureWalk = 12;
-    uint32_t before[kEnclosureWalk], after[kEnclosureWalk];
-    int num_before = 0, num_after = 0;
+    // Roots from run_root_ (no merge happens while runs are looked at).
+    constexpr int kEnclosureWalk = 10;
+    uint32_t before[kEnclosureWalk];
+    int num_before = 0;
     for (uint32_t k = first; k > row_lo && first - k < kEnclosureWalk;)
         if (range_[--k] < nearer_than) before[num_before++] = k;
-    for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;)
-        if (range_[++k] < nearer_than) after[num_after++] = k;
-    for (int i = 0; i < num_before; ++i) {
-        const int root = find(point_run_[before[i]]);
-        for (int j = 0; j < num_after; ++j)
-            if (find(point_run_[after[j]]) == root) {
-                enclosure_left_ = before[i], enclosure_right_ = after[j];
+    if (num_before == 0) return -1;
+    for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
+        if (range_[++k] >= nearer_than) continue;
+        const int root = run_root_[point_run_[k]];
+        for (int i = 0; i < num_before; ++i)
+            if (run_root_[point_run_[before[i]]] == root) {
+                enclosure_left_ = before[i], enclosure_right_ = k;
                 return root;
             }
     }
@@ -422,7 +425,7 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
             std::lower_bound(col + row_begin_[rr], col + row_begin_[rr + 1], run_col_begin_[b]) -
             col);
         for (; k < row_begin_[rr + 1] && col[k] <= run_col_end_[b]; ++k)
-            if (range_[k] < nearer_than && find(point_run_[k]) == root) return true;
+            if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
     return false;
 }
@@ -434,43 +437,57 @@ void RunClustering::linkSeenThrough(const Params& params) {
     const float max_gap2 = static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
     const int num_runs = static_cast<int>(run_first_.size());
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
-    // Per root: points, range-image box (rows, columns), nearest range, and the cluster its
-    // runs are seen through (kNone: none, or more than one).
-    constexpr int32_t kNone = -1;
+    // Per root: the cluster its runs are seen through (kNone: none; kConflict: more than one)
+    // and whether one of those runs is closed above or below by it.
+    constexpr int32_t kNone = -1, kConflict = -2;
     enclosure_.assign(static_cast<std::size_t>(num_runs), kNone);
-    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
+    closed_.assign(static_cast<std::size_t>(num_runs), 0);
+    run_root_.resize(static_cast<std::size_t>(num_runs));
+    for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
     bool any = false;
     for (int r = 0; r < rows; ++r) {
         const uint32_t row_lo = row_begin_[r], row_hi = row_begin_[r + 1];
         for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b) {
-            const int root = find(static_cast<int>(b));
-            RootBox& box = root_box_[root];
-            float nearest = std::numeric_limits<float>::infinity(), farthest = 0.f;
-            for (uint32_t k = run_first_[b]; k != kEndOfRun; k = next_in_run_[k])
-                nearest = std::min(nearest, range_[k]), farthest = std::max(farthest, range_[k]);
-            box.add(r, run_col_begin_[b], run_col_end_[b], nearest, run_size_[b]);
-            if (box.conflict) continue;
+            const int root = run_root_[b];
+            int32_t& state = enclosure_[root];
+            if (state == kConflict) continue;
+            const float nearer_than = run_near_range_[b] - t_horz;
             const int enclosing =
-                enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearest - t_horz);
+                enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than);
             if (enclosing < 0 || enclosing == root) continue;
             const uint32_t left = enclosure_left_, right = enclosure_right_;
             if (dist2(left, right) > max_gap2 ||
-                farthest > std::max(range_[left], range_[right]) + depth)
+                run_far_range_[b] > std::max(range_[left], range_[right]) + depth)
                 continue;
-            int32_t& state = enclosure_[root];
             if (state == kNone) state = enclosing, any = true;
-            box.conflict = state != enclosing;
-            box.closed = box.closed || closedAboveOrBelow(r, rows, b, enclosing, nearest - t_horz);
+            if (state != enclosing) {
+                state = kConflict;
+                continue;
+            }
+            if (!closed_[root])
+                closed_[root] = closedAboveOrBelow(r, rows, b, enclosing, nearer_than);
         }
     }
     if (!any) return;
+    // Range-image boxes, nearest ranges and sizes of the clusters involved only.
+    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
+    for (int run = 0; run < num_runs; ++run)
+        if (enclosure_[run] >= 0 && closed_[run]) {
+            root_box_[run].involved = true;
+            root_box_[enclosure_[run]].involved = true;
+        }
+    for (int run = 0; run < num_runs; ++run) {
+        RootBox& box = root_box_[run_root_[run]];
+        if (box.involved)
+            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
+                    run_size_[run]);
+    }
     // A cluster joins the one it is seen through when it lies inside that one's range-image
     // box, behind it, and is smaller: the seats and far side of a car seen through its windows.
     for (int run = 0; run < num_runs; ++run) {
-        const RootBox& f = root_box_[run];
-        if (enclosure_[run] == kNone || f.conflict) continue;
-        const RootBox& e = root_box_[enclosure_[run]];
-        if (f.closed && f.row_lo >= e.row_lo && f.row_hi <= e.row_hi && f.col_lo >= e.col_lo &&
+        if (enclosure_[run] < 0 || !closed_[run]) continue;
+        const RootBox &f = root_box_[run], &e = root_box_[enclosure_[run]];
+        if (f.row_lo >= e.row_lo && f.row_hi <= e.row_hi && f.col_lo >= e.col_lo &&
             f.col_hi <= e.col_hi && f.nearest > e.nearest && f.points < e.points)
             unite(run, enclosure_[run]);
     }

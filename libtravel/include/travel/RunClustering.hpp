@@ -71,8 +71,7 @@ class RunClustering {
         int row_lo = 1 << 30, row_hi = -1, col_lo = 1 << 30, col_hi = -1;
         float nearest = std::numeric_limits<float>::infinity();
         uint32_t points = 0;
-        bool conflict = false;  // seen through the gaps of more than one cluster
-        bool closed = false;    // a run has the enclosing cluster above or below it
+        bool involved = false;  // a fragment seen through a cluster's gaps, or that cluster
         void add(int row, int col_begin, int col_end, float range, uint32_t size) {
             row_lo = std::min(row_lo, row), row_hi = std::max(row_hi, row);
             col_lo = std::min(col_lo, col_begin), col_hi = std::max(col_hi, col_end);
@@ -80,6 +79,7 @@ class RunClustering {
         }
     };
     std::vector<RootBox> root_box_;
+    std::vector<uint8_t> closed_;  // per root, see linkSeenThrough()
     void unite(int a, int b);
     bool runsTouch(int a, int b, int column_window, float max_dist2) const;
     float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
@@ -96,8 +96,8 @@ class RunClustering {
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
     std::vector<uint32_t> run_first_, run_last_;
-    std::vector<float> run_last_range_, run_far_range_;  // range of the last / farthest point
-    std::vector<float> row_elevation_;                   // mean elevation of each row [rad]
+    std::vector<float> run_last_range_, run_far_range_, run_near_range_;  // last, max, min
+    std::vector<float> row_elevation_;  // mean elevation of each row [rad]
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
     std::vector<uint32_t> run_size_, run_first_input_;  // points, smallest input index
