@@ -27,13 +27,16 @@ class RunClustering {
     /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
     /// every ring, with skipped linkage (a point joins the most recent of the last T_skip + 1
     /// open runs whose end lies within T_horz, or, across an occlusion, within
-    /// occlusion_max_gap) and circular linkage across the 0/360-degree seam.
+    /// occlusion_max_gap), circular linkage across the 0/360-degree seam, and seam linkage
+    /// (seam_max_shift) across the column where the sweep started (image.sweepStartColumn()),
+    /// where a moving object is seen 0.1 s apart.
     void horizontal(const AlignedCloud& cloud, const RangeImage& image,
                     const std::vector<PointClass>& labels, const Params& params);
 
     /// Stage 2 (Sec. IV-C): each run is compared with the runs of the T_ring rings below it
     /// whose column span, widened by T_ext, overlaps its own; they merge when two of their
-    /// points in nearby columns are closer than T_vert (3-D). Then see-through linkage (a
+    /// points in nearby columns are closer than T_vert beyond one ring's spacing at their range
+    /// (sqrt(T_vert^2 + (R dtheta)^2)). Then see-through linkage (a
     /// cluster seen only through the gaps of another, within see_through_depth behind it,
     /// joins it: a car's seats and far side seen through its windows).
     void vertical(const Params& params);
