@@ -546,12 +546,27 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
         }
     }
 
+    // Sweep start (header): the earliest valid point by time, else the first valid point.
+    sweep_start_col_ = -1;
+    std::size_t first_valid = n;
+    if (cloud.hasTime()) {
+        float earliest = std::numeric_limits<float>::infinity();
+        for (std::size_t i = 0; i < n; ++i)
+            if (valid[i] && cloud.time[i] < earliest) earliest = cloud.time[i], first_valid = i;
+    } else {
+        first_valid = static_cast<std::size_t>(
+            std::find_if(valid.begin(), valid.end(), [](uint8_t v) { return v != 0; }) -
+            valid.begin());
+    }
+    const int first_col = first_valid < n ? col_[first_valid] : -1;
+
     RowAssigner rows(cloud, valid, params, row_);
     std::string why;
     if (is_auto || source == "field") {
         if (rows.fromField(why)) {
             source_ = RingSource::Field;
             rows_ = params.num_rings;
+            sweep_start_col_ = first_col;
             return;
         }
         if (!is_auto) throw InputError("ring_source = field: " + why);
@@ -560,6 +575,7 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
         if (rows.fromScanOrder(is_auto, why)) {
             source_ = RingSource::ScanOrder;
             rows_ = params.num_rings;
+            sweep_start_col_ = first_col;
             return;
         }
         if (!is_auto) throw InputError("ring_source = scan_order: " + why);
@@ -569,6 +585,8 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     rows.fromTable(table_deg_, table_mid_, table_mids_quantised_, row_of_elevation_);
     source_ = RingSource::Table;
     rows_ = static_cast<int>(table_deg_.size());
+    // Storage order alone does not say where the sweep began: only the time field does.
+    if (cloud.hasTime()) sweep_start_col_ = first_col;
 }
 
 }  // namespace travel

@@ -19,6 +19,33 @@
 //   with its first runs across the 0/360-degree seam; this also covers rings with one or two
 //   runs. (Runs are not linked vertically across the seam: an object seen on one side of it
 //   in one ring and only on the other side in the next stays split; rare, not handled.)
+// * Vertical merges scale with range (extends the vertical update, Sec. IV-C): points of rows
+//   k apart are at least R * (angle between the rows) apart even on one vertical surface: 0.15 m
+//   per HDL-64E ring at 25 m, 0.66 m across T_ring = 3 lower-block rings, 0.5 m (T_vert
+//   itself) per ring at 57 m. So T_vert is the separation beyond that forced one: two runs
+//   merge when their points are closer than sqrt(T_vert^2 + (R * dtheta)^2), R the upper
+//   run's farthest range, dtheta the rows' mean elevations apart. A vertical surface with
+//   missing rings (dark paint, windows) stays one object at 25-80 m; at 10 m the bound grows by
+//   at most 2 cm per ring.
+// * Seam linkage (extends the circular linkage): a spinning sensor sees the two sides of the
+//   column where its sweep started 0.1 s apart, so an object moving relative to it (oncoming
+//   traffic, or anything while the ego vehicle drives) is cut there and its halves are shifted
+//   by v * 0.1 s (1.5 m at 15 m/s), beyond T_horz. Runs of a ring ending and starting within
+//   kSeamColumns of RangeImage::sweepStartColumn() merge when their facing ends are closer than
+//   seam_max_shift. Only runs touching that one column qualify, so the looser distance cannot
+//   chain objects elsewhere.
+// * See-through linkage (windows; extends the horizontal update): rays through a car's glass
+//   return from its seats or far side, 1-2.5 m behind the body around the window, beyond
+//   T_horz and T_vert: on KITTI a car at 28 m kept its windows' returns as two clusters (a
+//   tenth of its points). A run is seen through a gap when the nearest points before and after
+//   it on its ring (within kEnclosureWalk points) are in front of all its points by more than
+//   T_horz, belong to one cluster, are at most occlusion_max_gap apart, and its farthest point
+//   is at most see_through_depth behind them. A cluster joins the enclosing one when all its
+//   runs seen through gaps are seen through that one cluster's, it lies inside that cluster's
+//   range-image box, behind its nearest point, is smaller, and at least one of its runs has
+//   the enclosing cluster's points in front of it within two rows above or below (a window is
+//   a hole, closed by roof and door; the gap between fence panels is a slot, open above and
+//   below: a car behind a fence, seen only through the slots, stays apart).
 // * Merges through union-find with path halving; the root of a set is its smallest run index.
 #include "travel/RunClustering.hpp"
 
@@ -100,6 +127,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     // Runs: a few points each on real scans; more grow the buffers once.
     const std::size_t runs = points / 4 + 1;
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
+    prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
@@ -143,10 +171,20 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     }
     for (uint32_t k = 0; k < total; ++k)
         range_[k] = std::sqrt(px_[k] * px_[k] + py_[k] * py_[k] + pz_[k] * pz_[k]);
+    // Each row's elevation: the range-weighted mean sine of its points' elevations.
+    row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
+    for (int r = 0; r < rows; ++r) {
+        float sum_z = 0.f, sum_range = 0.f;
+        for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k)
+            sum_z += pz_[k], sum_range += range_[k];
+        if (sum_range > 0.f)
+            row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
+    }
 
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
-    run_row_.clear(), parent_.clear(), run_last_range_.clear();
+    run_row_.clear(), parent_.clear(), run_last_range_.clear(), run_far_range_.clear();
+    run_near_range_.clear();
     run_size_.clear(), run_first_input_.clear();
     for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
     point_run_.resize(total), next_in_run_.resize(total);
@@ -156,6 +194,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const float occlusion2 =
         static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
+    const int seam_col = image.sweepStartColumn();
+    const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
@@ -184,6 +224,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 growBox(joined, k);
                 run_last_[joined] = k;
                 run_last_range_[joined] = range;
+                run_far_range_[joined] = std::max(run_far_range_[joined], range);
+                run_near_range_[joined] = std::min(run_near_range_[joined], range);
                 run_col_end_[joined] = sorted_col_[k];
                 ++run_size_[joined];
                 run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
@@ -197,6 +239,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             }
             const int run = static_cast<int>(run_first_.size());
             run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
+            run_far_range_.push_back(range), run_near_range_.push_back(range);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
             run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
@@ -208,6 +251,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
+        if (seam_col >= 0 && seam2 > 0.f)
+            linkAcrossSeam(static_cast<int>(row_runs_begin_[r]),
+                           static_cast<int>(run_first_.size()), seam_col, cols, seam2);
         // Circular linkage across the seam: the runs still open at the end of the ring (the
         // ones that reach it, whenever they started) against the ring's first runs.
         const int begin = static_cast<int>(row_runs_begin_[r]);
@@ -219,6 +265,33 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                     unite(late, early);
     }
     row_runs_begin_[rows] = static_cast<uint32_t>(run_first_.size());
+}
+
+// Runs [begin, end) of one ring: those whose last column is within kSeamColumns of the seam
+// against those whose first column is, the second starting after the first ends (cyclically).
+void RunClustering::linkAcrossSeam(int begin, int end, int seam_col, int cols, float max_dist2) {
+    // KITTI's rings start up to 0.5 deg (3 columns of 2048) after the cut.
+    constexpr int kSeamColumns = 4;
+    const auto cyclic = [cols](int a, int b) {  // b - a, wrapped into [-cols / 2, cols / 2)
+        int d = (b - a) % cols;
+        d += d < -cols / 2 ? cols : 0;
+        d -= d >= cols / 2 ? cols : 0;
+        return d;
+    };
+    seam_before_.clear(), seam_after_.clear();
+    for (int run = begin; run < end; ++run) {
+        if (std::abs(cyclic(seam_col, run_col_end_[run])) <= kSeamColumns)
+            seam_before_.push_back(run);
+        if (std::abs(cyclic(seam_col, run_col_begin_[run])) <= kSeamColumns)
+            seam_after_.push_back(run);
+    }
+    for (const int a : seam_before_)
+        for (const int b : seam_after_) {
+            const int gap = cyclic(run_col_end_[a], run_col_begin_[b]);
+            if (a != b && gap > 0 && gap <= 2 * kSeamColumns &&
+                dist2(run_last_[a], run_first_[b]) < max_dist2)
+                unite(a, b);
+        }
 }
 
 bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) const {
@@ -239,8 +312,9 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) 
 void RunClustering::vertical(const Params& params) {
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
     const int ext = params.vertical_column_extension;
-    const float merge2 =
+    const float t_vert2 =
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
+    float merge2 = t_vert2;  // for the pair of rows being compared, see the file comment
     // The long runs of each row (see kLongSpan).
     long_runs_.clear(), long_reach_.clear();
     long_runs_begin_.assign(rows + 1, 0);
@@ -286,6 +360,10 @@ void RunClustering::vertical(const Params& params) {
             for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
             for (int rr = r - 1; rr >= lowest; --rr) {
+                const float beam_gap = run_far_range_[a] *
+                                       std::fabs(row_elevation_[r] - row_elevation_[rr]) /
+                                       float(r - rr);
+                merge2 = t_vert2 + beam_gap * beam_gap;
                 uint32_t& start = window_start_[r - 1 - rr];
                 const uint32_t end = row_runs_begin_[rr + 1];
                 while (start < end && run_col_begin_[start] < lo - kLongSpan) ++start;
@@ -307,6 +385,111 @@ void RunClustering::vertical(const Params& params) {
                 }
             }
         }
+    }
+    linkSeenThrough(params);
+}
+
+int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo, uint32_t row_hi,
+                                 float nearer_than) {
+    // The points in front of the run before and after it on its ring, nearest first, skipping
+    // background seen through the far window as well and occluders in front of the object.
+    // Roots from run_root_ (no merge happens while runs are looked at).
+    constexpr int kEnclosureWalk = 10;
+    uint32_t before[kEnclosureWalk];
+    int num_before = 0;
+    for (uint32_t k = first; k > row_lo && first - k < kEnclosureWalk;)
+        if (range_[--k] < nearer_than) before[num_before++] = k;
+    if (num_before == 0) return -1;
+    for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
+        if (range_[++k] >= nearer_than) continue;
+        const int root = run_root_[point_run_[k]];
+        for (int i = 0; i < num_before; ++i)
+            if (run_root_[point_run_[before[i]]] == root) {
+                enclosure_left_ = before[i], enclosure_right_ = k;
+                return root;
+            }
+    }
+    return -1;
+}
+
+bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, float nearer_than) {
+    // A window is a hole in a surface, closed by the roof above and the door below (one of
+    // them may be hidden by an occluder); a gap between fence panels is a slot, open above
+    // and below: what is seen through it shows there too, or nothing does.
+    constexpr int kRowsLooked = 2;
+    for (int dr = -kRowsLooked; dr <= kRowsLooked; ++dr) {
+        const int rr = r + dr;
+        if (dr == 0 || rr < 0 || rr >= rows) continue;
+        const int32_t* col = sorted_col_.data();
+        uint32_t k = static_cast<uint32_t>(
+            std::lower_bound(col + row_begin_[rr], col + row_begin_[rr + 1], run_col_begin_[b]) -
+            col);
+        for (; k < row_begin_[rr + 1] && col[k] <= run_col_end_[b]; ++k)
+            if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
+    }
+    return false;
+}
+
+void RunClustering::linkSeenThrough(const Params& params) {
+    const float depth = static_cast<float>(params.see_through_depth);
+    if (depth <= 0.f) return;
+    const float t_horz = static_cast<float>(params.horizontal_merge_dist);
+    const float max_gap2 = static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
+    const int num_runs = static_cast<int>(run_first_.size());
+    const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
+    // Per root: the cluster its runs are seen through (kNone: none; kConflict: more than one)
+    // and whether one of those runs is closed above or below by it.
+    constexpr int32_t kNone = -1, kConflict = -2;
+    enclosure_.assign(static_cast<std::size_t>(num_runs), kNone);
+    closed_.assign(static_cast<std::size_t>(num_runs), 0);
+    run_root_.resize(static_cast<std::size_t>(num_runs));
+    for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
+    bool any = false;
+    for (int r = 0; r < rows; ++r) {
+        const uint32_t row_lo = row_begin_[r], row_hi = row_begin_[r + 1];
+        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b) {
+            const int root = run_root_[b];
+            int32_t& state = enclosure_[root];
+            if (state == kConflict) continue;
+            const float nearer_than = run_near_range_[b] - t_horz;
+            const int enclosing =
+                enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than);
+            if (enclosing < 0 || enclosing == root) continue;
+            const uint32_t left = enclosure_left_, right = enclosure_right_;
+            if (dist2(left, right) > max_gap2 ||
+                run_far_range_[b] > std::max(range_[left], range_[right]) + depth)
+                continue;
+            if (state == kNone) state = enclosing, any = true;
+            if (state != enclosing) {
+                state = kConflict;
+                continue;
+            }
+            if (!closed_[root])
+                closed_[root] = closedAboveOrBelow(r, rows, b, enclosing, nearer_than);
+        }
+    }
+    if (!any) return;
+    // Range-image boxes, nearest ranges and sizes of the clusters involved only.
+    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
+    for (int run = 0; run < num_runs; ++run)
+        if (enclosure_[run] >= 0 && closed_[run]) {
+            root_box_[run].involved = true;
+            root_box_[enclosure_[run]].involved = true;
+        }
+    for (int run = 0; run < num_runs; ++run) {
+        RootBox& box = root_box_[run_root_[run]];
+        if (box.involved)
+            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
+                    run_size_[run]);
+    }
+    // A cluster joins the one it is seen through when it lies inside that one's range-image
+    // box, behind it, and is smaller: the seats and far side of a car seen through its windows.
+    for (int run = 0; run < num_runs; ++run) {
+        if (enclosure_[run] < 0 || !closed_[run]) continue;
+        const RootBox &f = root_box_[run], &e = root_box_[enclosure_[run]];
+        if (f.row_lo >= e.row_lo && f.row_hi <= e.row_hi && f.col_lo >= e.col_lo &&
+            f.col_hi <= e.col_hi && f.nearest > e.nearest && f.points < e.points)
+            unite(run, enclosure_[run]);
     }
 }
 

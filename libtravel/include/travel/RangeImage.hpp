@@ -12,6 +12,11 @@
 //   table       nearest beam of an elevation table (params.elevation_table: a sensor's table, or
 //               num_rings uniform bins), by the point's elevation in the sensor frame.
 // Columns: azimuth in the sensor frame, num_columns bins over 360 degrees, column 0 at -180.
+// Sweep start: the column where the sweep began (and ended 0.1 s later): of the earliest valid
+// point by the time field, else of the first valid point in storage order when that order is
+// the sweep's (rings from the field or the scan order: KITTI .bin files start at azimuth 0,
+// ahead), else unknown (-1). Objects moving relative to the sensor are seen displaced across
+// it (RunClustering's seam linkage).
 #pragma once
 
 #include <cstdint>
@@ -41,12 +46,15 @@ class RangeImage {
     int rows() const { return rows_; }
     int cols() const { return cols_; }
     RingSource source() const { return source_; }
+    /// Column where the sweep started and ended (see the file comment), -1 when unknown.
+    int sweepStartColumn() const { return sweep_start_col_; }
     const std::vector<int16_t>& row() const { return row_; }
     const std::vector<int32_t>& col() const { return col_; }
 
   private:
     int rows_ = 0, cols_ = 0;
     RingSource source_ = RingSource::None;
+    int sweep_start_col_ = -1;
     std::vector<int16_t> row_;
     std::vector<int32_t> col_;
     std::vector<double> table_deg_;              // cached elevation table

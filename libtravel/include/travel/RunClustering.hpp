@@ -6,7 +6,9 @@
 // union-find, so no label is ever stale (the reference relabels only the two runs in hand).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "travel/Clusters.hpp"
@@ -25,13 +27,18 @@ class RunClustering {
     /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
     /// every ring, with skipped linkage (a point joins the most recent of the last T_skip + 1
     /// open runs whose end lies within T_horz, or, across an occlusion, within
-    /// occlusion_max_gap) and circular linkage across the 0/360-degree seam.
+    /// occlusion_max_gap), circular linkage across the 0/360-degree seam, and seam linkage
+    /// (seam_max_shift) across the column where the sweep started (image.sweepStartColumn()),
+    /// where a moving object is seen 0.1 s apart.
     void horizontal(const AlignedCloud& cloud, const RangeImage& image,
                     const std::vector<PointClass>& labels, const Params& params);
 
     /// Stage 2 (Sec. IV-C): each run is compared with the runs of the T_ring rings below it
     /// whose column span, widened by T_ext, overlaps its own; they merge when two of their
-    /// points in nearby columns are closer than T_vert (3-D).
+    /// points in nearby columns are closer than T_vert beyond one ring's spacing at their range
+    /// (sqrt(T_vert^2 + (R dtheta)^2)). Then see-through linkage (a
+    /// cluster seen only through the gaps of another, within see_through_depth behind it,
+    /// joins it: a car's seats and far side seen through its windows).
     void vertical(const Params& params);
 
     /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
@@ -52,6 +59,30 @@ class RunClustering {
 
   private:
     int find(int run);
+    void linkAcrossSeam(int begin, int end, int seam_col, int cols, float max_dist2);
+    void linkSeenThrough(const Params& params);
+    // The cluster (root) of the nearest pair of points nearer than `nearer_than` before and
+    // after the run [first, last] on its row [row_lo, row_hi), within a few points, -1 if
+    // none; the pair in enclosure_left_ / enclosure_right_.
+    int enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo, uint32_t row_hi,
+                      float nearer_than);
+    uint32_t enclosure_left_ = 0, enclosure_right_ = 0;
+    // Row r's run b has a point of cluster `root` nearer than `nearer_than` in its columns on
+    // one of the two rows above or below.
+    bool closedAboveOrBelow(int r, int rows, uint32_t b, int root, float nearer_than);
+    struct RootBox {
+        int row_lo = 1 << 30, row_hi = -1, col_lo = 1 << 30, col_hi = -1;
+        float nearest = std::numeric_limits<float>::infinity();
+        uint32_t points = 0;
+        bool involved = false;  // a fragment seen through a cluster's gaps, or that cluster
+        void add(int row, int col_begin, int col_end, float range, uint32_t size) {
+            row_lo = std::min(row_lo, row), row_hi = std::max(row_hi, row);
+            col_lo = std::min(col_lo, col_begin), col_hi = std::max(col_hi, col_end);
+            nearest = std::min(nearest, range), points += size;
+        }
+    };
+    std::vector<RootBox> root_box_;
+    std::vector<uint8_t> closed_;  // per root, see linkSeenThrough()
     void unite(int a, int b);
     bool runsTouch(int a, int b, int column_window, float max_dist2) const;
     float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
@@ -68,7 +99,8 @@ class RunClustering {
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
     std::vector<uint32_t> run_first_, run_last_;
-    std::vector<float> run_last_range_;
+    std::vector<float> run_last_range_, run_far_range_, run_near_range_;  // last, max, min
+    std::vector<float> row_elevation_;  // mean elevation of each row [rad]
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
     std::vector<uint32_t> run_size_, run_first_input_;  // points, smallest input index
@@ -102,7 +134,9 @@ class RunClustering {
     }
     void growBox(int run, uint32_t k);  // adds sorted point k to the run's box
     std::vector<int32_t> parent_;
-    std::vector<int32_t> open_runs_;  // of the ring being swept, most recent last
+    std::vector<int32_t> open_runs_;                 // of the ring being swept, most recent last
+    std::vector<int32_t> seam_before_, seam_after_;  // runs ending / starting at the seam
+    std::vector<int32_t> enclosure_;  // per root: the cluster it is seen through, see .cpp
 
     // Id assignment scratch.
     std::vector<uint32_t> root_size_, root_first_;

@@ -241,6 +241,9 @@ void Scene::validate() const {
         require(box.length > 0.0 && box.width > 0.0 && box.height > 0.0,
                 "box dimensions must be > 0");
         require(box.clearance >= 0.0, "box clearance must be >= 0");
+        require(box.return_fraction >= 0.0 && box.return_fraction <= 1.0,
+                "box return_fraction must be in [0, 1]");
+        require(box.velocity.allFinite(), "box velocity must be finite");
     }
     for (const Pole& pole : poles) {
         require(pole.id > 0, "pole instance id must be > 0");

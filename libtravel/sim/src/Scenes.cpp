@@ -194,6 +194,57 @@ Scene carBesideSensor(double gap) {
     return scene;
 }
 
+std::vector<Box> realisticCar(uint32_t id, const Eigen::Vector2d& centre, double yaw_deg,
+                              double paint_return, double tyre_return,
+                              const Eigen::Vector2d& velocity) {
+    const double c = std::cos(yaw_deg * kDegToRad), s = std::sin(yaw_deg * kDegToRad);
+    std::vector<Box> parts;
+    // A part in car coordinates: u along the car (front +), v across, z from z0 to z1.
+    const auto part = [&](double u, double v, double length, double width, double z0, double z1,
+                          double return_fraction) {
+        Box b = box(id, centre.x() + c * u - s * v, centre.y() + s * u + c * v, length, width,
+                    z1 - z0, yaw_deg);
+        b.clearance = z0;
+        b.velocity = velocity;
+        b.return_fraction = return_fraction;
+        parts.push_back(b);
+    };
+    part(0.0, 0.0, 4.5, 1.8, 0.35, 0.95, paint_return);  // body: bonnet, doors, boot
+    for (double u : {-1.35, 1.35})
+        for (double v : {-0.78, 0.78}) part(u, v, 0.65, 0.22, 0.0, 0.65, tyre_return);
+    // Cabin u in [-1.5, 0.7]: A, B and C pillars on both sides, windows between them.
+    for (double v : {-0.75, 0.75}) {
+        part(0.6, v, 0.2, 0.1, 0.95, 1.38, paint_return);
+        part(-0.4, v, 0.12, 0.1, 0.95, 1.38, paint_return);
+        part(-1.4, v, 0.2, 0.1, 0.95, 1.38, paint_return);
+    }
+    part(-0.4, 0.0, 2.2, 1.6, 1.38, 1.48, paint_return);  // roof
+    part(-0.1, 0.0, 0.35, 1.4, 0.5, 1.2, 1.0);            // front seat backs
+    part(-1.15, 0.0, 0.4, 1.4, 0.5, 1.15, 1.0);           // rear bench
+    return parts;
+}
+
+Scene realisticCarBesideSensor(double gap) {
+    Scene scene;
+    scene.boxes = realisticCar(1, {0.0, gap + 0.9}, 0.0, 0.7, 0.5);
+    return scene;
+}
+
+Scene parkedCarsAt20To25Metres() {
+    Scene scene;
+    for (const std::vector<Box>& parts :
+         {realisticCar(1, {-3.0, 21.0}, 0.0), realisticCar(2, {5.0, 23.5}, 0.0, 0.7, 0.5),
+          realisticCar(3, {-24.0, -4.0}, 90.0)})
+        scene.boxes.insert(scene.boxes.end(), parts.begin(), parts.end());
+    return scene;
+}
+
+Scene movingCarAcrossSweepStart(double distance, double yaw_deg, const Eigen::Vector2d& velocity) {
+    Scene scene;
+    scene.boxes = realisticCar(1, {distance, 0.0}, yaw_deg, 1.0, 1.0, velocity);
+    return scene;
+}
+
 Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,
                                double roll_deg, double pitch_deg, double yaw_deg) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

@@ -28,6 +28,8 @@ struct PlacedBox {
     double cos_yaw, sin_yaw;
     double half_length, half_width;
     ZRange z;
+    Eigen::Vector2d velocity{0.0, 0.0};
+    double return_fraction = 1.0;
 };
 
 struct PlacedPole {
@@ -40,7 +42,18 @@ struct PlacedPole {
 struct ObjectHit {
     double t = kInfinity;
     uint32_t id = 0;
+    double return_fraction = 1.0;
 };
+
+// A fixed pseudo-random number in [0, 1) for a ray and an object (splitmix64 finaliser).
+double rayHash(int ring, int column, uint32_t id) {
+    uint64_t z = (uint64_t(uint32_t(ring)) << 40) ^ (uint64_t(uint32_t(column)) << 16) ^ id;
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    return double(z >> 11) * (1.0 / 9007199254740992.0);
+}
 
 // The range [t_near, t_far] of the ray inside the slab lo <= origin + t dir <= hi.
 bool clipToSlab(double origin, double dir, double lo, double hi, double& t_near, double& t_far) {
@@ -52,9 +65,12 @@ bool clipToSlab(double origin, double dir, double lo, double hi, double& t_near,
     return t_near <= t_far;
 }
 
-// The first t > 0 where the ray enters the box (or leaves it, from a sensor inside).
-double intersect(const PlacedBox& box, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) {
-    const double px = origin.x() - box.centre.x(), py = origin.y() - box.centre.y();
+// The first t > 0 where the ray enters the box (or leaves it, from a sensor inside), the box
+// being where it is at `time` into the sweep.
+double intersect(const PlacedBox& box, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                 double time) {
+    const Eigen::Vector2d centre = box.centre + time * box.velocity;
+    const double px = origin.x() - centre.x(), py = origin.y() - centre.y();
     const double local_x = box.cos_yaw * px + box.sin_yaw * py;
     const double local_y = -box.sin_yaw * px + box.cos_yaw * py;
     const double dir_x = box.cos_yaw * dir.x() + box.sin_yaw * dir.y();
@@ -211,7 +227,8 @@ struct PreparedScene {
         for (const Box& box : world.boxes) {
             const double yaw = box.yaw_deg * kDegToRad;
             boxes.push_back({box.id, box.centre, std::cos(yaw), std::sin(yaw), 0.5 * box.length,
-                             0.5 * box.width, world.placement(box)});
+                             0.5 * box.width, world.placement(box), box.velocity,
+                             box.return_fraction});
         }
         for (const Wall& wall : world.walls) {
             const Eigen::Vector2d along = wall.b - wall.a;
@@ -226,15 +243,16 @@ struct PreparedScene {
         bounds.build(world, sensor_position.head<2>(), max_range);
     }
 
-    ObjectHit nearestObject(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) const {
+    ObjectHit nearestObject(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                            double time) const {
         ObjectHit hit;
         for (const PlacedBox& box : boxes) {
-            const double t = intersect(box, origin, dir);
-            if (t < hit.t) hit = {t, box.id};
+            const double t = intersect(box, origin, dir, time);
+            if (t < hit.t) hit = {t, box.id, box.return_fraction};
         }
         for (const PlacedPole& pole : poles) {
             const double t = intersect(pole, origin, dir);
-            if (t < hit.t) hit = {t, pole.id};
+            if (t < hit.t) hit = {t, pole.id, 1.0};
         }
         return hit;
     }
@@ -431,7 +449,9 @@ void scanColumns(const Scene& scene, const LidarModel& model,
                                          sin_elevation[ring]);
         const Eigen::Vector3d dir = rotation * dir_sensor;
 
-        const ObjectHit object = world.nearestObject(origin, dir);
+        const double time_in_sweep =
+            model.sweep_period * column / static_cast<double>(model.columns);
+        const ObjectHit object = world.nearestObject(origin, dir, time_in_sweep);
         double t_hit = kInfinity;
         uint8_t cls = NoReturn;
         uint32_t instance = 0;
@@ -447,11 +467,14 @@ void scanColumns(const Scene& scene, const LidarModel& model,
             cls = NonGround;
             instance = object.id;
             intensity = kObjectIntensity;
+            // A dark surface absorbs the ray: no return (nothing behind it is seen either).
+            if (object.return_fraction < 1.0 &&
+                rayHash(ring, column, object.id) >= object.return_fraction)
+                cls = NoReturn, instance = 0;
         }
         if (cls != NoReturn && t_hit < model.min_range) cls = NoReturn, instance = 0;
 
-        const float time =
-            static_cast<float>(model.sweep_period * column / static_cast<double>(model.columns));
+        const float time = static_cast<float>(time_in_sweep);
         if (cls == NoReturn) {
             if (!model.emit_no_returns) return;
             cloud.push_back(0.f, 0.f, 0.f, 0.f);

@@ -63,6 +63,12 @@ struct Box {
     double width = 1.8;
     double height = 1.5;
     double clearance = 0.0;  ///< [m] gap under the box; 0 = rests on (and sinks into) the ground
+    /// [m/s] in xy: the box moves during the sweep, its centre at centre + velocity * t for the
+    /// column fired at time t (so a moving car is seen skewed, as by a real spinning LiDAR).
+    Eigen::Vector2d velocity{0.0, 0.0};
+    /// Share of the rays hitting the box that return (dark paint, tyres: < 1); the others give
+    /// no return. Which rays drop is a fixed hash of (ring, column, id): deterministic.
+    double return_fraction = 1.0;
 };
 
 /// Vertical cylinder standing on the terrain. Top = h(centre) + height.

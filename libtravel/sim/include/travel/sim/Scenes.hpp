@@ -9,6 +9,9 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
+#include <vector>
+
 namespace travel::sim {
 
 /// Sensor height above the ground the scenes are designed for (KITTI's HDL-64E) [m].
@@ -57,6 +60,30 @@ constexpr double kOffRoadSensorHeight = 1.3;
 /// Flat ground and one 4.5 x 1.8 x 1.5 m car (id 1) parked beside the sensor along +x, its
 /// near side `gap` metres from the sensor (y = gap .. gap + 1.8).
 Scene carBesideSensor(double gap);
+
+/// A car that is not a box (4.5 x 1.8 m, 1.48 m high), all parts instance `id`: a body from
+/// 0.35 to 0.95 m (bonnet and boot at its top), four tyres, a cabin of six pillars under a roof
+/// (1.38-1.48 m) with glass windows - gaps through which rays reach the seats (front seat backs
+/// and rear bench up to 1.2 m) or pass on to the far side and beyond. `paint_return` < 1 is a
+/// dark paint (body and roof) and `tyre_return` the tyres' share of returned rays.
+/// `velocity` [m/s] moves every part during the sweep (see Box::velocity).
+std::vector<Box> realisticCar(uint32_t id, const Eigen::Vector2d& centre, double yaw_deg,
+                              double paint_return = 1.0, double tyre_return = 1.0,
+                              const Eigen::Vector2d& velocity = Eigen::Vector2d::Zero());
+
+/// Flat ground and one realisticCar (id 1, dark paint: 70 % of its body's rays return, 50 % of
+/// its tyres') parked along +x beside the sensor, its near side `gap` metres away. What split a
+/// real car 2-3 m beside the sensor into six clusters (windows, missing returns).
+Scene realisticCarBesideSensor(double gap);
+
+/// Flat ground with parked realistic cars at 20-25 m: side on at 21 m on the left (id 1), a
+/// dark one beyond it (id 2), end on 24 m behind (id 3). What lost a third of its points.
+Scene parkedCarsAt20To25Metres();
+
+/// Flat ground and one realisticCar (id 1) moving at `velocity` [m/s], centred `distance` metres
+/// ahead (+x) with yaw `yaw_deg`: it straddles the sweep's start/end azimuth, so the scan sees
+/// its two halves 0.1 s apart (what split moving cars at 20-25 m in two).
+Scene movingCarAcrossSweepStart(double distance, double yaw_deg, const Eigen::Vector2d& velocity);
 
 /// Sensor pose in the world: `height` above the terrain at (x, y), attitude
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll) (angles in degrees).

@@ -1,0 +1,191 @@
+// Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
+//
+// The object-segmentation failures seen on scans the project was never tuned on (issue 14),
+// reproduced with realistic cars (sim::realisticCar: body, tyres, pillars, roof, seats, glass
+// windows that rays pass through, dark paint with missing returns) and exact ground truth:
+//   - a car 2-3 m beside a 64-beam and a 128-beam sensor (split into six clusters on real data);
+//   - parked cars at 20-25 m (a third of a car lost: its far side seen through the windows);
+//   - moving cars at 20-25 m straddling the sweep's start/end azimuth (split in two).
+// Each test prints its figures (--gtest_filter=HardObjects.*) and asserts the level reached,
+// with margin.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <initializer_list>
+#include <map>
+
+#include "SceneMetrics.hpp"
+#include "travel/Pipeline.hpp"
+#include "travel/sim/Scenes.hpp"
+#include "travel/sim/SyntheticLidar.hpp"
+
+namespace travel {
+namespace {
+
+struct Sensor {
+    const char* name;
+    sim::LidarModel model;
+    Params params;
+};
+
+// The KITTI HDL-64E and an OS1-128, both 1.73 m up. min_range 1 m: a car 2 m away is nearer
+// than KITTI's 2.7 m self-return cut.
+Sensor hdl64() {
+    Params p;
+    p.sensor_height = sim::kSensorHeight;
+    p.min_range = 1.0;
+    return {"hdl64", sim::LidarModel::hdl64(), p};
+}
+
+Sensor os128() {
+    Sensor s = hdl64();
+    s.name = "os128";
+    s.model = sim::LidarModel::os128();
+    s.params.num_rings = 128;
+    s.params.num_columns = 1024;
+    s.params.elevation_table = "os128";
+    return s;
+}
+
+struct ObjectRun {
+    sim::Scan scan;
+    Result result;
+};
+
+ObjectRun run(const sim::Scene& scene, Sensor sensor) {
+    sensor.model.range_noise_sigma = 0.01;
+    sensor.model.seed = 7;
+    sensor.model.max_range = sensor.params.max_range;
+    ObjectRun r;
+    r.scan =
+        sim::scan(scene, sensor.model, sim::sensorPoseAt(scene, 0, 0, sim::kSensorHeight, 0, 0, 0));
+    Pipeline pipeline(sensor.params);
+    pipeline.process(r.scan.cloud, {}, r.result);
+    return r;
+}
+
+test::ObjectScore score(const ObjectRun& r, uint32_t id, const char* what) {
+    const test::ObjectScore s =
+        test::scoreObject(r.scan.gt, r.result.labels, r.result.cluster_id, id);
+    std::printf("%-30s car %u coverage %.3f purity %.3f (%zu non-ground points)\n", what, id,
+                s.coverage, s.purity, s.points);
+    return s;
+}
+
+TEST(HardObjects, RealisticCarBesideA64And128BeamSensor) {
+    for (const Sensor& sensor : {hdl64(), os128()}) {
+        for (const double gap : {2.0, 3.0}) {
+            SCOPED_TRACE(sensor.name);
+            char what[64];
+            std::snprintf(what, sizeof what, "car_beside_%.0fm_%s", gap, sensor.name);
+            const test::ObjectScore car =
+                score(run(sim::realisticCarBesideSensor(gap), sensor), 1, what);
+            // 1.000 before and after the see-through / seam / range-scaled merges: with every
+            // point valid, windows and missing returns do not split a car this near.
+            EXPECT_GE(car.coverage, 0.98);
+            EXPECT_GE(car.purity, 0.99);
+        }
+    }
+}
+
+// As the instance evaluator counts: all the instance's points, whatever their class (invalid
+// ones too), against its best cluster. Also how many clusters hold >= 10 of its points.
+double evaluatorCoverage(const ObjectRun& r, uint32_t id, std::size_t& clusters) {
+    std::map<uint32_t, std::size_t> per_cluster;
+    std::size_t points = 0;
+    for (std::size_t i = 0; i < r.scan.gt.size(); ++i) {
+        if (r.scan.gt.instance[i] != id) continue;
+        ++points;
+        if (r.result.cluster_id[i]) ++per_cluster[r.result.cluster_id[i]];
+    }
+    std::size_t best = 0;
+    clusters = 0;
+    for (const auto& [cluster, count] : per_cluster) {
+        best = std::max(best, count);
+        clusters += count >= 10;
+    }
+    return points ? double(best) / double(points) : 0.0;
+}
+
+TEST(HardObjects, RealisticCarBesideTheKittiSensor) {
+    Sensor kitti = hdl64();
+    kitti.params.min_range = 2.7;  // the KITTI preset's self-return cut
+    for (const double gap : {2.0, 2.5, 3.0}) {
+        const ObjectRun r = run(sim::realisticCarBesideSensor(gap), kitti);
+        std::size_t clusters = 0;
+        const double coverage = evaluatorCoverage(r, 1, clusters);
+        std::printf("car_beside_%.1fm_kitti             coverage %.3f (all points), %zu clusters\n",
+                    gap, coverage, clusters);
+        // Not the object stage: min_range = 2.7 m, a sphere, drops the car's nearest points
+        // (invalid) and cuts it into its front, its rear and what the windows show. Holds
+        // today's level: 0.234 (4 clusters) at 2 m, 0.849 at 2.5 m, 1.0 at 3 m.
+        EXPECT_GE(coverage, gap < 2.25 ? 0.2 : gap < 2.75 ? 0.8 : 0.95);
+    }
+}
+
+// See-through linkage must not take an object behind a fence for the fence's far side: a car
+// 1.2 m behind a fence of 1 m panels with 0.3 m gaps (one cluster: the gaps are below T_horz;
+// the cabin shows above the fence), and
+// behind a 1.8 m one (seen only through the gaps).
+TEST(HardObjects, CarBehindAFenceWithGapsStaysApart) {
+    for (const double fence_height : {1.0, 1.8}) {
+        sim::Scene scene;
+        for (int k = 0; k < 16; ++k) {
+            sim::Wall panel;
+            panel.id = 10 + k;
+            panel.a = {-11.0 + 1.3 * k, 8.0};
+            panel.b = {-10.0 + 1.3 * k, 8.0};
+            panel.thickness = 0.05;
+            panel.height = fence_height;
+            scene.walls.push_back(panel);
+        }
+        scene.boxes = sim::realisticCar(1, {0.0, 10.1}, 0.0);
+        const ObjectRun r = run(scene, hdl64());
+        char what[64];
+        std::snprintf(what, sizeof what, "behind_%.1fm_fence", fence_height);
+        const test::ObjectScore car = score(r, 1, what);
+        EXPECT_GE(car.purity, 0.99);
+    }
+}
+
+TEST(HardObjects, ParkedCarsAt20To25Metres) {
+    for (const Sensor& sensor : {hdl64(), os128()}) {
+        SCOPED_TRACE(sensor.name);
+        const ObjectRun r = run(sim::parkedCarsAt20To25Metres(), sensor);
+        for (uint32_t id = 1; id <= 3; ++id) {
+            char what[64];
+            std::snprintf(what, sizeof what, "parked_20_25m_%s", sensor.name);
+            const test::ObjectScore car = score(r, id, what);
+            // Before see-through linkage: hdl64 0.978 / 0.927 / 0.973, os128 0.946 / 0.896 /
+            // 0.904 (the far side seen through the windows apart); after: 0.978 / 0.978 / 0.973,
+            // 0.966 / 0.910 / 0.930.
+            EXPECT_GE(car.coverage, sensor.model.numBeams() == 64 ? 0.95 : 0.88);
+            EXPECT_GE(car.purity, 0.99);
+        }
+    }
+}
+
+TEST(HardObjects, MovingCarsAcrossTheSweepStart) {
+    struct Case {
+        const char* name;
+        double distance, yaw_deg;
+        Eigen::Vector2d velocity;
+    };
+    for (const Case& c : {Case{"oncoming_15mps_21m", 21.0, 0.0, {-15.0, 0.0}},
+                          Case{"crossing_10mps_23m", 23.0, 90.0, {0.0, -10.0}},
+                          Case{"receding_8mps_25m", 25.0, 10.0, {7.9, 1.4}}}) {
+        SCOPED_TRACE(c.name);
+        const ObjectRun r =
+            run(sim::movingCarAcrossSweepStart(c.distance, c.yaw_deg, c.velocity), hdl64());
+        const test::ObjectScore car = score(r, 1, c.name);
+        // Before: 0.461 (oncoming: its halves 1.5 m apart across the sweep start), 0.971,
+        // 0.613 (receding, end on: the rear face and the cabin behind the boot 0.5-0.52 m
+        // apart, just beyond T_vert). After seam linkage and range-scaled vertical merges:
+        // 0.907, 0.995, 0.930.
+        EXPECT_GE(car.coverage, 0.88);
+        EXPECT_GE(car.purity, 0.99);
+    }
+}
+
+}  // namespace
+}  // namespace travel
