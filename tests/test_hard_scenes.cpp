@@ -158,6 +158,21 @@ TEST(HardScenes, FaceFeetJoinTheClusterOfTheirFace) {
     expectSummariesMatchIds(joined, pipeline.aligned());
 }
 
+TEST(HardScenes, FaceRuleKeepsKerbsAndStepsGround) {
+    // 0.15 m kerbs under raised sidewalks and 0.15 m steps (0.4 m deep): ground in the truth
+    // (and in SemanticKITTI). The default 0.25 m rise is above them: the rule unlabels none.
+    Params off = hdl64Params();
+    off.vertical_face_min_rise = 0.0;
+    const SceneRun with_rule =
+        segment(sim::kerbsAndSteps(), sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight);
+    const SceneRun without =
+        segment(sim::kerbsAndSteps(), sim::LidarModel::hdl64(), off, sim::kSensorHeight);
+    std::size_t unlabelled = 0;
+    for (std::size_t i = 0; i < with_rule.result.labels.size(); ++i)
+        unlabelled += with_rule.result.labels[i] != without.result.labels[i];
+    EXPECT_EQ(unlabelled, 0u);
+}
+
 TEST(HardScenes, FaceRuleIgnoresInvalidPoints) {
     // Invalid points have no range-image cell: they change nothing in the face rule.
     const Params params = hdl64Params();

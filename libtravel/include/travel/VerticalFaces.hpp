@@ -49,7 +49,11 @@ class VerticalFaces {
     }
 
   private:
-    std::vector<int32_t> cell_point_;   // rows x cols: the first point of each cell, or -1
+    struct Cell {
+        float z;        // height of the cell's point, NaN if empty
+        int32_t point;  // the nearest (xy) point of the cell, or -1
+    };
+    std::vector<Cell> cells_;           // rows x cols
     std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
     std::vector<uint32_t> foot_faces_;  // the face point of each
 };
