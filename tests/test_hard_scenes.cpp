@@ -73,6 +73,7 @@ Params os64Params() {
     p.elevation_table = "uniform";
     p.min_elevation_deg = -16.6;
     p.max_elevation_deg = 16.6;
+    p.cluster_face_feet = true;
     return p;
 }
 
@@ -224,6 +225,15 @@ TEST(HardScenes, OffRoadMeadowWithBushesAndTrunks) {
     EXPECT_GE(run.scores.f1(), 0.99);
     EXPECT_GE(run.scores.precision(), 0.999);
     EXPECT_LE(bushes.first + trunks.first, 10u);
+    // cluster_face_feet (os64): the feet join their bush or trunk, no non-ground object point
+    // is left unclustered.
+    std::size_t unclustered = 0;
+    for (std::size_t i = 0; i < run.scan.gt.size(); ++i)
+        unclustered += run.scan.gt.instance[i] != 0 &&
+                       run.result.labels[i] == PointClass::NonGround &&
+                       run.result.cluster_id[i] == 0;
+    std::printf("  non-ground bush and trunk points without a cluster %zu\n", unclustered);
+    EXPECT_EQ(unclustered, 0u);
 }
 
 TEST(HardScenes, CarTwoMetresFromA64And128BeamSensor) {
