@@ -113,10 +113,10 @@ struct AutoReal {
     X(bool, label_with_node_plane, false, "", 0, 1,                                               \
       "A point of a node the search accepted is also ground when it lies within eps3 of the "     \
       "node's own plane (keeps both sides of kerbs and steps that TTMF smooths)")                 \
-    X(double, vertical_face_min_rise, 0.25, "m", 0.0, 100.0,                                      \
+    X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this, up to a non-ground point, is the foot of a wall, fence, trunk or bush face: "   \
-      "NonGround (extends eq. 5). Above kerbs (0.10-0.20 m); 0 = off")                            \
+      "NonGround (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")      \
     X(bool, cluster_face_feet, false, "", 0, 1,                                                   \
       "Each face foot joins the object cluster of its face (else it is left unclustered: on "     \
       "SemanticKITTI the feet at car sills are often labelled road/parking, see docs)")           \

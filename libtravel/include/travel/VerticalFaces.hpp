@@ -10,7 +10,8 @@
 // the next steeper than 45 degrees, steeper than any traversable slope) by more than
 // vertical_face_min_rise, up to a non-ground point of eq. 5 (the face), is the face's foot:
 // NonGround. Kerbs (0.10-0.20 m, ground in SemanticKITTI and in the synthetic truth) rise less
-// than the default 0.25 m and are kept.
+// than the 0.25 m the os64 preset sets, and are kept. Off by default on roads (docs/parameters.md,
+// "Off-road driving": unclustered feet, purity, speed).
 // The object segmentation (Sec. IV) builds its runs without the feet, so that feet of
 // neighbouring objects never link at ground level. With cluster_face_feet each foot then joins
 // the cluster of its own face (RunClustering::attachFeet); without it (the default) the feet
