@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "SceneMetrics.hpp"
 #include "travel/Pipeline.hpp"
@@ -61,6 +62,13 @@ Params hdl64Params() {
     return p;
 }
 
+// With the face rule as the os64 preset sets it (off by default, see docs/parameters.md).
+Params faceParams() {
+    Params p = hdl64Params();
+    p.vertical_face_min_rise = 0.25;
+    return p;
+}
+
 // OS1-64 (uniform +-16.6 deg, 64 x 2048), as share/presets/os64.yaml, at 1.3 m.
 Params os64Params() {
     Params p;
@@ -73,31 +81,109 @@ Params os64Params() {
     p.min_elevation_deg = -16.6;
     p.max_elevation_deg = 16.6;
     p.vertical_face_min_rise = 0.25;
+    p.cluster_face_feet = true;
     return p;
 }
 
 TEST(HardScenes, FenceAndWallBasesBesideARoad) {
-    Params params = hdl64Params();
-    params.vertical_face_min_rise = 0.25;  // off: fence 1194 / 20514 as ground, F1 0.977
+    // Face rule off: F1 0.977, fence points as ground 1194 / 20514.
     const SceneRun run =
-        segment(sim::fencesAndWalls(), sim::LidarModel::hdl64(), params, sim::kSensorHeight);
+        segment(sim::fencesAndWalls(), sim::LidarModel::hdl64(), faceParams(), sim::kSensorHeight);
     print("fences_walls", run.scores);
     const auto fence = objectPointsAsGround(run, 1, 199);
     const auto wall = objectPointsAsGround(run, 200, 201);
     std::printf("  fence points as ground %zu / %zu, wall+footing %zu / %zu\n", fence.first,
                 fence.second, wall.first, wall.second);
-    EXPECT_GE(run.scores.f1(), 0.98);
+    EXPECT_GE(run.scores.f1(), 0.982);  // 0.985
     EXPECT_EQ(run.scores.high_obstacle_as_ground, 0u);
-    // The lowest centimetres of the mesh (5.8 % of the fence without the face rule). The
-    // footing's flat top, a 0.6 m strip 0.3 m up, stays ground: not fixed yet (4.3 %).
-    EXPECT_LE(fence.first, 0.005 * fence.second);
-    EXPECT_LE(wall.first, 0.06 * wall.second);
+    // The lowest centimetres of the mesh (5.8 % of the fence without the face rule; 3 points
+    // with it). Not fixed: the lowest 0.17 m of the footing's front face (4.3 % of wall +
+    // footing): the footing is 0.3 m high and its flat top (0.175 m deep before the wall)
+    // breaks the steep climb, so those points rise less than 0.25 m up to it.
+    EXPECT_LE(fence.first, 10u);
+    EXPECT_LE(wall.first, 0.05 * wall.second);
+}
+
+// Every point of a cluster is counted in its summary, which bounds them all.
+void expectSummariesMatchIds(const Result& result, const AlignedCloud& aligned) {
+    std::vector<uint32_t> count(result.clusters.size(), 0);
+    for (std::size_t i = 0; i < result.cluster_id.size(); ++i) {
+        const uint32_t id = result.cluster_id[i];
+        if (id == 0) continue;
+        ASSERT_LE(id, result.clusters.size());
+        ++count[id - 1];
+        const ClusterSummary& c = result.clusters[id - 1];
+        const Eigen::Vector3f p(aligned.x[i], aligned.y[i], aligned.z[i]);
+        EXPECT_TRUE((p.array() >= c.aabb_min.array()).all() &&
+                    (p.array() <= c.aabb_max.array()).all())
+            << "point " << i << " outside the box of cluster " << id;
+        EXPECT_GE(c.first_point, 0u);
+        EXPECT_LE(c.first_point, i);
+    }
+    for (std::size_t k = 0; k < result.clusters.size(); ++k)
+        EXPECT_EQ(result.clusters[k].num_points, count[k]) << "cluster " << k + 1;
+}
+
+TEST(HardScenes, FaceFeetJoinTheClusterOfTheirFace) {
+    // cluster_face_feet: the feet the face rule unlabels join their face's cluster (they take
+    // no part in the run merging). Without it they stay unclustered.
+    Params params = faceParams();
+    sim::LidarModel model = sim::LidarModel::hdl64();
+    model.range_noise_sigma = 0.01, model.seed = 7, model.max_range = params.max_range;
+    const sim::Scan scan =
+        sim::scan(sim::fencesAndWalls(), model,
+                  sim::sensorPoseAt(sim::fencesAndWalls(), 0, 0, sim::kSensorHeight, 0, 0, 0));
+    Result apart, joined;
+    Pipeline(params).process(scan.cloud, {}, apart);
+    params.cluster_face_feet = true;
+    Pipeline pipeline(params);
+    pipeline.process(scan.cloud, {}, joined);
+    ASSERT_EQ(apart.labels, joined.labels);  // clustering only
+    // Each object's id: the cluster of most of its non-foot points.
+    std::map<uint32_t, std::map<uint32_t, std::size_t>> votes;
+    std::size_t feet = 0;
+    for (std::size_t i = 0; i < scan.gt.size(); ++i) {
+        if (joined.labels[i] != PointClass::NonGround || scan.gt.instance[i] == 0) continue;
+        if (apart.cluster_id[i] == 0) continue;
+        ++votes[scan.gt.instance[i]][joined.cluster_id[i]];
+    }
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < scan.gt.size(); ++i) {
+        const uint32_t object = scan.gt.instance[i];
+        // A foot: non-ground, and unclustered only without cluster_face_feet.
+        if (joined.labels[i] != PointClass::NonGround || apart.cluster_id[i] != 0 || object == 0)
+            continue;
+        ++feet;
+        uint32_t face_id = 0;
+        std::size_t best = 0;
+        for (const auto& [id, n] : votes[object])
+            if (n > best) best = n, face_id = id;
+        wrong += joined.cluster_id[i] == 0 || joined.cluster_id[i] != face_id;
+    }
+    std::printf("face feet %zu, not in their object's cluster %zu\n", feet, wrong);
+    EXPECT_GT(feet, 1000u);  // the fence mesh's and the footing's lowest rows
+    EXPECT_EQ(wrong, 0u);
+    expectSummariesMatchIds(joined, pipeline.aligned());
+}
+
+TEST(HardScenes, FaceRuleKeepsKerbsAndStepsGround) {
+    // 0.15 m kerbs under raised sidewalks and 0.15 m steps (0.4 m deep): ground in the truth
+    // (and in SemanticKITTI). A 0.25 m rise is above them: the rule unlabels none.
+    Params off = hdl64Params();
+    off.vertical_face_min_rise = 0.0;
+    const SceneRun with_rule =
+        segment(sim::kerbsAndSteps(), sim::LidarModel::hdl64(), faceParams(), sim::kSensorHeight);
+    const SceneRun without =
+        segment(sim::kerbsAndSteps(), sim::LidarModel::hdl64(), off, sim::kSensorHeight);
+    std::size_t unlabelled = 0;
+    for (std::size_t i = 0; i < with_rule.result.labels.size(); ++i)
+        unlabelled += with_rule.result.labels[i] != without.result.labels[i];
+    EXPECT_EQ(unlabelled, 0u);
 }
 
 TEST(HardScenes, FaceRuleIgnoresInvalidPoints) {
     // Invalid points have no range-image cell: they change nothing in the face rule.
-    Params params = hdl64Params();
-    params.vertical_face_min_rise = 0.25;
+    const Params params = faceParams();
     const SceneRun run =
         segment(sim::fencesAndWalls(), sim::LidarModel::hdl64(), params, sim::kSensorHeight);
     const PointCloud& clean = run.scan.cloud;
@@ -180,10 +266,20 @@ TEST(HardScenes, OffRoadMeadowWithBushesAndTrunks) {
     const auto trunks = objectPointsAsGround(run, 11, 16);
     std::printf("  bush points as ground %zu / %zu, trunk %zu / %zu\n", bushes.first, bushes.second,
                 trunks.first, trunks.second);
-    // Without the face rule: precision 0.991, 402 bush and 113 trunk points as ground.
-    EXPECT_GE(run.scores.f1(), 0.985);
-    EXPECT_GE(run.scores.precision(), 0.998);
-    EXPECT_LE(bushes.first + trunks.first, 20u);
+    // Face rule 0.25 m (os64 preset). Without it: precision 0.991, 402 bush and 113 trunk points
+    // as ground. With it: F1 0.9946, precision 1.000, 2 bush points.
+    EXPECT_GE(run.scores.f1(), 0.99);
+    EXPECT_GE(run.scores.precision(), 0.999);
+    EXPECT_LE(bushes.first + trunks.first, 10u);
+    // cluster_face_feet (os64): the feet join their bush or trunk, no non-ground object point
+    // is left unclustered.
+    std::size_t unclustered = 0;
+    for (std::size_t i = 0; i < run.scan.gt.size(); ++i)
+        unclustered += run.scan.gt.instance[i] != 0 &&
+                       run.result.labels[i] == PointClass::NonGround &&
+                       run.result.cluster_id[i] == 0;
+    std::printf("  non-ground bush and trunk points without a cluster %zu\n", unclustered);
+    EXPECT_EQ(unclustered, 0u);
 }
 
 TEST(HardScenes, CarTwoMetresFromA64And128BeamSensor) {

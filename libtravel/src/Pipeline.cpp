@@ -41,10 +41,10 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
-    if (params_.cluster_objects) {
+    if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
         range_image_.reserve(points);
+    if (params_.cluster_objects)
         clustering_.reserve(points, points);  // the range image has beams x columns cells too
-    }
 }
 
 Pipeline Pipeline::settledCopy() const {
@@ -160,6 +160,9 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     vertical_faces_.setFaceFeet(result.labels, PointClass::NonGround);
     t.horizontal = msSince(clock);
     clustering_.vertical(params_);
+    if (params_.cluster_face_feet)
+        clustering_.attachFeet(aligned_, range_image_, vertical_faces_.feet(),
+                               vertical_faces_.footFaces());
     t.vertical = msSince(clock);
     clustering_.assignIds(params_, result.cluster_id);
     clustering_.summarize(field_, result.terrain, result.clusters);

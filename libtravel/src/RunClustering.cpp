@@ -493,6 +493,35 @@ void RunClustering::linkSeenThrough(const Params& params) {
     }
 }
 
+void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& image,
+                               const std::vector<uint32_t>& feet,
+                               const std::vector<uint32_t>& faces) {
+    const std::vector<int16_t>& row = image.row();
+    const std::vector<int32_t>& col = image.col();
+    const std::size_t cols = static_cast<std::size_t>(image.cols());
+    for (std::size_t f = 0; f < feet.size(); ++f) {
+        // The face point's sorted position: after the counting sort in horizontal(),
+        // key_count_[key] is the end of cell `key`'s slots and key_count_[key - 1] its start.
+        const uint32_t face = faces[f];
+        const std::size_t key = static_cast<std::size_t>(row[face]) * cols + col[face];
+        uint32_t slot = key == 0 ? 0 : key_count_[key - 1];
+        const uint32_t end = key_count_[key];
+        while (slot < end && sorted_[slot] != face) ++slot;
+        if (slot == end) continue;  // not clustered (cannot happen for a non-ground face)
+        // Appended after the sorted points (row_begin_ does not cover them): only the id
+        // assignment and the summaries read them.
+        const uint32_t foot = feet[f];
+        const int32_t run = point_run_[slot];
+        sorted_.push_back(foot), sorted_col_.push_back(col[foot]);
+        px_.push_back(cloud.x[foot]), py_.push_back(cloud.y[foot]), pz_.push_back(cloud.z[foot]);
+        range_.push_back(
+            std::sqrt(px_.back() * px_.back() + py_.back() * py_.back() + pz_.back() * pz_.back()));
+        point_run_.push_back(run), next_in_run_.push_back(kEndOfRun);
+        ++run_size_[run];
+        run_first_input_[run] = std::min(run_first_input_[run], foot);
+    }
+}
+
 void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& cluster_id) {
     const std::size_t num_runs = run_first_.size();
     // Root of every run once (not a find() per point), then sizes and first points per root

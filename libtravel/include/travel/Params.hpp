@@ -120,8 +120,11 @@ struct AutoReal {
       "grass, verges and kerbs stay below. Leave-one-out over the dev frames: 0.5")               \
     X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
-      "than this is on a wall, fence, trunk or bush face: NonGround, left out of the object "     \
-      "clusters (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")       \
+      "than this, up to a non-ground point, is the foot of a wall, fence, trunk or bush face: "   \
+      "NonGround (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")      \
+    X(bool, cluster_face_feet, false, "", 0, 1,                                                   \
+      "Each face foot joins the object cluster of its face (else it is left unclustered: on "     \
+      "SemanticKITTI the feet at car sills are often labelled road/parking, see docs)")           \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
       "Points more than this below the refitted plane are outliers (below-ground noise)")         \
     /* ---- Range image (Sec. IV-A) ---- */                                                       \

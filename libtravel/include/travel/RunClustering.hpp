@@ -41,6 +41,13 @@ class RunClustering {
     /// joins it: a car's seats and far side seen through its windows).
     void vertical(const Params& params);
 
+    /// After vertical(), before assignIds(): each point feet[k] (left out of horizontal(), see
+    /// VerticalFaces) joins the run of its face point faces[k], a clustered point, so it gets
+    /// the face's cluster id and counts in its summary. Feet take no part in the run merging:
+    /// two objects never link through their feet.
+    void attachFeet(const AlignedCloud& cloud, const RangeImage& image,
+                    const std::vector<uint32_t>& feet, const std::vector<uint32_t>& faces);
+
     /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
     /// 1, 2, ... in the order of their first point (smallest input index): the same input
     /// gives the same ids. Other points keep id 0.

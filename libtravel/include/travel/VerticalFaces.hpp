@@ -8,11 +8,16 @@
 // in range, rising little; rings that hit a vertical face land at the same range, rising
 // rho dtheta each. A ground-labelled point from which the column climbs steeply (each ring to
 // the next steeper than 45 degrees, steeper than any traversable slope) by more than
-// vertical_face_min_rise is on a face, not on the ground, and is relabelled NonGround.
-// Kerbs (0.10-0.20 m, ground in SemanticKITTI and in the synthetic truth) rise less than the
-// 0.25 m the os64 preset sets, and are kept. Off by default: the feet are left out of the object
-// segmentation (see setFaceFeet), which breaks "every non-ground point is clustered"; joining
-// each foot to the cluster of the face above it needs RunClustering's summaries to follow.
+// vertical_face_min_rise, up to a non-ground point of eq. 5 (the face), is the face's foot:
+// NonGround. Kerbs (0.10-0.20 m, ground in SemanticKITTI and in the synthetic truth) rise less
+// than the 0.25 m the os64 preset sets, and are kept. Off by default on roads (docs/parameters.md,
+// "Off-road driving": unclustered feet, purity, speed).
+// The object segmentation (Sec. IV) builds its runs without the feet, so that feet of
+// neighbouring objects never link at ground level. With cluster_face_feet each foot then joins
+// the cluster of its own face (RunClustering::attachFeet); without it (the default) the feet
+// stay unclustered: on the SemanticKITTI dev frames about 9 % of the feet are road, parking or
+// sidewalk points of the ground truth, mostly at car sills and tyres, and joined to the cars
+// they lower the purity 0.990 -> 0.986 (docs/parameters.md, "Off-road driving").
 #pragma once
 
 #include <array>
@@ -33,19 +38,27 @@ class VerticalFaces {
     void unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage& image, const Params& params,
                          std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts);
 
-    void clear() { face_feet_.clear(); }
+    void clear() { face_feet_.clear(), foot_faces_.clear(); }
 
-    /// Gives the points relabelled by the last unlabelFaceFeet() the class `c`. The object
-    /// segmentation sees them as Ground: the face above each is clustered without it, and feet
-    /// of neighbouring objects do not join them at ground level (measured: with the feet, the
-    /// purity on the SemanticKITTI dev frames drops from 0.990 to 0.986).
+    /// The points relabelled by the last unlabelFaceFeet(), and for each the point of its face
+    /// (a non-ground point of eq. 5 in the same range-image column, above it).
+    const std::vector<uint32_t>& feet() const { return face_feet_; }
+    const std::vector<uint32_t>& footFaces() const { return foot_faces_; }
+
+    /// Gives the points relabelled by the last unlabelFaceFeet() the class `c` (Ground while
+    /// the runs are built without them, NonGround again afterwards).
     void setFaceFeet(std::vector<PointClass>& labels, PointClass c) const {
         for (const uint32_t i : face_feet_) labels[i] = c;
     }
 
   private:
-    std::vector<int32_t> cell_point_;  // rows x cols: the first point of each cell, or -1
-    std::vector<uint32_t> face_feet_;  // points relabelled by the last unlabelFaceFeet()
+    struct Cell {
+        float z;        // height of the cell's point, NaN if empty
+        int32_t point;  // the nearest (xy) point of the cell, or -1
+    };
+    std::vector<Cell> cells_;           // rows x cols
+    std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
+    std::vector<uint32_t> foot_faces_;  // the face point of each
 };
 
 }  // namespace travel
