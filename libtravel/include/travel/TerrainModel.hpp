@@ -80,8 +80,8 @@ inline int triangleNodeOfGridCoords(float gx, float gy, int cells_per_side) {
     const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
     const float u = gx - (static_cast<float>(ix) + 0.5f);
     const float v = gy - (static_cast<float>(iy) + 0.5f);
-    // The offset along the nearer diagonal's axis decides the side: one blend, one compare
-    // (this form vectorises to a few instructions a point).
+    // The larger offset (|u| >= |v|: the +-x triangles) and its sign pick the triangle; as one
+    // blend and one compare, embed's loop needs a few instructions a point.
     const bool horizontal = std::fabs(u) >= std::fabs(v);
     const float along = horizontal ? u : v;
     return 4 * (iy * cells_per_side + ix) + (horizontal ? 0 : 1) + (along < 0.f ? 2 : 0);
