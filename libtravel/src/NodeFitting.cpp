@@ -23,9 +23,10 @@ struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
 };
 
-// Moments of the points for which `inside(x, y, z)` holds. Branch-free with kLanes independent
-// float accumulators per moment, so the compiler vectorises the lane loop; the coordinates are
-// node-local (a few metres), where float sums keep ample precision. Lanes are summed in double.
+// Moments of the points for which `inside(x, y, z)` is 1 (it returns 1 or 0). Branch-free with
+// kLanes independent float accumulators per moment, so the compiler vectorises the lane loop; the
+// coordinates are node-local (a few metres), where float sums keep ample precision. Lanes are
+// summed in double.
 template <class Predicate>
 Moments accumulate(const float* x, const float* y, const float* z, uint32_t count,
                    const float origin[3], Predicate inside) {
@@ -40,7 +41,7 @@ Moments accumulate(const float* x, const float* y, const float* z, uint32_t coun
             px[l] = x[i + l] - origin[0], py[l] = y[i + l] - origin[1];
             pz[l] = z[i + l] - origin[2];
         }
-        for (int l = 0; l < kLanes; ++l) m[l] = inside(px[l], py[l], pz[l]) ? 1.f : 0.f;
+        for (int l = 0; l < kLanes; ++l) m[l] = inside(px[l], py[l], pz[l]);
         for (int l = 0; l < kLanes; ++l) {
             const float mx = m[l] * px[l], my = m[l] * py[l], mz = m[l] * pz[l];
             n[l] += m[l], sx[l] += mx, sy[l] += my, sz[l] += mz;
@@ -50,7 +51,7 @@ Moments accumulate(const float* x, const float* y, const float* z, uint32_t coun
     }
     for (; i < count; ++i) {  // tail, into lane 0
         const float qx = x[i] - origin[0], qy = y[i] - origin[1], qz = z[i] - origin[2];
-        if (!inside(qx, qy, qz)) continue;
+        if (inside(qx, qy, qz) == 0.f) continue;
         n[0] += 1.f, sx[0] += qx, sy[0] += qy, sz[0] += qz;
         sxx[0] += qx * qx, sxy[0] += qx * qy, sxz[0] += qx * qz;
         syy[0] += qy * qy, syz[0] += qy * qz, szz[0] += qz * qz;
@@ -63,16 +64,24 @@ Moments accumulate(const float* x, const float* y, const float* z, uint32_t coun
     return mo;
 }
 
-// The seeds: points within the band [lo, hi) around the LPR (node-local z).
+// The selections below return 1.f (selected) or 0.f: accumulate() multiplies by them.
+
+// The seeds: points within the band [lo, hi) around the LPR (node-local z). A product of two
+// 0/1 selects: `pz >= lo && pz < hi` compiled to two unpredictable branches per point and kept
+// accumulate()'s lane loop from vectorising.
 struct SeedBand {
     float lo, hi;
-    bool operator()(float, float, float pz) const { return pz >= lo && pz < hi; }
+    float operator()(float, float, float pz) const {
+        return (pz >= lo ? 1.f : 0.f) * (pz < hi ? 1.f : 0.f);
+    }
 };
 
 // The refit's points: s.p + d_local < plane_inlier_dist, written as s.p < limit.
 struct BelowPlane {
     float a, b, c, limit;
-    bool operator()(float px, float py, float pz) const { return a * px + b * py + c * pz < limit; }
+    float operator()(float px, float py, float pz) const {
+        return a * px + b * py + c * pz < limit ? 1.f : 0.f;
+    }
 };
 
 // True when `before` and `after` select the same points (same node-local coordinates as

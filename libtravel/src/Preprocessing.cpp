@@ -5,6 +5,7 @@
 #include "travel/Preprocessing.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace travel {
 namespace {
@@ -15,6 +16,39 @@ constexpr double kDegToRad = M_PI / 180.0;
 Eigen::Matrix3d withoutYaw(const Eigen::Matrix3d& R) {
     const double yaw = std::atan2(R(1, 0), R(0, 0));
     return Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
+}
+
+/// The points without deskew: validity and rotation per point, branch-free (the loop
+/// vectorises). kRotate = false copies the coordinates unchanged (R = I: a product by 1 and sums
+/// with 0 would turn -0 into +0). The same values as the general loop in preprocess().
+template <bool kRotate>
+std::size_t alignWithoutDeskew(const PointCloud& cloud, const Eigen::Matrix3f& R, float min_r2,
+                               float max_r2, AlignedCloud& out) {
+    const std::size_t n = cloud.size();
+    const float* cx = cloud.x.data();
+    const float* cy = cloud.y.data();
+    const float* cz = cloud.z.data();
+    float* ox = out.x.data();
+    float* oy = out.y.data();
+    float* oz = out.z.data();
+    uint8_t* valid = out.valid.data();
+    const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
+    const float r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
+    std::size_t num_valid = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const float px = cx[i], py = cy[i], pz = cz[i];
+        const float r2 = px * px + py * py + pz * pz;
+        // As in preprocess(): finite (NaN and inf propagate into r2), not zero, in the window.
+        const bool ok = (std::fabs(r2) <= std::numeric_limits<float>::max()) & (r2 > 0.f) &
+                        (r2 >= min_r2) & (r2 <= max_r2);
+        const float ax = kRotate ? r00 * px + r01 * py + r02 * pz : px;
+        const float ay = kRotate ? r10 * px + r11 * py + r12 * pz : py;
+        const float az = kRotate ? r20 * px + r21 * py + r22 * pz : pz;
+        ox[i] = ok ? ax : 0.f, oy[i] = ok ? ay : 0.f, oz[i] = ok ? az : 0.f;
+        valid[i] = ok ? 1 : 0;
+        num_valid += ok ? 1 : 0;
+    }
+    return num_valid;
 }
 
 }  // namespace
@@ -71,6 +105,11 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     const float min_r2 = static_cast<float>(params.min_range * params.min_range);
     const float max_r2 = static_cast<float>(params.max_range * params.max_range);
     const bool rotate = !R.isIdentity(0.f);
+    if (!deskew) {
+        out.num_valid = rotate ? alignWithoutDeskew<true>(cloud, R, min_r2, max_r2, out)
+                               : alignWithoutDeskew<false>(cloud, R, min_r2, max_r2, out);
+        return;
+    }
     const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
     const float r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
     std::size_t num_valid = 0;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -79,10 +80,11 @@ inline int triangleNodeOfGridCoords(float gx, float gy, int cells_per_side) {
     const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
     const float u = gx - (static_cast<float>(ix) + 0.5f);
     const float v = gy - (static_cast<float>(iy) + 0.5f);
-    const float abs_u = u < 0.f ? -u : u, abs_v = v < 0.f ? -v : v;
-    const int horizontal = abs_u >= abs_v ? 1 : 0;
-    const int negative = horizontal ? (u < 0.f ? 1 : 0) : (v < 0.f ? 1 : 0);
-    return 4 * (iy * cells_per_side + ix) + (1 - horizontal) + 2 * negative;
+    // The larger offset (|u| >= |v|: the +-x triangles) and its sign pick the triangle; as one
+    // blend and one compare, embed's loop needs a few instructions a point.
+    const bool horizontal = std::fabs(u) >= std::fabs(v);
+    const float along = horizontal ? u : v;
+    return 4 * (iy * cells_per_side + ix) + (horizontal ? 0 : 1) + (along < 0.f ? 2 : 0);
 }
 
 /// Geometry of the tri-grid (paper Sec. III-B): a square of cells_per_side^2 cells of side r,

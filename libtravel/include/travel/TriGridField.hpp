@@ -69,7 +69,8 @@ class TriGridField {
     std::vector<Neighbours> neighbours_;
     std::vector<int32_t> vertices_;  // 3 per node
 
-    std::vector<int32_t> point_node_;  // per input point, -1 = not embedded
+    std::vector<uint32_t> point_node_;  // per input point; numNodes() = not embedded
+    std::vector<uint32_t> rank_;        // per input point: earlier points of its node
     std::vector<uint32_t> node_start_;
     std::vector<float> sx_, sy_, sz_;
     std::vector<uint32_t> order_;
