@@ -140,6 +140,10 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const std::string out = flags.outputPath();
     const travel::ScanFormat format = flags.scanFormat();
+    // -j N: the other workers' segmenters are built on their own threads meanwhile.
+    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
+        jobs.count() - 1,
+        [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
     // Configuration errors first, before any file is touched.
     std::unique_ptr<travel::eval::Segmenter> segmenter =
         travel::eval::makeSegmenter(method.getValue(), params);
@@ -147,13 +151,6 @@ int run(int argc, char** argv) {
     std::vector<std::string> files = scans.files;
     const std::string labels_dir = labels.isSet() ? labels.getValue() : scans.labels_dir;
     max_frames.keepFirst(files);
-    // -j N: the other workers' segmenters are built on their own threads meanwhile (none for
-    // fewer frames than workers: a single scan builds one pipeline).
-    const unsigned workers = static_cast<unsigned>(
-        std::max<std::size_t>(1, std::min<std::size_t>(jobs.count(), files.size())));
-    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
-        workers - 1,
-        [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
     Tracking tracking;
     if (track.getValue()) {
         if (method.getValue() != "travel" && method.getValue() != "travel-no-ttmf")
@@ -317,8 +314,8 @@ int run(int argc, char** argv) {
         progress.update(f + 1);
     };
     travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
-        files.size(), workers, [&] { return !segmenters[0]->independentFrames(); }, fork, produce,
-        consume);
+        files.size(), jobs.count(), [&] { return !segmenters[0]->independentFrames(); }, fork,
+        produce, consume);
     progress.finish();
     if (track_png.isSet()) {
         travel::viz::TrackPictureOptions picture;
