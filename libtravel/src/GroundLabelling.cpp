@@ -79,7 +79,8 @@ bool onClearNeighbourPlane(const TriGridField& field, const TerrainModel& model,
         if ((other.mean.head<2>() - Eigen::Vector2f(x, y)).squaredNorm() > max_dist2) continue;
         const float e =
             other.normal.x() * x + other.normal.y() * y + other.normal.z() * z + other.d;
-        if (e >= -outlier_dist && e < ground_dist) return true;
+        if (classifyByPlaneDistance(e, ground_dist, outlier_dist) == PointClass::Ground)
+            return true;
     }
     return false;
 }
