@@ -19,6 +19,14 @@
 namespace travel {
 namespace {
 
+// The per-point loops are inlined into fitNodes(), so that its AVX2 clone (below) compiles them
+// for AVX2 too (a call would run the baseline code).
+#if defined(__GNUC__)
+#define TRAVEL_INTO_CALLER __attribute__((always_inline)) inline
+#else
+#define TRAVEL_INTO_CALLER inline
+#endif
+
 struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
 };
@@ -28,8 +36,8 @@ struct Moments {
 // coordinates are node-local (a few metres), where float sums keep ample precision. Lanes are
 // summed in double.
 template <class Predicate>
-Moments accumulate(const float* x, const float* y, const float* z, uint32_t count,
-                   const float origin[3], Predicate inside) {
+TRAVEL_INTO_CALLER Moments accumulate(const float* x, const float* y, const float* z,
+                                      uint32_t count, const float origin[3], Predicate inside) {
     constexpr int kLanes = 8;
     float n[kLanes] = {}, sx[kLanes] = {}, sy[kLanes] = {}, sz[kLanes] = {}, sxx[kLanes] = {},
           sxy[kLanes] = {}, sxz[kLanes] = {}, syy[kLanes] = {}, syz[kLanes] = {}, szz[kLanes] = {};
@@ -87,8 +95,9 @@ struct BelowPlane {
 // True when `before` and `after` select the same points (same node-local coordinates as
 // accumulate(), so the same float results). Stops at the first block of kLanes that differs.
 template <class Before, class After>
-bool sameSelection(const float* x, const float* y, const float* z, uint32_t count,
-                   const float origin[3], Before before, After after) {
+TRAVEL_INTO_CALLER bool sameSelection(const float* x, const float* y, const float* z,
+                                      uint32_t count, const float origin[3], Before before,
+                                      After after) {
     constexpr int kLanes = 8;
     uint32_t i = 0;
     for (; i + kLanes <= count; i += kLanes) {
@@ -152,7 +161,7 @@ BelowPlane belowPlane(const Plane& plane, double inlier_dist) {
 
 // The k lowest values seen so far, ascending, in lowest[0..k): a new value v sinks through them
 // as through a min/max network. A value not below lowest[k - 1] leaves them unchanged.
-inline void sinkThrough(float v, float* lowest, int k) {
+TRAVEL_INTO_CALLER void sinkThrough(float v, float* lowest, int k) {
     for (int j = 0; j < k; ++j) {
         const float lo = std::min(lowest[j], v);
         v = std::max(lowest[j], v);
@@ -170,7 +179,7 @@ double sumAscending(const float* lowest, int k) {
 // and its K values stay in registers. (An insertion sort degenerates here: sensors often deliver
 // a node's points in decreasing z, so every point would be inserted at the front.)
 template <int K>
-float lowestMean(const float* z, uint32_t count) {
+TRAVEL_INTO_CALLER float lowestMean(const float* z, uint32_t count) {
     float lowest[K];
     for (int j = 0; j < K; ++j) lowest[j] = std::numeric_limits<float>::infinity();
     for (uint32_t i = 0; i < count; ++i)
@@ -179,7 +188,7 @@ float lowestMean(const float* z, uint32_t count) {
 }
 
 // Mean of the k lowest values (LPR), k small.
-float lowestPointRepresentative(const float* z, uint32_t count, int k) {
+TRAVEL_INTO_CALLER float lowestPointRepresentative(const float* z, uint32_t count, int k) {
     constexpr int kMax = 64;
     k = std::min({k, static_cast<int>(count), kMax});
     switch (k) {  // the usual lpr_num_points; the same values and sum as the loop below
@@ -205,6 +214,13 @@ float lowestPointRepresentative(const float* z, uint32_t count, int k) {
 
 }  // namespace
 
+// Compiled twice, for AVX2 and for the x86-64 baseline, picked at load time: with AVX2 the
+// moment passes' 8 float lanes fit in one register per moment (on SSE2 they spill). AVX2 alone,
+// without FMA: every product and sum rounds as in the baseline build, so the planes, and the
+// labels, are bit-identical.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void fitNodes(const TriGridField& field, const Params& params, TerrainModel& model) {
     const float* sx = field.sx().data();
     const float* sy = field.sy().data();
