@@ -14,6 +14,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace travel {
@@ -31,31 +32,53 @@ struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
 };
 
+// kLanes float lanes as one value (GCC vector extension): one AVX register, or two SSE ones in
+// the baseline build. Lane l holds exactly what a scalar loop over lane l would: the same
+// products and sums in the same order (no FMA is generated for either target).
+// (These helpers are always inlined: GCC's note that passing 32-byte vectors by value changes
+// the ABI does not apply.)
+#pragma GCC diagnostic ignored "-Wpsabi"
+constexpr int kLanes = 8;
+typedef float Lanes __attribute__((vector_size(4 * kLanes)));
+typedef int32_t LaneMask __attribute__((vector_size(4 * kLanes)));
+
+TRAVEL_INTO_CALLER Lanes loadLanes(const float* p) {
+    Lanes v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+// 1.f where the mask is set, else +0.f (the scalar selections' values, bit for bit).
+TRAVEL_INTO_CALLER Lanes oneWhere(LaneMask mask) {
+    const Lanes one = {1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f};
+    LaneMask bits;
+    std::memcpy(&bits, &one, sizeof bits);
+    const LaneMask selected = mask & bits;
+    Lanes v;
+    std::memcpy(&v, &selected, sizeof v);
+    return v;
+}
+
 // Moments of the points for which `inside(x, y, z)` is 1 (it returns 1 or 0). Branch-free with
-// kLanes independent float accumulators per moment, so the compiler vectorises the lane loop; the
-// coordinates are node-local (a few metres), where float sums keep ample precision. Lanes are
-// summed in double.
+// kLanes independent float accumulators per moment (vector values kept in registers: as arrays
+// of lanes, GCC spilled them to the stack on every point block); the coordinates are node-local
+// (a few metres), where float sums keep ample precision. Lanes are summed in double.
 template <class Predicate>
 TRAVEL_INTO_CALLER Moments accumulate(const float* x, const float* y, const float* z,
                                       uint32_t count, const float origin[3], Predicate inside) {
-    constexpr int kLanes = 8;
-    float n[kLanes] = {}, sx[kLanes] = {}, sy[kLanes] = {}, sz[kLanes] = {}, sxx[kLanes] = {},
-          sxy[kLanes] = {}, sxz[kLanes] = {}, syy[kLanes] = {}, syz[kLanes] = {}, szz[kLanes] = {};
-    float px[kLanes], py[kLanes], pz[kLanes], m[kLanes];
+    Lanes n = {}, sx = {}, sy = {}, sz = {}, sxx = {}, sxy = {}, sxz = {}, syy = {}, syz = {},
+          szz = {};
     uint32_t i = 0;
     for (; i + kLanes <= count; i += kLanes) {
-        // Simple fixed-length lane loops: each one vectorises (SLP) on its own.
-        for (int l = 0; l < kLanes; ++l) {
-            px[l] = x[i + l] - origin[0], py[l] = y[i + l] - origin[1];
-            pz[l] = z[i + l] - origin[2];
-        }
-        for (int l = 0; l < kLanes; ++l) m[l] = inside(px[l], py[l], pz[l]);
-        for (int l = 0; l < kLanes; ++l) {
-            const float mx = m[l] * px[l], my = m[l] * py[l], mz = m[l] * pz[l];
-            n[l] += m[l], sx[l] += mx, sy[l] += my, sz[l] += mz;
-            sxx[l] += mx * px[l], sxy[l] += mx * py[l], sxz[l] += mx * pz[l];
-            syy[l] += my * py[l], syz[l] += my * pz[l], szz[l] += mz * pz[l];
-        }
+        const Lanes px = loadLanes(x + i) - origin[0], py = loadLanes(y + i) - origin[1];
+        const Lanes pz = loadLanes(z + i) - origin[2];
+        const Lanes m = inside.lanes(px, py, pz);
+        // The selected point q = m p (m is 0 or 1): q q^T is m p p^T bit for bit (a left-out
+        // point adds +-0 to sums that start at +0), and p is dead after q, which keeps the
+        // 10 accumulators and q in the 16 vector registers.
+        const Lanes qx = m * px, qy = m * py, qz = m * pz;
+        n += m, sx += qx, sy += qy, sz += qz;
+        sxx += qx * qx, sxy += qx * qy, sxz += qx * qz;
+        syy += qy * qy, syz += qy * qz, szz += qz * qz;
     }
     for (; i < count; ++i) {  // tail, into lane 0
         const float qx = x[i] - origin[0], qy = y[i] - origin[1], qz = z[i] - origin[2];
@@ -82,6 +105,7 @@ struct SeedBand {
     float operator()(float, float, float pz) const {
         return (pz >= lo ? 1.f : 0.f) * (pz < hi ? 1.f : 0.f);
     }
+    Lanes lanes(Lanes, Lanes, Lanes pz) const { return oneWhere((pz >= lo) & (pz < hi)); }
 };
 
 // The refit's points: s.p + d_local < plane_inlier_dist, written as s.p < limit.
@@ -89,6 +113,9 @@ struct BelowPlane {
     float a, b, c, limit;
     float operator()(float px, float py, float pz) const {
         return a * px + b * py + c * pz < limit ? 1.f : 0.f;
+    }
+    Lanes lanes(Lanes px, Lanes py, Lanes pz) const {
+        return oneWhere(a * px + b * py + c * pz < limit);
     }
 };
 
@@ -98,7 +125,6 @@ template <class Before, class After>
 TRAVEL_INTO_CALLER bool sameSelection(const float* x, const float* y, const float* z,
                                       uint32_t count, const float origin[3], Before before,
                                       After after) {
-    constexpr int kLanes = 8;
     uint32_t i = 0;
     for (; i + kLanes <= count; i += kLanes) {
         int differ = 0;
