@@ -37,7 +37,9 @@ struct Moments {
 // products and sums in the same order (no FMA is generated for either target).
 // (These helpers are always inlined: GCC's note that passing 32-byte vectors by value changes
 // the ABI does not apply.)
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 constexpr int kLanes = 8;
 typedef float Lanes __attribute__((vector_size(4 * kLanes)));
 typedef int32_t LaneMask __attribute__((vector_size(4 * kLanes)));
