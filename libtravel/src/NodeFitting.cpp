@@ -50,7 +50,7 @@ TRAVEL_INTO_CALLER Lanes loadLanes(const float* p) {
     return v;
 }
 // 1.f where the mask is set, else +0.f (the scalar selections' values, bit for bit).
-TRAVEL_INTO_CALLER Lanes oneWhere(LaneMask mask) {
+TRAVEL_INTO_CALLER Lanes oneWhere(const LaneMask& mask) {
     const Lanes one = {1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f};
     LaneMask bits;
     std::memcpy(&bits, &one, sizeof bits);
@@ -107,7 +107,9 @@ struct SeedBand {
     float operator()(float, float, float pz) const {
         return (pz >= lo ? 1.f : 0.f) * (pz < hi ? 1.f : 0.f);
     }
-    Lanes lanes(Lanes, Lanes, Lanes pz) const { return oneWhere((pz >= lo) & (pz < hi)); }
+    Lanes lanes(const Lanes&, const Lanes&, const Lanes& pz) const {
+        return oneWhere((pz >= lo) & (pz < hi));
+    }
 };
 
 // The refit's points: s.p + d_local < plane_inlier_dist, written as s.p < limit.
@@ -116,7 +118,7 @@ struct BelowPlane {
     float operator()(float px, float py, float pz) const {
         return a * px + b * py + c * pz < limit ? 1.f : 0.f;
     }
-    Lanes lanes(Lanes px, Lanes py, Lanes pz) const {
+    Lanes lanes(const Lanes& px, const Lanes& py, const Lanes& pz) const {
         return oneWhere(a * px + b * py + c * pz < limit);
     }
 };
