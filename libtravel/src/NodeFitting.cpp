@@ -17,16 +17,10 @@
 #include <cstring>
 #include <limits>
 
+#include "CpuDispatch.hpp"
+
 namespace travel {
 namespace {
-
-// The per-point loops are inlined into fitNodes(), so that its AVX2 clone (below) compiles them
-// for AVX2 too (a call would run the baseline code).
-#if defined(__GNUC__)
-#define TRAVEL_INTO_CALLER __attribute__((always_inline)) inline
-#else
-#define TRAVEL_INTO_CALLER inline
-#endif
 
 struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
@@ -244,13 +238,8 @@ TRAVEL_INTO_CALLER float lowestPointRepresentative(const float* z, uint32_t coun
 
 }  // namespace
 
-// Compiled twice, for AVX2 and for the x86-64 baseline, picked at load time: with AVX2 the
-// moment passes' 8 float lanes fit in one register per moment (on SSE2 they spill). AVX2 alone,
-// without FMA: every product and sum rounds as in the baseline build, so the planes, and the
-// labels, are bit-identical.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+// With AVX2 (CpuDispatch.hpp) the moment passes' 8 float lanes are one register per moment.
+TRAVEL_AVX2_CLONES
 void fitNodes(const TriGridField& field, const Params& params, TerrainModel& model) {
     const float* sx = field.sx().data();
     const float* sy = field.sy().data();

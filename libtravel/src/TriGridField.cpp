@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "CpuDispatch.hpp"
 #include "Prefault.hpp"
 
 namespace travel {
@@ -61,12 +62,8 @@ void TriGridField::vertexXY(int vertex, float& x, float& y) const {
     x = xy.x(), y = xy.y();
 }
 
-// Compiled twice, for AVX2 and for the x86-64 baseline, picked at load time (as fitNodes()): the
-// node loop computes 8 points per instruction instead of 4. No FMA: the same floats, the same
-// nodes.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+// With AVX2 (CpuDispatch.hpp) the node loop computes 8 points an instruction instead of 4.
+TRAVEL_AVX2_CLONES
 void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     const int num_nodes = numNodes();
     static_cast<TriGridGeometry&>(model) = geometry_;
