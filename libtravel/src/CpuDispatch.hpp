@@ -7,6 +7,9 @@
 // in the baseline build: the results are bit-identical on every CPU; only more lanes run at once.
 #pragma once
 
+#include <cstdint>
+#include <cstring>
+
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #define TRAVEL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
 #else
@@ -20,3 +23,35 @@
 #else
 #define TRAVEL_INTO_CALLER inline
 #endif
+
+namespace travel::detail {
+
+// kLanes float lanes as one value (GCC vector extension): one AVX register, or two SSE ones in
+// the baseline build. Lane l holds exactly what a scalar loop over lane l would: the same
+// products and sums in the same order (no FMA is generated for either target).
+// (Internal header, in this library's .cpp files only. These values never cross a non-inlined
+// call: GCC's note that passing 32-byte vectors by value changes the ABI does not apply.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+constexpr int kLanes = 8;
+typedef float Lanes __attribute__((vector_size(4 * kLanes)));
+typedef int32_t LaneMask __attribute__((vector_size(4 * kLanes)));
+
+TRAVEL_INTO_CALLER Lanes loadLanes(const float* p) {
+    Lanes v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+// 1.f where the mask is set, else +0.f (the scalar selections' values, bit for bit).
+TRAVEL_INTO_CALLER Lanes oneWhere(const LaneMask& mask) {
+    const Lanes one = {1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f};
+    LaneMask bits;
+    std::memcpy(&bits, &one, sizeof bits);
+    const LaneMask selected = mask & bits;
+    Lanes v;
+    std::memcpy(&v, &selected, sizeof v);
+    return v;
+}
+
+}  // namespace travel::detail

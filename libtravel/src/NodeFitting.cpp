@@ -22,37 +22,15 @@
 namespace travel {
 namespace {
 
+using detail::kLanes;
+using detail::LaneMask;
+using detail::Lanes;
+using detail::loadLanes;
+using detail::oneWhere;
+
 struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
 };
-
-// kLanes float lanes as one value (GCC vector extension): one AVX register, or two SSE ones in
-// the baseline build. Lane l holds exactly what a scalar loop over lane l would: the same
-// products and sums in the same order (no FMA is generated for either target).
-// (These helpers are always inlined: GCC's note that passing 32-byte vectors by value changes
-// the ABI does not apply.)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-constexpr int kLanes = 8;
-typedef float Lanes __attribute__((vector_size(4 * kLanes)));
-typedef int32_t LaneMask __attribute__((vector_size(4 * kLanes)));
-
-TRAVEL_INTO_CALLER Lanes loadLanes(const float* p) {
-    Lanes v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-// 1.f where the mask is set, else +0.f (the scalar selections' values, bit for bit).
-TRAVEL_INTO_CALLER Lanes oneWhere(const LaneMask& mask) {
-    const Lanes one = {1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f, 1.f};
-    LaneMask bits;
-    std::memcpy(&bits, &one, sizeof bits);
-    const LaneMask selected = mask & bits;
-    Lanes v;
-    std::memcpy(&v, &selected, sizeof v);
-    return v;
-}
 
 // Moments of the points for which `inside(x, y, z)` is 1 (it returns 1 or 0). Branch-free with
 // kLanes independent float accumulators per moment (vector values kept in registers: as arrays
