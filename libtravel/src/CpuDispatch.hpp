@@ -10,7 +10,9 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+// TRAVEL_NO_CPU_DISPATCH builds the baseline copy only (to check it on an AVX2 machine).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(TRAVEL_NO_CPU_DISPATCH)
 #define TRAVEL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define TRAVEL_AVX2_CLONES
