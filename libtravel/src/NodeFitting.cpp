@@ -183,8 +183,31 @@ double sumAscending(const float* lowest, int k) {
 template <int K>
 TRAVEL_INTO_CALLER float lowestMean(const float* z, uint32_t count) {
     float lowest[K];
-    for (int j = 0; j < K; ++j) lowest[j] = std::numeric_limits<float>::infinity();
-    for (uint32_t i = 0; i < count; ++i)
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int j = 0; j < K; ++j) lowest[j] = inf;
+    uint32_t i = 0;
+    if (count >= 2 * kLanes) {
+        // kLanes networks side by side, branch-free: lane l keeps the K lowest of the values
+        // at l, l + kLanes, ... (the same min/max selects as sinkThrough). The K lowest of all
+        // are among the lanes' K lowest: those go through the scalar network below. Equal values
+        // may be kept in another order, which changes neither the values kept nor their sum
+        // (only +0 and -0 compare equal and differ, and they change the sum only when all K
+        // lowest values are zeros).
+        Lanes low[K];
+        for (int j = 0; j < K; ++j) low[j] = Lanes{} + inf;
+        for (; i + kLanes <= count; i += kLanes) {
+            Lanes v = loadLanes(z + i);
+            for (int j = 0; j < K; ++j) {
+                const Lanes lo = v < low[j] ? v : low[j];
+                v = low[j] < v ? v : low[j];
+                low[j] = lo;
+            }
+        }
+        for (int j = 0; j < K; ++j)
+            for (int l = 0; l < kLanes; ++l)
+                if (low[j][l] < lowest[K - 1]) sinkThrough(low[j][l], lowest, K);
+    }
+    for (; i < count; ++i)
         if (z[i] < lowest[K - 1]) sinkThrough(z[i], lowest, K);
     return static_cast<float>(sumAscending(lowest, K) / K);
 }
