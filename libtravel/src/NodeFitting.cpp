@@ -14,40 +14,45 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#include "CpuDispatch.hpp"
 
 namespace travel {
 namespace {
+
+using detail::kLanes;
+using detail::LaneMask;
+using detail::Lanes;
+using detail::loadLanes;
+using detail::oneWhere;
 
 struct Moments {
     double n = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
 };
 
 // Moments of the points for which `inside(x, y, z)` is 1 (it returns 1 or 0). Branch-free with
-// kLanes independent float accumulators per moment, so the compiler vectorises the lane loop; the
-// coordinates are node-local (a few metres), where float sums keep ample precision. Lanes are
-// summed in double.
+// kLanes independent float accumulators per moment (vector values kept in registers: as arrays
+// of lanes, GCC spilled them to the stack on every point block); the coordinates are node-local
+// (a few metres), where float sums keep ample precision. Lanes are summed in double.
 template <class Predicate>
-Moments accumulate(const float* x, const float* y, const float* z, uint32_t count,
-                   const float origin[3], Predicate inside) {
-    constexpr int kLanes = 8;
-    float n[kLanes] = {}, sx[kLanes] = {}, sy[kLanes] = {}, sz[kLanes] = {}, sxx[kLanes] = {},
-          sxy[kLanes] = {}, sxz[kLanes] = {}, syy[kLanes] = {}, syz[kLanes] = {}, szz[kLanes] = {};
-    float px[kLanes], py[kLanes], pz[kLanes], m[kLanes];
+TRAVEL_INTO_CALLER Moments accumulate(const float* x, const float* y, const float* z,
+                                      uint32_t count, const float origin[3], Predicate inside) {
+    Lanes n = {}, sx = {}, sy = {}, sz = {}, sxx = {}, sxy = {}, sxz = {}, syy = {}, syz = {},
+          szz = {};
     uint32_t i = 0;
     for (; i + kLanes <= count; i += kLanes) {
-        // Simple fixed-length lane loops: each one vectorises (SLP) on its own.
-        for (int l = 0; l < kLanes; ++l) {
-            px[l] = x[i + l] - origin[0], py[l] = y[i + l] - origin[1];
-            pz[l] = z[i + l] - origin[2];
-        }
-        for (int l = 0; l < kLanes; ++l) m[l] = inside(px[l], py[l], pz[l]);
-        for (int l = 0; l < kLanes; ++l) {
-            const float mx = m[l] * px[l], my = m[l] * py[l], mz = m[l] * pz[l];
-            n[l] += m[l], sx[l] += mx, sy[l] += my, sz[l] += mz;
-            sxx[l] += mx * px[l], sxy[l] += mx * py[l], sxz[l] += mx * pz[l];
-            syy[l] += my * py[l], syz[l] += my * pz[l], szz[l] += mz * pz[l];
-        }
+        const Lanes px = loadLanes(x + i) - origin[0], py = loadLanes(y + i) - origin[1];
+        const Lanes pz = loadLanes(z + i) - origin[2];
+        const Lanes m = inside.lanes(px, py, pz);
+        // The selected point q = m p (m is 0 or 1): q q^T is m p p^T bit for bit (a left-out
+        // point adds +-0 to sums that start at +0), and p is dead after q, which keeps the
+        // 10 accumulators and q in the 16 vector registers.
+        const Lanes qx = m * px, qy = m * py, qz = m * pz;
+        n += m, sx += qx, sy += qy, sz += qz;
+        sxx += qx * qx, sxy += qx * qy, sxz += qx * qz;
+        syy += qy * qy, syz += qy * qz, szz += qz * qz;
     }
     for (; i < count; ++i) {  // tail, into lane 0
         const float qx = x[i] - origin[0], qy = y[i] - origin[1], qz = z[i] - origin[2];
@@ -74,6 +79,9 @@ struct SeedBand {
     float operator()(float, float, float pz) const {
         return (pz >= lo ? 1.f : 0.f) * (pz < hi ? 1.f : 0.f);
     }
+    Lanes lanes(const Lanes&, const Lanes&, const Lanes& pz) const {
+        return oneWhere((pz >= lo) & (pz < hi));
+    }
 };
 
 // The refit's points: s.p + d_local < plane_inlier_dist, written as s.p < limit.
@@ -82,14 +90,17 @@ struct BelowPlane {
     float operator()(float px, float py, float pz) const {
         return a * px + b * py + c * pz < limit ? 1.f : 0.f;
     }
+    Lanes lanes(const Lanes& px, const Lanes& py, const Lanes& pz) const {
+        return oneWhere(a * px + b * py + c * pz < limit);
+    }
 };
 
 // True when `before` and `after` select the same points (same node-local coordinates as
 // accumulate(), so the same float results). Stops at the first block of kLanes that differs.
 template <class Before, class After>
-bool sameSelection(const float* x, const float* y, const float* z, uint32_t count,
-                   const float origin[3], Before before, After after) {
-    constexpr int kLanes = 8;
+TRAVEL_INTO_CALLER bool sameSelection(const float* x, const float* y, const float* z,
+                                      uint32_t count, const float origin[3], Before before,
+                                      After after) {
     uint32_t i = 0;
     for (; i + kLanes <= count; i += kLanes) {
         int differ = 0;
@@ -152,7 +163,7 @@ BelowPlane belowPlane(const Plane& plane, double inlier_dist) {
 
 // The k lowest values seen so far, ascending, in lowest[0..k): a new value v sinks through them
 // as through a min/max network. A value not below lowest[k - 1] leaves them unchanged.
-inline void sinkThrough(float v, float* lowest, int k) {
+TRAVEL_INTO_CALLER void sinkThrough(float v, float* lowest, int k) {
     for (int j = 0; j < k; ++j) {
         const float lo = std::min(lowest[j], v);
         v = std::max(lowest[j], v);
@@ -170,16 +181,39 @@ double sumAscending(const float* lowest, int k) {
 // and its K values stay in registers. (An insertion sort degenerates here: sensors often deliver
 // a node's points in decreasing z, so every point would be inserted at the front.)
 template <int K>
-float lowestMean(const float* z, uint32_t count) {
+TRAVEL_INTO_CALLER float lowestMean(const float* z, uint32_t count) {
     float lowest[K];
-    for (int j = 0; j < K; ++j) lowest[j] = std::numeric_limits<float>::infinity();
-    for (uint32_t i = 0; i < count; ++i)
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int j = 0; j < K; ++j) lowest[j] = inf;
+    uint32_t i = 0;
+    if (count >= 2 * kLanes) {
+        // kLanes networks side by side, branch-free: lane l keeps the K lowest of the values
+        // at l, l + kLanes, ... (the same min/max selects as sinkThrough). The K lowest of all
+        // are among the lanes' K lowest: those go through the scalar network below. Equal values
+        // may be kept in another order, which changes neither the values kept nor their sum
+        // (only +0 and -0 compare equal and differ, and they change the sum only when all K
+        // lowest values are zeros).
+        Lanes low[K];
+        for (int j = 0; j < K; ++j) low[j] = Lanes{} + inf;
+        for (; i + kLanes <= count; i += kLanes) {
+            Lanes v = loadLanes(z + i);
+            for (int j = 0; j < K; ++j) {
+                const Lanes lo = v < low[j] ? v : low[j];
+                v = low[j] < v ? v : low[j];
+                low[j] = lo;
+            }
+        }
+        for (int j = 0; j < K; ++j)
+            for (int l = 0; l < kLanes; ++l)
+                if (low[j][l] < lowest[K - 1]) sinkThrough(low[j][l], lowest, K);
+    }
+    for (; i < count; ++i)
         if (z[i] < lowest[K - 1]) sinkThrough(z[i], lowest, K);
     return static_cast<float>(sumAscending(lowest, K) / K);
 }
 
 // Mean of the k lowest values (LPR), k small.
-float lowestPointRepresentative(const float* z, uint32_t count, int k) {
+TRAVEL_INTO_CALLER float lowestPointRepresentative(const float* z, uint32_t count, int k) {
     constexpr int kMax = 64;
     k = std::min({k, static_cast<int>(count), kMax});
     switch (k) {  // the usual lpr_num_points; the same values and sum as the loop below
@@ -205,6 +239,8 @@ float lowestPointRepresentative(const float* z, uint32_t count, int k) {
 
 }  // namespace
 
+// With AVX2 (CpuDispatch.hpp) the moment passes' 8 float lanes are one register per moment.
+TRAVEL_AVX2_CLONES
 void fitNodes(const TriGridField& field, const Params& params, TerrainModel& model) {
     const float* sx = field.sx().data();
     const float* sy = field.sy().data();

@@ -36,21 +36,37 @@
 
 namespace travel {
 
+namespace {
+// Eq. 2 with sin(eps1) computed once per frame, not once per edge. The two offset tests come
+// first: they need no sin, and most failing edges (walls, kerbs) fail them.
+struct EdgeTest {
+    double eps2;
+    float sin_eps1;
+    explicit EdgeTest(const Params& params)
+        : eps2(params.eps2), sin_eps1(static_cast<float>(std::sin(params.eps1))) {}
+    bool operator()(const TriNode& a, const TriNode& b) const {
+        const Eigen::Vector3f d = b.mean - a.mean;
+        const float len = d.norm();
+        if (!(len > 0.f)) return true;  // coincident means: nothing separates the nodes
+        const float max_offset = len * sin_eps1;
+        if (!(std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset))
+            return false;
+        const float normal_turn =
+            static_cast<float>(std::sin(std::min(static_cast<double>(len) * eps2, M_PI / 2)));
+        return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn;
+    }
+};
+}  // namespace
+
 bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params) {
-    const Eigen::Vector3f d = b.mean - a.mean;
-    const float len = d.norm();
-    if (!(len > 0.f)) return true;  // coincident means: nothing separates the nodes
-    const float normal_turn =
-        static_cast<float>(std::sin(std::min(static_cast<double>(len) * params.eps2, M_PI / 2)));
-    const float max_offset = len * static_cast<float>(std::sin(params.eps1));
-    return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn &&
-           std::fabs(a.normal.dot(d)) < max_offset && std::fabs(b.normal.dot(d)) < max_offset;
+    return EdgeTest(params)(a, b);
 }
 
 void TraversableGraphSearch::reserve(const TriGridField& field) {
     const std::size_t nodes = static_cast<std::size_t>(field.numNodes());
     detail::prefault(reached_, nodes), detail::prefault(reached_where_, nodes);
     detail::prefault(candidates_, nodes), detail::prefault(nearest_, nodes);
+    detail::prefault(node_reached_, nodes), detail::prefault(node_xy_, nodes);
 }
 
 void TraversableGraphSearch::markReached(int node, int16_t component, const TriGridField& field,
@@ -58,6 +74,8 @@ void TraversableGraphSearch::markReached(int node, int16_t component, const TriG
     TriNode& reached = model.nodes[node];
     reached.reached = true;
     reached.component = component;
+    node_reached_[node] = 1;
+    node_xy_[node] = reached.mean.head<2>();
     const int cell = node / 4, n = field.cellsPerSide();
     reached_.push_back(node);
     reached_where_.push_back({reached.mean.head<2>(), cell % n, cell / n});
@@ -67,6 +85,7 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
                                         const Params& params, TerrainModel& model) {
     // reached_ is the queue of every search of the frame: this one's nodes are appended.
     std::size_t head = reached_.size();
+    const EdgeTest traversable(params);
     markReached(root, component, field, model);
     for (; head < reached_.size(); ++head) {
         const int i = reached_[head];
@@ -75,7 +94,7 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
             const int j = nb.ids[k];
             const TriNode& next = model.nodes[j];
             if (next.reached || next.node_class != NodeClass::Terrain) continue;
-            if (!isTraversableEdge(model.nodes[i], next, params)) continue;
+            if (!traversable(model.nodes[i], next)) continue;
             markReached(j, component, field, model);
         }
     }
@@ -88,12 +107,12 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
 // away: the scan stops when that exceeds the best distance found (exact, not a heuristic): the
 // result is the nearest reached node of the window, ties to the lower id.
 void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
-                                            const TerrainModel& model, float max_dist2,
-                                            Nearest& near) const {
+                                            float max_dist2, Nearest& near) const {
     const int n = field.cellsPerSide();
     const int cx = near.cx, cy = near.cy;
     int nearest = -1;
     float best = max_dist2;
+    const Eigen::Vector2f xy = cand.mean.head<2>();
     for (int ring = 0; ring <= window_rings_; ++ring) {
         const float gap = std::max(0, ring - 1) * field.resolution();
         if (gap * gap > best) break;
@@ -104,8 +123,8 @@ void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridFi
                 if (ix >= 0 && ix < n) {
                     for (int k = 0; k < 4; ++k) {
                         const int id = 4 * (iy * n + ix) + k;
-                        if (!model.nodes[id].reached) continue;
-                        const float d2 = (model.nodes[id].mean - cand.mean).head<2>().squaredNorm();
+                        if (!node_reached_[id]) continue;
+                        const float d2 = (node_xy_[id] - xy).squaredNorm();
                         if (d2 < best || (d2 == best && id < nearest)) best = d2, nearest = id;
                     }
                 }
@@ -130,7 +149,7 @@ int TraversableGraphSearch::nearestReachedNow(std::size_t c, const TriGridField&
     const std::size_t window = static_cast<std::size_t>((2 * window_rings_ + 1)) *
                                static_cast<std::size_t>(2 * window_rings_ + 1);
     if (near.seen == 0 || reached - near.seen > window) {
-        nearestReached(cand, field, model, max_dist2, near);
+        nearestReached(cand, field, max_dist2, near);
     } else {
         const Eigen::Vector2f xy = cand.mean.head<2>();
         for (std::size_t k = near.seen; k < reached; ++k) {
@@ -152,6 +171,10 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     model.seed_node = -1;
     model.num_components = 0;
     for (TriNode& node : model.nodes) node.reached = false, node.component = -1;
+    // Compact copies of `reached` and of the reached nodes' mean xy for the nearest-node scans
+    // (a TriNode is ~100 bytes: the scans would read one cache line per node).
+    node_reached_.assign(model.nodes.size(), 0);
+    node_xy_.resize(model.nodes.size());
     // Start node (see the decisions above).
     const float radius2 = static_cast<float>(params.seed_search_radius * params.seed_search_radius);
     int seed = -1;
@@ -199,8 +222,8 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
         accepted_any = false;
         for (std::size_t c = 0; c < candidates_.size(); ++c) {
             const int id = candidates_[c];
+            if (node_reached_[id]) continue;
             const TriNode& cand = model.nodes[id];
-            if (cand.reached) continue;
             const int nearest = nearestReachedNow(c, field, model, max_dist2);
             if (nearest < 0) continue;
             const TriNode& ref = model.nodes[nearest];

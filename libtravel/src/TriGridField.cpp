@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "CpuDispatch.hpp"
 #include "Prefault.hpp"
 
 namespace travel {
@@ -61,6 +62,8 @@ void TriGridField::vertexXY(int vertex, float& x, float& y) const {
     x = xy.x(), y = xy.y();
 }
 
+// With AVX2 (CpuDispatch.hpp) the node loop computes 8 points an instruction instead of 4.
+TRAVEL_AVX2_CLONES
 void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     const int num_nodes = numNodes();
     static_cast<TriGridGeometry&>(model) = geometry_;

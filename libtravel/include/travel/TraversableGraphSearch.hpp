@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "travel/Params.hpp"
@@ -35,8 +36,8 @@ class TraversableGraphSearch {
         std::size_t seen = 0;
         int cx = -1, cy = -1;
     };
-    void nearestReached(const TriNode& cand, const TriGridField& field, const TerrainModel& model,
-                        float max_dist2, Nearest& near) const;
+    void nearestReached(const TriNode& cand, const TriGridField& field, float max_dist2,
+                        Nearest& near) const;
     int nearestReachedNow(std::size_t c, const TriGridField& field, const TerrainModel& model,
                           float max_dist2);
     void markReached(int node, int16_t component, const TriGridField& field, TerrainModel& model);
@@ -47,6 +48,8 @@ class TraversableGraphSearch {
     };
     std::vector<int> reached_;  // every reached node, in the order the searches reached them
     std::vector<ReachedWhere> reached_where_;  // the same nodes' positions
+    std::vector<uint8_t> node_reached_;        // per node: model.nodes[id].reached
+    std::vector<Eigen::Vector2f> node_xy_;     // per node: its mean's xy (set when reached)
     std::vector<int> candidates_;
     std::vector<Nearest> nearest_;  // per candidate
     int window_rings_ = 0;          // Chebyshev radius [cells] of the nearest-node window
