@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "LargePages.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
@@ -140,6 +141,7 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const std::string out = flags.outputPath();
     const travel::ScanFormat format = flags.scanFormat();
+    travel::apps::preferLargePages(jobs.count());  // before any pipeline or thread
     // -j N: the other workers' segmenters are built on their own threads meanwhile.
     travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
         jobs.count() - 1,
