@@ -12,11 +12,12 @@
 //
 // Items whose processing carries state into the next ones (TRAVEL's mount, estimated or checked
 // on the first frames) run on the calling thread, one by one, while `sequential()` says so; then
-// `fork(workers)` runs once and the remaining items are spread over the workers. At most
-// workers + 1 items are in flight (slots are reused: each new one costs page faults). An exception
-// thrown by `produce` reaches the caller when its item's turn to be consumed comes (the items
-// before it are consumed, as with -j 1); one thrown by `consume` (e.g. an interrupt) stops the
-// workers and propagates.
+// `fork(workers)` runs once and the remaining items are spread over the workers (the item after
+// which `sequential()` turned false is consumed once they have started). At most workers + 1
+// items are in flight (slots are reused, the sequential items' one too: each new one costs page
+// faults). An exception thrown by `produce` reaches the caller when its item's turn to be
+// consumed comes (the items before it are consumed, as with -j 1); one thrown by `consume` (e.g.
+// an interrupt) stops the workers and propagates.
 #pragma once
 
 #include <algorithm>
@@ -41,16 +42,27 @@ void forEachInOrder(std::size_t count, unsigned workers, Sequential sequential, 
                     Produce produce, Consume consume) {
     workers = std::max(1u, workers);
     std::size_t next = 0;
+    Slot first;  // the sequential items' slot, then a slot of the ring (its pages are mapped)
     if (workers == 1 || count < 2) {
-        Slot slot;
-        for (; next < count; ++next) produce(0u, next, slot), consume(next, slot);
+        for (; next < count; ++next) produce(0u, next, first), consume(next, first);
         return;
     }
-    {
-        Slot slot;
-        for (; next < count && sequential(); ++next) produce(0u, next, slot), consume(next, slot);
+    // The item that settles the state is consumed after the fork, while the workers start.
+    bool settled_item = false;
+    while (next < count && sequential()) {
+        produce(0u, next, first);
+        ++next;
+        if (next < count && sequential()) {
+            consume(next - 1, first);
+        } else {
+            settled_item = true;
+            break;
+        }
     }
-    if (next == count) return;
+    if (next == count) {
+        if (settled_item) consume(next - 1, first);
+        return;
+    }
     fork(workers);
 
     // Ring of slots: item i lives in slot i % window until consumed.
@@ -62,6 +74,11 @@ void forEachInOrder(std::size_t count, unsigned workers, Sequential sequential, 
     std::condition_variable changed;
     std::size_t claimed = next;   // next item a worker takes
     std::size_t consumed = next;  // next item to consume
+    if (settled_item) {
+        --consumed;
+        std::swap(slots[consumed % window], first);
+        done[consumed % window] = 1;
+    }
     bool stop = false;
 
     auto work = [&](unsigned w) {

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "LargePages.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
@@ -336,6 +337,7 @@ int run(int argc, char** argv) {
     if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
     const travel::Config configuration = flags.config.load();
     if (flags.config.print(configuration)) return 0;
+    travel::apps::preferLargePages(jobs.count());  // before any pipeline or thread
 
     const bool is_sweep = command.getValue() == "sweep";
     // Configuration errors first, before any file is read.

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "LargePages.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
@@ -140,10 +141,7 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const std::string out = flags.outputPath();
     const travel::ScanFormat format = flags.scanFormat();
-    // -j N: the other workers' segmenters are built on their own threads meanwhile.
-    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
-        jobs.count() - 1,
-        [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
+    travel::apps::preferLargePages(jobs.count());  // before any pipeline or thread
     // Configuration errors first, before any file is touched.
     std::unique_ptr<travel::eval::Segmenter> segmenter =
         travel::eval::makeSegmenter(method.getValue(), params);
@@ -164,6 +162,13 @@ int run(int argc, char** argv) {
         tracking.tracker = std::make_unique<travel::FrameTracker>(configuration.tracking);
     }
     travel::apps::createFolder(out);
+    // -j N: the other workers' segmenters, at most one per further scan (one scan builds one
+    // pipeline), are built on their own threads while the first frame settles the mount.
+    const auto workers =
+        static_cast<unsigned>(std::clamp<std::size_t>(files.size(), 1, std::size_t{jobs.count()}));
+    travel::apps::BackgroundBuilds<std::unique_ptr<travel::eval::Segmenter>> worker_segmenters(
+        workers - 1,
+        [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
     if (track.getValue()) {
         tracking.poses.open((fs::path(out) / "poses.txt").string());
         if (!tracking.poses) throw travel::InputError("cannot write " + out + "/poses.txt");
@@ -314,8 +319,8 @@ int run(int argc, char** argv) {
         progress.update(f + 1);
     };
     travel::apps::forEachInOrder<travel::eval::FrameEvaluation>(
-        files.size(), jobs.count(), [&] { return !segmenters[0]->independentFrames(); }, fork,
-        produce, consume);
+        files.size(), workers, [&] { return !segmenters[0]->independentFrames(); }, fork, produce,
+        consume);
     progress.finish();
     if (track_png.isSet()) {
         travel::viz::TrackPictureOptions picture;

@@ -664,6 +664,37 @@ TEST(Robustness, ThreadsOfForEachInOrderConsumeInInputOrder) {
     }
 }
 
+// As travel-kitti: the state settles while an item is produced (TRAVEL's first frame); that item
+// is consumed after the fork, from its own slot, still in order; all-sequential runs too.
+TEST(Robustness, ThreadsOfForEachInOrderConsumeTheSettlingItemAfterTheFork) {
+    for (const std::size_t items : {std::size_t{2}, std::size_t{3}, std::size_t{50}}) {
+        std::size_t produced_before_fork = 0;
+        bool forked = false;
+        std::vector<std::size_t> consumed;
+        std::vector<bool> consumed_after_fork;
+        apps::forEachInOrder<std::vector<std::size_t>>(
+            items, 2u, [&] { return produced_before_fork < 3; },  // settles on item 2
+            [&](unsigned) { forked = true; },
+            [&](unsigned, std::size_t i, std::vector<std::size_t>& slot) {
+                if (!forked) ++produced_before_fork;
+                slot.assign(1000, i);
+            },
+            [&](std::size_t i, std::vector<std::size_t>& slot) {
+                ASSERT_EQ(slot.size(), 1000u);
+                EXPECT_EQ(slot[999], i);
+                consumed.push_back(i);
+                consumed_after_fork.push_back(forked);
+            });
+        ASSERT_EQ(consumed.size(), items);
+        for (std::size_t i = 0; i < items; ++i) EXPECT_EQ(consumed[i], i) << items;
+        EXPECT_EQ(forked, items > 3) << items;
+        if (items > 3) {
+            EXPECT_FALSE(consumed_after_fork[1]);
+            EXPECT_TRUE(consumed_after_fork[2]);  // the settling item
+        }
+    }
+}
+
 TEST(Robustness, ThreadsOfBackgroundBuildsGiveEachItemOnceBuiltAndRethrowItsError) {
     std::atomic<int> built{0};
     {
