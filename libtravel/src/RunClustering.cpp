@@ -64,40 +64,10 @@ inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
     return dx * dx + dy * dy + dz * dz;
 }
 
-void RunClustering::markNearRuns(const RunBox& a, int lo, uint32_t begin, uint32_t end,
-                                 float max_gap2) {
-    near_.resize(end - begin);
-    const float *lx = run_lo_[0].data(), *ly = run_lo_[1].data(), *lz = run_lo_[2].data();
-    const float *hx = run_hi_[0].data(), *hy = run_hi_[1].data(), *hz = run_hi_[2].data();
-    const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
-    int32_t* near = near_.data();
-    // Branch-free, so that it vectorises: the boxes of most pairs are apart, along any axis.
-    for (uint32_t b = begin; b < end; ++b) {
-        const float gx = std::max(0.f, std::max(a.lo[0] - hx[b], lx[b] - a.hi[0]));
-        const float gy = std::max(0.f, std::max(a.lo[1] - hy[b], ly[b] - a.hi[1]));
-        const float gz = std::max(0.f, std::max(a.lo[2] - hz[b], lz[b] - a.hi[2]));
-        const float gap2 = gx * gx + gy * gy + gz * gz;
-        near[b - begin] =
-            (col_end[b] >= lo) & (col_end[b] - col_begin[b] <= kLongSpan) & (gap2 < max_gap2);
-    }
-}
-
-// Squared gap between box a and run b's box (0 where they overlap): no two of their points
-// are closer.
-float RunClustering::boxGap2(const RunBox& a, int b) const {
-    float gap2 = 0.f;
-    for (int d = 0; d < 3; ++d) {
-        const float g = std::max(0.f, std::max(a.lo[d] - run_hi_[d][b], run_lo_[d][b] - a.hi[d]));
-        gap2 += g * g;
-    }
-    return gap2;
-}
-
 inline void RunClustering::growBox(int run, uint32_t k) {
-    for (int d = 0; d < 3; ++d) {
-        run_lo_[d][run] = std::min(run_lo_[d][run], point(d)[k]);
-        run_hi_[d][run] = std::max(run_hi_[d][run], point(d)[k]);
-    }
+    const Eigen::Array4f p(px_[k], py_[k], pz_[k], 0.f);
+    run_box_[run].lo = run_box_[run].lo.min(p);
+    run_box_[run].hi = run_box_[run].hi.max(p);
 }
 
 inline int RunClustering::find(int run) {
@@ -129,9 +99,9 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(near_, runs);
+    prefault(parent_, runs), prefault(merge_dist2_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
-    for (int d = 0; d < 3; ++d) prefault(run_lo_[d], runs), prefault(run_hi_[d], runs);
+    prefault(run_box_, runs);
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
@@ -186,7 +156,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     run_row_.clear(), parent_.clear(), run_last_range_.clear(), run_far_range_.clear();
     run_near_range_.clear();
     run_size_.clear(), run_first_input_.clear();
-    for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
+    run_box_.clear();
     point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
@@ -244,8 +214,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_row_.push_back(static_cast<int16_t>(r));
             run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
             parent_.push_back(run);
-            for (int d = 0; d < 3; ++d)
-                run_lo_[d].push_back(point(d)[k]), run_hi_[d].push_back(point(d)[k]);
+            const Eigen::Array4f p(px_[k], py_[k], pz_[k], 0.f);
+            run_box_.push_back(RunBox{p, p});
             point_run_[k] = run;
             next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
@@ -314,75 +284,57 @@ void RunClustering::vertical(const Params& params) {
     const int ext = params.vertical_column_extension;
     const float t_vert2 =
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
-    float merge2 = t_vert2;  // for the pair of rows being compared, see the file comment
-    // The long runs of each row (see kLongSpan).
-    long_runs_.clear(), long_reach_.clear();
-    long_runs_begin_.assign(rows + 1, 0);
-    for (int r = 0; r < rows; ++r) {
-        long_runs_begin_[r] = static_cast<uint32_t>(long_runs_.size());
-        int32_t reach = std::numeric_limits<int32_t>::min();
-        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b) {
-            if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan) continue;
-            long_runs_.push_back(static_cast<int32_t>(b));
-            // Running max of the long runs' last columns (non-decreasing): every long run
-            // before the first one reaching lo ends before lo.
-            reach = std::max(reach, run_col_end_[b]);
-            long_reach_.push_back(reach);
-        }
-    }
-    long_runs_begin_[rows] = static_cast<uint32_t>(long_runs_.size());
-
-    // Runs of row r are visited in column order, so the first candidate of each lower row
-    // only moves forward: one pointer per lower row instead of a binary search per query.
-    // A pair is compared point by point only when its boxes are within T_vert: most pairs in
-    // the column window are not (a wall behind a bush), so the box test is the hot path.
     const int span = params.vertical_ring_span;
-    window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
-    long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
-    // Every merge while run a is compared involves a, so its root is found once per run a and
-    // kept up to date here (the root of a union is the smaller one, as in unite()).
-    int root_a = 0;
-    auto mergeIfTouching = [&](int a, int b) {
-        const int root_b = find(b);
-        if (root_a == root_b || !runsTouch(a, b, ext, merge2)) return;
+    const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
+    const RunBox* box = run_box_.data();
+    // Run a of the upper row and run b of a lower row are compared when b's columns overlap
+    // a's widened by T_ext, [lo, hi]; they merge when two of their points are nearer than
+    // merge_dist2_[a] (see the file comment); most pairs' boxes are already farther apart (a
+    // wall behind a bush), so the box test comes first. The merges give the same clusters in
+    // any order, so each pair of rows is swept once, both rows' runs in first-column order:
+    // the pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then
+    // those where b starts before lo and reaches it (for each b, the a whose lo lies in b's
+    // columns). No pair is visited twice, and none that does not overlap.
+    auto compare = [&](uint32_t a, uint32_t b) {
+        // Per axis max(0, gap) (0 where the boxes overlap), added as x^2 + y^2 + z^2.
+        const Eigen::Array4f gap =
+            (box[a].lo - box[b].hi).max(box[b].lo - box[a].hi).max(Eigen::Array4f::Zero());
+        const Eigen::Array4f gap2 = gap * gap;
+        const float max_dist2 = merge_dist2_[a];
+        if (!(gap2[0] + gap2[1] + gap2[2] < max_dist2)) return;
+        const int root_a = find(static_cast<int>(a)), root_b = find(static_cast<int>(b));
+        if (root_a == root_b ||
+            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, max_dist2))
+            return;
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
-        root_a = std::min(root_a, root_b);
     };
+    merge_dist2_.resize(run_first_.size());
     for (int r = 1; r < rows; ++r) {
-        const int lowest = std::max(0, r - span);
-        for (int rr = lowest; rr < r; ++rr) {
-            window_start_[r - 1 - rr] = row_runs_begin_[rr];
-            long_start_[r - 1 - rr] = long_runs_begin_[rr];
-        }
-        for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
-            root_a = find(static_cast<int>(a));
-            RunBox box_a;
-            for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
-            const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
-            for (int rr = r - 1; rr >= lowest; --rr) {
-                const float beam_gap = run_far_range_[a] *
-                                       std::fabs(row_elevation_[r] - row_elevation_[rr]) /
-                                       float(r - rr);
-                merge2 = t_vert2 + beam_gap * beam_gap;
-                uint32_t& start = window_start_[r - 1 - rr];
-                const uint32_t end = row_runs_begin_[rr + 1];
-                while (start < end && run_col_begin_[start] < lo - kLongSpan) ++start;
-                uint32_t stop = start;
-                while (stop < end && run_col_begin_[stop] <= hi) ++stop;
-                markNearRuns(box_a, lo, start, stop, merge2);
-                for (uint32_t b = start; b < stop; ++b)
-                    if (near_[b - start]) mergeIfTouching(static_cast<int>(a), static_cast<int>(b));
-                // Long runs are in first-column order too: start at the first that can reach lo
-                // (forward-moving, as lo only grows) and stop at the first beyond hi.
-                uint32_t& long_start = long_start_[r - 1 - rr];
-                const uint32_t long_end = long_runs_begin_[rr + 1];
-                while (long_start < long_end && long_reach_[long_start] < lo) ++long_start;
-                for (uint32_t l = long_start; l < long_end && run_col_begin_[long_runs_[l]] <= hi;
-                     ++l) {
-                    const int b = long_runs_[l];
-                    if (run_col_end_[b] >= lo && boxGap2(box_a, b) < merge2)
-                        mergeIfTouching(static_cast<int>(a), b);
-                }
+        const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
+        // The nearest rows first: their merges make the farther rows' pairs mostly one cluster
+        // already, and those skip the point-by-point test.
+        for (int rr = r - 1; rr >= std::max(0, r - span); --rr) {
+            const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
+            if (a_begin == a_end || b_begin == b_end) continue;
+            const float elevation_gap = std::fabs(row_elevation_[r] - row_elevation_[rr]);
+            const float rows_apart = float(r - rr);
+            for (uint32_t a = a_begin; a < a_end; ++a) {
+                const float beam_gap = run_far_range_[a] * elevation_gap / rows_apart;
+                merge_dist2_[a] = t_vert2 + beam_gap * beam_gap;
+            }
+            // b starts within [lo, hi].
+            uint32_t first = b_begin;
+            for (uint32_t a = a_begin; a < a_end; ++a) {
+                const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
+                while (first < b_end && col_begin[first] < lo) ++first;
+                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b) compare(a, b);
+            }
+            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
+            first = a_begin;
+            for (uint32_t b = b_begin; b < b_end; ++b) {
+                while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
+                for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
+                    compare(a, b);
             }
         }
     }
