@@ -52,6 +52,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
@@ -64,11 +67,24 @@ inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
     return dx * dx + dy * dy + dz * dz;
 }
 
-inline void RunClustering::growBox(int run, uint32_t k) {
-    const Eigen::Array4f p(px_[k], py_[k], pz_[k], 0.f);
-    run_box_[run].lo = run_box_[run].lo.min(p);
-    run_box_[run].hi = run_box_[run].hi.max(p);
+namespace {
+
+// out[k] = std::sqrt(x^2 + y^2 + z^2), the same floats, 4 at a time: std::sqrt keeps a branch
+// for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
+void ranges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
+    uint32_t k = 0;
+#ifdef __SSE2__
+    for (; k + 4 <= n; k += 4) {
+        const __m128 vx = _mm_loadu_ps(x + k), vy = _mm_loadu_ps(y + k), vz = _mm_loadu_ps(z + k);
+        const __m128 sum =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz));
+        _mm_storeu_ps(out + k, _mm_sqrt_ps(sum));
+    }
+#endif
+    for (; k < n; ++k) out[k] = std::sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]);
 }
+
+}  // namespace
 
 inline int RunClustering::find(int run) {
     while (parent_[run] != run) {
@@ -96,7 +112,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(input_, points), prefault(key_, points);
     // Runs: a few points each on real scans; more grow the buffers once.
     const std::size_t runs = points / 4 + 1;
-    prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
+    prefault(run_first_, runs), prefault(run_last_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(merge_dist2_, runs);
@@ -139,24 +155,13 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         // Contiguous copies in sorted order: every later access is by sorted position.
         px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
     }
-    for (uint32_t k = 0; k < total; ++k)
-        range_[k] = std::sqrt(px_[k] * px_[k] + py_[k] * py_[k] + pz_[k] * pz_[k]);
-    // Each row's elevation: the range-weighted mean sine of its points' elevations.
+    ranges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
     row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
-    for (int r = 0; r < rows; ++r) {
-        float sum_z = 0.f, sum_range = 0.f;
-        for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k)
-            sum_z += pz_[k], sum_range += range_[k];
-        if (sum_range > 0.f)
-            row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
-    }
 
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
-    run_row_.clear(), parent_.clear(), run_last_range_.clear(), run_far_range_.clear();
-    run_near_range_.clear();
-    run_size_.clear(), run_first_input_.clear();
-    run_box_.clear();
+    run_row_.clear(), parent_.clear(), run_far_range_.clear(), run_near_range_.clear();
+    run_size_.clear(), run_first_input_.clear(), run_box_.clear();
     point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
@@ -166,40 +171,67 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
     const int seam_col = image.sweepStartColumn();
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
+    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data(), *ranges = range_.data();
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
+        // The most recent open run, whose points mostly follow one another: its box, ranges,
+        // size and first input point are kept here (registers) and written back when another
+        // run takes a point (one store per point instead of a dozen read-modify-writes).
+        int current = -1;
+        float lo_x = 0, lo_y = 0, lo_z = 0, hi_x = 0, hi_y = 0, hi_z = 0, far = 0, near = 0;
+        uint32_t size = 0, first_input = 0;
+        auto store = [&] {
+            RunBox& box = run_box_[current];
+            box.lo[0] = lo_x, box.lo[1] = lo_y, box.lo[2] = lo_z, box.lo[3] = 0.f;
+            box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
+            run_far_range_[current] = far, run_near_range_[current] = near;
+            run_size_[current] = size, run_first_input_[current] = first_input;
+            run_col_end_[current] = sorted_col_[run_last_[current]];
+        };
+        auto load = [&](int run) {
+            const RunBox& box = run_box_[run];
+            lo_x = box.lo[0], lo_y = box.lo[1], lo_z = box.lo[2];
+            hi_x = box.hi[0], hi_y = box.hi[1], hi_z = box.hi[2];
+            far = run_far_range_[run], near = run_near_range_[run];
+            size = run_size_[run], first_input = run_first_input_[run];
+            current = run;
+        };
+        // Each row's elevation: the range-weighted mean sine of its points' elevations.
+        float sum_z = 0.f, sum_range = 0.f;
         for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
-            const float range = range_[k];
+            const float range = ranges[k];
+            sum_z += zs[k], sum_range += range;
             // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
             for (std::size_t s = open_runs_.size(); s-- > 0 && joined < 0;) {
                 const int o = open_runs_[s];
-                const float d2 = dist2(k, run_last_[o]);
+                const uint32_t last = run_last_[o];
+                const float last_range = ranges[last];
+                const float d2 = dist2(k, last);
                 bool link = d2 < merge2;
-                if (!link && d2 < occlusion2 && std::fabs(range - run_last_range_[o]) < t_horz) {
+                if (!link && d2 < occlusion2 && std::fabs(range - last_range) < t_horz) {
                     // Across an occlusion only if every point swept since the run's end is
                     // in front of both ends (rare: computed only here).
-                    const float in_front = std::min(range, run_last_range_[o]) - t_horz;
-                    link = run_last_[o] + 1 < k;
-                    for (uint32_t j = run_last_[o] + 1; j < k && link; ++j)
-                        link = range_[j] < in_front;
+                    const float in_front = std::min(range, last_range) - t_horz;
+                    link = last + 1 < k;
+                    for (uint32_t j = last + 1; j < k && link; ++j) link = ranges[j] < in_front;
                 }
                 if (link) joined = o, joined_slot = s;
             }
             if (joined >= 0) {
                 next_in_run_[run_last_[joined]] = k;
                 next_in_run_[k] = kEndOfRun;
-                growBox(joined, k);
                 run_last_[joined] = k;
-                run_last_range_[joined] = range;
-                run_far_range_[joined] = std::max(run_far_range_[joined], range);
-                run_near_range_[joined] = std::min(run_near_range_[joined], range);
-                run_col_end_[joined] = sorted_col_[k];
-                ++run_size_[joined];
-                run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
                 point_run_[k] = joined;
+                if (joined != current) store(), load(joined);
+                lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
+                lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
+                hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
+                far = std::max(far, range), near = std::min(near, range);
+                ++size;
+                first_input = std::min(first_input, sorted_[k]);
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
                     open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
@@ -207,20 +239,26 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 }
                 continue;
             }
+            if (current >= 0) store();
             const int run = static_cast<int>(run_first_.size());
-            run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
-            run_far_range_.push_back(range), run_near_range_.push_back(range);
+            run_first_.push_back(k), run_last_.push_back(k);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
-            run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
             parent_.push_back(run);
-            const Eigen::Array4f p(px_[k], py_[k], pz_[k], 0.f);
-            run_box_.push_back(RunBox{p, p});
+            // Written by store().
+            run_far_range_.emplace_back(), run_near_range_.emplace_back();
+            run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
+            current = run;
+            lo_x = hi_x = xs[k], lo_y = hi_y = ys[k], lo_z = hi_z = zs[k];
+            far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
             next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
+        if (current >= 0) store();
+        if (sum_range > 0.f)
+            row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
         if (seam_col >= 0 && seam2 > 0.f)
             linkAcrossSeam(static_cast<int>(row_runs_begin_[r]),
                            static_cast<int>(run_first_.size()), seam_col, cols, seam2);

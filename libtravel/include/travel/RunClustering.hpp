@@ -106,8 +106,8 @@ class RunClustering {
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
     std::vector<uint32_t> run_first_, run_last_;
-    std::vector<float> run_last_range_, run_far_range_, run_near_range_;  // last, max, min
-    std::vector<float> row_elevation_;  // mean elevation of each row [rad]
+    std::vector<float> run_far_range_, run_near_range_;  // max, min
+    std::vector<float> row_elevation_;                   // mean elevation of each row [rad]
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
     std::vector<uint32_t> run_size_, run_first_input_;  // points, smallest input index
@@ -126,7 +126,6 @@ class RunClustering {
     // kEndOfRun.
     static constexpr uint32_t kEndOfRun = 0xffffffffu;
     std::vector<uint32_t> next_in_run_;
-    void growBox(int run, uint32_t k);  // adds sorted point k to the run's box
     std::vector<int32_t> parent_;
     std::vector<int32_t> open_runs_;                 // of the ring being swept, most recent last
     std::vector<int32_t> seam_before_, seam_after_;  // runs ending / starting at the seam
