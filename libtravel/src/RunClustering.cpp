@@ -115,7 +115,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(merge_dist2_, runs);
+    prefault(parent_, runs), prefault(merge_dist2_, runs), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
     prefault(run_box_, runs);
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
@@ -333,19 +333,25 @@ void RunClustering::vertical(const Params& params) {
     // the pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then
     // those where b starts before lo and reaches it (for each b, the a whose lo lies in b's
     // columns). No pair is visited twice, and none that does not overlap.
-    auto compare = [&](uint32_t a, uint32_t b) {
-        // Per axis max(0, gap) (0 where the boxes overlap), added as x^2 + y^2 + z^2.
+    // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
+    // overlap), added as x^2 + y^2 + z^2.
+    auto boxGap2 = [box](uint32_t a, uint32_t b) {
         const Eigen::Array4f gap =
             (box[a].lo - box[b].hi).max(box[b].lo - box[a].hi).max(Eigen::Array4f::Zero());
         const Eigen::Array4f gap2 = gap * gap;
-        const float max_dist2 = merge_dist2_[a];
-        if (!(gap2[0] + gap2[1] + gap2[2] < max_dist2)) return;
+        return gap2[0] + gap2[1] + gap2[2];
+    };
+    auto merge = [&](uint32_t a, uint32_t b) {
         const int root_a = find(static_cast<int>(a)), root_b = find(static_cast<int>(b));
         if (root_a == root_b ||
-            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, max_dist2))
+            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, merge_dist2_[a]))
             return;
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
+    // The runs whose boxes are near are listed without a branch (one in five is, at random),
+    // then merged.
+    near_.resize(run_first_.size());
+    uint32_t* near = near_.data();
     merge_dist2_.resize(run_first_.size());
     for (int r = 1; r < rows; ++r) {
         const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
@@ -365,14 +371,19 @@ void RunClustering::vertical(const Params& params) {
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
                 while (first < b_end && col_begin[first] < lo) ++first;
-                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b) compare(a, b);
+                uint32_t num_near = 0;
+                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b)
+                    near[num_near] = b, num_near += boxGap2(a, b) < merge_dist2_[a];
+                for (uint32_t k = 0; k < num_near; ++k) merge(a, near[k]);
             }
             // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
             first = a_begin;
             for (uint32_t b = b_begin; b < b_end; ++b) {
                 while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
+                uint32_t num_near = 0;
                 for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
-                    compare(a, b);
+                    near[num_near] = a, num_near += boxGap2(a, b) < merge_dist2_[a];
+                for (uint32_t k = 0; k < num_near; ++k) merge(near[k], b);
             }
         }
     }
