@@ -395,17 +395,21 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     // The points in front of the run before and after it on its ring, nearest first, skipping
     // background seen through the far window as well and occluders in front of the object.
     // Roots from run_root_ (no merge happens while runs are looked at).
-    constexpr int kEnclosureWalk = 10;
+    constexpr uint32_t kEnclosureWalk = 10;
     uint32_t before[kEnclosureWalk];
-    int num_before = 0;
-    for (uint32_t k = first; k > row_lo && first - k < kEnclosureWalk;)
-        if (range_[--k] < nearer_than) before[num_before++] = k;
+    int32_t before_root[kEnclosureWalk];
+    uint32_t num_before = 0;
+    // Listed without a branch (in front or not is as likely); their roots looked up once.
+    const uint32_t walk_end = first - std::min(first - row_lo, kEnclosureWalk);
+    for (uint32_t k = first; k-- > walk_end;)
+        before[num_before] = k, num_before += range_[k] < nearer_than;
     if (num_before == 0) return -1;
+    for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
     for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
         if (range_[++k] >= nearer_than) continue;
         const int root = run_root_[point_run_[k]];
-        for (int i = 0; i < num_before; ++i)
-            if (run_root_[point_run_[before[i]]] == root) {
+        for (uint32_t i = 0; i < num_before; ++i)
+            if (before_root[i] == root) {
                 enclosure_left_ = before[i], enclosure_right_ = k;
                 return root;
             }
