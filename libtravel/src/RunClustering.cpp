@@ -205,20 +205,27 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
-            for (std::size_t s = open_runs_.size(); s-- > 0 && joined < 0;) {
+            for (std::size_t s = open_runs_.size(); s-- > 0;) {
                 const int o = open_runs_[s];
                 const uint32_t last = run_last_[o];
-                const float last_range = ranges[last];
                 const float d2 = dist2(k, last);
-                bool link = d2 < merge2;
-                if (!link && d2 < occlusion2 && std::fabs(range - last_range) < t_horz) {
+                // The usual case first, alone: one branch, taken for most points.
+                if (d2 < merge2) {
+                    joined = o, joined_slot = s;
+                    break;
+                }
+                const float last_range = ranges[last];
+                if (d2 < occlusion2 && std::fabs(range - last_range) < t_horz) {
                     // Across an occlusion only if every point swept since the run's end is
                     // in front of both ends (rare: computed only here).
                     const float in_front = std::min(range, last_range) - t_horz;
-                    link = last + 1 < k;
+                    bool link = last + 1 < k;
                     for (uint32_t j = last + 1; j < k && link; ++j) link = ranges[j] < in_front;
+                    if (link) {
+                        joined = o, joined_slot = s;
+                        break;
+                    }
                 }
-                if (link) joined = o, joined_slot = s;
             }
             if (joined >= 0) {
                 next_in_run_[run_last_[joined]] = k;
