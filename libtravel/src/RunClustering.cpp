@@ -355,10 +355,14 @@ void RunClustering::vertical(const Params& params) {
             return;
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
-    // The runs whose boxes are near are listed without a branch (one in five is, at random),
-    // then merged.
-    near_.resize(run_first_.size());
-    uint32_t* near = near_.data();
+    // The pairs whose boxes are near are listed without a branch (one in five is, at random),
+    // then merged, once per pair of rows (the list's end is known only as it is filled: its
+    // room is checked before each run's candidates, whose number bounds what they add).
+    uint32_t num_near = 0;
+    auto room = [&](uint32_t more) {
+        if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
+        return near_.data();
+    };
     merge_dist2_.resize(run_first_.size());
     for (int r = 1; r < rows; ++r) {
         const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
@@ -373,25 +377,25 @@ void RunClustering::vertical(const Params& params) {
                 const float beam_gap = run_far_range_[a] * elevation_gap / rows_apart;
                 merge_dist2_[a] = t_vert2 + beam_gap * beam_gap;
             }
+            num_near = 0;
             // b starts within [lo, hi].
             uint32_t first = b_begin;
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
                 while (first < b_end && col_begin[first] < lo) ++first;
-                uint32_t num_near = 0;
+                NearPair* near = room(b_end - first);
                 for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b)
-                    near[num_near] = b, num_near += boxGap2(a, b) < merge_dist2_[a];
-                for (uint32_t k = 0; k < num_near; ++k) merge(a, near[k]);
+                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
             }
             // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
             first = a_begin;
             for (uint32_t b = b_begin; b < b_end; ++b) {
                 while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
-                uint32_t num_near = 0;
+                NearPair* near = room(a_end - first);
                 for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
-                    near[num_near] = a, num_near += boxGap2(a, b) < merge_dist2_[a];
-                for (uint32_t k = 0; k < num_near; ++k) merge(near[k], b);
+                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
             }
+            for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
     }
     linkSeenThrough(params);

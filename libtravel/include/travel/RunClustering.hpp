@@ -121,7 +121,10 @@ class RunClustering {
     // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
     // distance below which its points merge with the lower row's.
     std::vector<float> merge_dist2_;
-    std::vector<uint32_t> near_;      // runs whose boxes are near the one in hand, see vertical()
+    struct NearPair {
+        uint32_t a, b;  // runs of the upper and the lower row whose boxes are near
+    };
+    std::vector<NearPair> near_;      // see vertical()
     std::vector<int32_t> point_run_;  // run of each sorted point
     // The points of a run, in column order: from run_first_, each point's successor, up to
     // kEndOfRun.
