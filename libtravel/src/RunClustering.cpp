@@ -340,6 +340,7 @@ void RunClustering::vertical(const Params& params) {
     // the pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then
     // those where b starts before lo and reaches it (for each b, the a whose lo lies in b's
     // columns). No pair is visited twice, and none that does not overlap.
+
     // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
     // overlap), added as x^2 + y^2 + z^2.
     auto boxGap2 = [box](uint32_t a, uint32_t b) {
