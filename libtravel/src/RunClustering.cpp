@@ -71,7 +71,7 @@ namespace {
 
 // out[k] = std::sqrt(x^2 + y^2 + z^2), the same floats, 4 at a time: std::sqrt keeps a branch
 // for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
-void ranges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
+void computeRanges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
     uint32_t k = 0;
 #ifdef __SSE2__
     for (; k + 4 <= n; k += 4) {
@@ -155,7 +155,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         // Contiguous copies in sorted order: every later access is by sorted position.
         px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
     }
-    ranges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
+    computeRanges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
     row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
 
     // Runs, ring by ring.
