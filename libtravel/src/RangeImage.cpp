@@ -182,6 +182,42 @@ void quantisedElevations(const float* xs, const float* ys, const float* zs, std:
     }
 }
 
+// A block of the scan-order walk (RowAssigner::findRings): the azimuth swept from each
+// point's predecessor to it, summed into `sweep`, and whether the block holds a point without
+// azimuth or a drop of the offset from `cut` by more than half a turn (a wrap: the walk then
+// takes the block point by point). `azimuth[-1]` is read. Integer arithmetic: every clone
+// gives the same result.
+template <int Direction>
+bool blockSweepImpl(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    auto offsetOf = [cut](int a) {  // swept since the cut, in [0, turn)
+        const int offset = Direction * (a - cut);
+        return offset + (offset < 0 ? kTurn : 0);
+    };
+    int irregular = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+        const int a = azimuth[j], p = azimuth[static_cast<std::ptrdiff_t>(j) - 1];
+        irregular |= (a == kNoAngle) | (offsetOf(p) - offsetOf(a) > kHalfTurn);
+        sweep += Direction * angleDifference(a, p);
+    }
+    return irregular != 0;
+}
+
+TRAVEL_AVX2_CLONES
+bool blockSweepForward(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return blockSweepImpl<+1>(azimuth, count, cut, sweep);
+}
+
+TRAVEL_AVX2_CLONES
+bool blockSweepBackward(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return blockSweepImpl<-1>(azimuth, count, cut, sweep);
+}
+
+template <int Direction>
+bool blockSweep(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return Direction > 0 ? blockSweepForward(azimuth, count, cut, sweep)
+                         : blockSweepBackward(azimuth, count, cut, sweep);
+}
+
 // ---- Ring statistics and row maps ------------------------------------------------------------
 
 // Per ring, sum z / sum range is the range-weighted mean sine of elevation: far points, whose
@@ -462,12 +498,10 @@ class RowAssigner {
         while (i < n_) {
             const std::size_t block_end = std::min(n_, i + kBlock);
             if (cut != kNoAngle && i > 0 && azimuth[i - 1] != kNoAngle && block_end - i == kBlock) {
-                int block_sweep = 0, irregular = 0;
-                for (std::size_t j = i; j < block_end; ++j) {
-                    const int a = azimuth[j], p = azimuth[j - 1];
-                    irregular |= (a == kNoAngle) | (offsetOf(p) - offsetOf(a) > kHalfTurn);
-                    block_sweep += Direction * angleDifference(a, p);
-                }
+                int block_sweep = 0;
+                const bool irregular = Direction > 0
+                                           ? blockSweep<+1>(azimuth + i, kBlock, cut, block_sweep)
+                                           : blockSweep<-1>(azimuth + i, kBlock, cut, block_sweep);
                 if (!irregular) {
                     sweep += block_sweep;
                     previous = azimuth[block_end - 1];
