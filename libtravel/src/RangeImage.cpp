@@ -145,10 +145,13 @@ inline int angleDifference(int a, int b) {
     return d;
 }
 
-// The two per-point loops of build() are compiled twice, for baseline x86-64 and for AVX2
-// (8 lanes instead of 4), picked at load time. The same operations in the same order per lane
-// (AVX2 without FMA: nothing is contracted), so the same results.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+// The per-point loops of build() (and the scan-order walk's block test below) are compiled
+// twice, for baseline x86-64 and for AVX2 (8 lanes instead of 4), picked at load time. The
+// same operations in the same order per lane (AVX2 without FMA: nothing is contracted), so the
+// same results. Not under the sanitizers: the clones' resolver runs before their runtime is
+// set up (a ThreadSanitizer build crashes there).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
 #define TRAVEL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define TRAVEL_AVX2_CLONES
