@@ -10,9 +10,12 @@
 #include <cstdint>
 #include <cstring>
 
-// TRAVEL_NO_CPU_DISPATCH builds the baseline copy only (to check it on an AVX2 machine).
+// TRAVEL_NO_CPU_DISPATCH builds the baseline copy only (to check it on an AVX2 machine). Not
+// under the sanitizers either: the clones' resolver runs before their runtime is set up (a
+// ThreadSanitizer build crashes there).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(TRAVEL_NO_CPU_DISPATCH)
+    !defined(TRAVEL_NO_CPU_DISPATCH) && !defined(__SANITIZE_ADDRESS__) &&                    \
+    !defined(__SANITIZE_THREAD__)
 #define TRAVEL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define TRAVEL_AVX2_CLONES

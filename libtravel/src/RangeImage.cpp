@@ -19,7 +19,8 @@
 // build() makes three passes over the points: one vectorised (azimuths and columns), one that
 // assigns provisional ring ids (field statistics, the scan-order walk, or the elevation table),
 // and one mapping them to rows: 0.55 ms for a 124k-point KITTI frame on the development machine
-// (baseline SSE2 code; 0.38 ms when compiled for AVX2 + FMA).
+// with baseline SSE2 code, ~0.3 ms with the per-point loops' AVX2 clones (see
+// TRAVEL_AVX2_CLONES; docs/performance.md).
 #include "travel/RangeImage.hpp"
 
 #include <algorithm>
@@ -31,6 +32,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "CpuDispatch.hpp"
 #include "FastAtan2.hpp"
 #include "Prefault.hpp"
 #include "travel/EnumNames.hpp"
@@ -142,6 +144,73 @@ inline int angleDifference(int a, int b) {
     d -= d >= kHalfTurn ? kTurn : 0;
     d += d < -kHalfTurn ? kTurn : 0;
     return d;
+}
+
+// The per-point loops of build() (and the scan-order walk's block test below) are compiled
+// twice, for baseline x86-64 and for AVX2 (CpuDispatch.hpp: same results, more lanes).
+
+// Quantised azimuths (for the scan-order walk) and final columns: col = floor((azimuth + pi) /
+// 2 pi * columns), clamped (azimuth +pi, y = +0 and x < 0, is the last column, -pi the first;
+// no azimuth, x = y = 0 or NaN, column 0), -1 where !keep.
+TRAVEL_AVX2_CLONES
+void azimuthsAndColumns(const float* xs, const float* ys, const uint8_t* keep, std::size_t n,
+                        int cols, int16_t* azimuth16, int32_t* col) {
+    const float columns_per_rad = static_cast<float>(cols) / (2.0f * kPi);
+    const float middle = 0.5f * static_cast<float>(cols);
+    const float last = static_cast<float>(cols - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const float azimuth = fastAtan2(ys[i], xs[i]);
+        azimuth16[i] = quantisedAngle(azimuth);
+        float column = std::max(0.0f, azimuth * columns_per_rad + middle);  // NaN -> 0
+        column = std::min(column, last);
+        col[i] = keep[i] ? static_cast<int32_t>(column) : -1;
+    }
+}
+
+// Quantised elevations seen from origin_height above the origin.
+TRAVEL_AVX2_CLONES
+void quantisedElevations(const float* xs, const float* ys, const float* zs, std::size_t n,
+                         float origin_height, int16_t* elevation16) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const float horizontal = vectorisableSqrt(xs[i] * xs[i] + ys[i] * ys[i]);
+        elevation16[i] = quantisedAngle(fastAtan2(zs[i] - origin_height, horizontal));
+    }
+}
+
+// A block of the scan-order walk (RowAssigner::findRings): the azimuth swept from each
+// point's predecessor to it, summed into `sweep`, and whether the block holds a point without
+// azimuth or a drop of the offset from `cut` by more than half a turn (a wrap: the walk then
+// takes the block point by point). `azimuth[-1]` is read. Integer arithmetic: every clone
+// gives the same result.
+template <int Direction>
+bool blockSweepImpl(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    auto offsetOf = [cut](int a) {  // swept since the cut, in [0, turn)
+        const int offset = Direction * (a - cut);
+        return offset + (offset < 0 ? kTurn : 0);
+    };
+    int irregular = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+        const int a = azimuth[j], p = azimuth[static_cast<std::ptrdiff_t>(j) - 1];
+        irregular |= (a == kNoAngle) | (offsetOf(p) - offsetOf(a) > kHalfTurn);
+        sweep += Direction * angleDifference(a, p);
+    }
+    return irregular != 0;
+}
+
+TRAVEL_AVX2_CLONES
+bool blockSweepForward(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return blockSweepImpl<+1>(azimuth, count, cut, sweep);
+}
+
+TRAVEL_AVX2_CLONES
+bool blockSweepBackward(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return blockSweepImpl<-1>(azimuth, count, cut, sweep);
+}
+
+template <int Direction>
+bool blockSweep(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
+    return Direction > 0 ? blockSweepForward(azimuth, count, cut, sweep)
+                         : blockSweepBackward(azimuth, count, cut, sweep);
 }
 
 // ---- Ring statistics and row maps ------------------------------------------------------------
@@ -371,13 +440,10 @@ class RowAssigner {
         // Vectorised: quantised elevations, in `row`.
         const float origin_height =
             params_.elevation_table == "hdl64" ? kHdl64BeamOriginHeight : 0.0f;
-        const float *xs = cloud_.x.data(), *ys = cloud_.y.data(), *zs = cloud_.z.data();
+        quantisedElevations(cloud_.x.data(), cloud_.y.data(), cloud_.z.data(), n_, origin_height,
+                            row_.data());
         int16_t* row = row_.data();
         const std::size_t n = n_;
-        for (std::size_t i = 0; i < n; ++i) {
-            const float horizontal = vectorisableSqrt(xs[i] * xs[i] + ys[i] * ys[i]);
-            row[i] = quantisedAngle(fastAtan2(zs[i] - origin_height, horizontal));
-        }
         // A search per point would cost more than all the rest: the row of every quantised
         // elevation (65536 values, 128 KiB) is looked up instead, row = the number of quantised
         // boundaries <= the elevation (kNoAngle, NaN, ends on row 0). Built once per table.
@@ -427,12 +493,10 @@ class RowAssigner {
         while (i < n_) {
             const std::size_t block_end = std::min(n_, i + kBlock);
             if (cut != kNoAngle && i > 0 && azimuth[i - 1] != kNoAngle && block_end - i == kBlock) {
-                int block_sweep = 0, irregular = 0;
-                for (std::size_t j = i; j < block_end; ++j) {
-                    const int a = azimuth[j], p = azimuth[j - 1];
-                    irregular |= (a == kNoAngle) | (offsetOf(p) - offsetOf(a) > kHalfTurn);
-                    block_sweep += Direction * angleDifference(a, p);
-                }
+                int block_sweep = 0;
+                const bool irregular = Direction > 0
+                                           ? blockSweep<+1>(azimuth + i, kBlock, cut, block_sweep)
+                                           : blockSweep<-1>(azimuth + i, kBlock, cut, block_sweep);
                 if (!irregular) {
                     sweep += block_sweep;
                     previous = azimuth[block_end - 1];
@@ -523,28 +587,12 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     }
 
     // Pass 1, vectorised: the final columns, and the quantised azimuths for the scan-order walk
-    // (in row_ until the rows replace them). col = floor((azimuth + pi) / 2 pi * columns),
-    // clamped: azimuth +pi (y = +0, x < 0) is the last column, -pi the first. Points without
-    // azimuth (x = y = 0, NaN) get column 0.
+    // (in row_ until the rows replace them).
     row_.resize(n);
     col_.resize(n);
     cols_ = params.num_columns;
-    {
-        const float *xs = cloud.x.data(), *ys = cloud.y.data();
-        const uint8_t* keep = valid.data();
-        int16_t* azimuth16 = row_.data();
-        int32_t* col = col_.data();
-        const float columns_per_rad = static_cast<float>(cols_) / (2.0f * kPi);
-        const float middle = 0.5f * static_cast<float>(cols_);
-        const float last = static_cast<float>(cols_ - 1);
-        for (std::size_t i = 0; i < n; ++i) {
-            const float azimuth = fastAtan2(ys[i], xs[i]);
-            azimuth16[i] = quantisedAngle(azimuth);
-            float column = std::max(0.0f, azimuth * columns_per_rad + middle);  // NaN -> 0
-            column = std::min(column, last);
-            col[i] = keep[i] ? static_cast<int32_t>(column) : -1;
-        }
-    }
+    azimuthsAndColumns(cloud.x.data(), cloud.y.data(), valid.data(), n, cols_, row_.data(),
+                       col_.data());
 
     // Sweep start (header): the earliest valid point by time, else the first valid point.
     sweep_start_col_ = -1;

@@ -52,6 +52,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
@@ -64,41 +67,24 @@ inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
     return dx * dx + dy * dy + dz * dz;
 }
 
-void RunClustering::markNearRuns(const RunBox& a, int lo, uint32_t begin, uint32_t end,
-                                 float max_gap2) {
-    near_.resize(end - begin);
-    const float *lx = run_lo_[0].data(), *ly = run_lo_[1].data(), *lz = run_lo_[2].data();
-    const float *hx = run_hi_[0].data(), *hy = run_hi_[1].data(), *hz = run_hi_[2].data();
-    const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
-    int32_t* near = near_.data();
-    // Branch-free, so that it vectorises: the boxes of most pairs are apart, along any axis.
-    for (uint32_t b = begin; b < end; ++b) {
-        const float gx = std::max(0.f, std::max(a.lo[0] - hx[b], lx[b] - a.hi[0]));
-        const float gy = std::max(0.f, std::max(a.lo[1] - hy[b], ly[b] - a.hi[1]));
-        const float gz = std::max(0.f, std::max(a.lo[2] - hz[b], lz[b] - a.hi[2]));
-        const float gap2 = gx * gx + gy * gy + gz * gz;
-        near[b - begin] =
-            (col_end[b] >= lo) & (col_end[b] - col_begin[b] <= kLongSpan) & (gap2 < max_gap2);
+namespace {
+
+// out[k] = std::sqrt(x^2 + y^2 + z^2), the same floats, 4 at a time: std::sqrt keeps a branch
+// for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
+void computeRanges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
+    uint32_t k = 0;
+#ifdef __SSE2__
+    for (; k + 4 <= n; k += 4) {
+        const __m128 vx = _mm_loadu_ps(x + k), vy = _mm_loadu_ps(y + k), vz = _mm_loadu_ps(z + k);
+        const __m128 sum =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz));
+        _mm_storeu_ps(out + k, _mm_sqrt_ps(sum));
     }
+#endif
+    for (; k < n; ++k) out[k] = std::sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]);
 }
 
-// Squared gap between box a and run b's box (0 where they overlap): no two of their points
-// are closer.
-float RunClustering::boxGap2(const RunBox& a, int b) const {
-    float gap2 = 0.f;
-    for (int d = 0; d < 3; ++d) {
-        const float g = std::max(0.f, std::max(a.lo[d] - run_hi_[d][b], run_lo_[d][b] - a.hi[d]));
-        gap2 += g * g;
-    }
-    return gap2;
-}
-
-inline void RunClustering::growBox(int run, uint32_t k) {
-    for (int d = 0; d < 3; ++d) {
-        run_lo_[d][run] = std::min(run_lo_[d][run], point(d)[k]);
-        run_hi_[d][run] = std::max(run_hi_[d][run], point(d)[k]);
-    }
-}
+}  // namespace
 
 inline int RunClustering::find(int run) {
     while (parent_[run] != run) {
@@ -126,12 +112,12 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(input_, points), prefault(key_, points);
     // Runs: a few points each on real scans; more grow the buffers once.
     const std::size_t runs = points / 4 + 1;
-    prefault(run_first_, runs), prefault(run_last_, runs), prefault(run_last_range_, runs);
+    prefault(run_first_, runs), prefault(run_last_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(near_, runs);
+    prefault(parent_, runs), prefault(merge_dist2_, runs), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
-    for (int d = 0; d < 3; ++d) prefault(run_lo_[d], runs), prefault(run_hi_[d], runs);
+    prefault(run_box_, runs);
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
@@ -169,24 +155,13 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         // Contiguous copies in sorted order: every later access is by sorted position.
         px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
     }
-    for (uint32_t k = 0; k < total; ++k)
-        range_[k] = std::sqrt(px_[k] * px_[k] + py_[k] * py_[k] + pz_[k] * pz_[k]);
-    // Each row's elevation: the range-weighted mean sine of its points' elevations.
+    computeRanges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
     row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
-    for (int r = 0; r < rows; ++r) {
-        float sum_z = 0.f, sum_range = 0.f;
-        for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k)
-            sum_z += pz_[k], sum_range += range_[k];
-        if (sum_range > 0.f)
-            row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
-    }
 
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
-    run_row_.clear(), parent_.clear(), run_last_range_.clear(), run_far_range_.clear();
-    run_near_range_.clear();
-    run_size_.clear(), run_first_input_.clear();
-    for (int d = 0; d < 3; ++d) run_lo_[d].clear(), run_hi_[d].clear();
+    run_row_.clear(), parent_.clear(), run_far_range_.clear(), run_near_range_.clear();
+    run_size_.clear(), run_first_input_.clear(), run_box_.clear();
     point_run_.resize(total), next_in_run_.resize(total);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
@@ -196,40 +171,74 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
     const int seam_col = image.sweepStartColumn();
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
+    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data(), *ranges = range_.data();
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
+        // The most recent open run, whose points mostly follow one another: its box, ranges,
+        // size and first input point are kept here (registers) and written back when another
+        // run takes a point (one store per point instead of a dozen read-modify-writes).
+        int current = -1;
+        float lo_x = 0, lo_y = 0, lo_z = 0, hi_x = 0, hi_y = 0, hi_z = 0, far = 0, near = 0;
+        uint32_t size = 0, first_input = 0;
+        auto store = [&] {
+            RunBox& box = run_box_[current];
+            box.lo[0] = lo_x, box.lo[1] = lo_y, box.lo[2] = lo_z, box.lo[3] = 0.f;
+            box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
+            run_far_range_[current] = far, run_near_range_[current] = near;
+            run_size_[current] = size, run_first_input_[current] = first_input;
+            run_col_end_[current] = sorted_col_[run_last_[current]];
+        };
+        auto load = [&](int run) {
+            const RunBox& box = run_box_[run];
+            lo_x = box.lo[0], lo_y = box.lo[1], lo_z = box.lo[2];
+            hi_x = box.hi[0], hi_y = box.hi[1], hi_z = box.hi[2];
+            far = run_far_range_[run], near = run_near_range_[run];
+            size = run_size_[run], first_input = run_first_input_[run];
+            current = run;
+        };
+        // Each row's elevation: the range-weighted mean sine of its points' elevations.
+        float sum_z = 0.f, sum_range = 0.f;
         for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
-            const float range = range_[k];
+            const float range = ranges[k];
+            sum_z += zs[k], sum_range += range;
             // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
-            for (std::size_t s = open_runs_.size(); s-- > 0 && joined < 0;) {
+            for (std::size_t s = open_runs_.size(); s-- > 0;) {
                 const int o = open_runs_[s];
-                const float d2 = dist2(k, run_last_[o]);
-                bool link = d2 < merge2;
-                if (!link && d2 < occlusion2 && std::fabs(range - run_last_range_[o]) < t_horz) {
+                const uint32_t last = run_last_[o];
+                const float d2 = dist2(k, last);
+                // The usual case first, alone: one branch, taken for most points.
+                if (d2 < merge2) {
+                    joined = o, joined_slot = s;
+                    break;
+                }
+                const float last_range = ranges[last];
+                if (d2 < occlusion2 && std::fabs(range - last_range) < t_horz) {
                     // Across an occlusion only if every point swept since the run's end is
                     // in front of both ends (rare: computed only here).
-                    const float in_front = std::min(range, run_last_range_[o]) - t_horz;
-                    link = run_last_[o] + 1 < k;
-                    for (uint32_t j = run_last_[o] + 1; j < k && link; ++j)
-                        link = range_[j] < in_front;
+                    const float in_front = std::min(range, last_range) - t_horz;
+                    bool link = last + 1 < k;
+                    for (uint32_t j = last + 1; j < k && link; ++j) link = ranges[j] < in_front;
+                    if (link) {
+                        joined = o, joined_slot = s;
+                        break;
+                    }
                 }
-                if (link) joined = o, joined_slot = s;
             }
             if (joined >= 0) {
                 next_in_run_[run_last_[joined]] = k;
                 next_in_run_[k] = kEndOfRun;
-                growBox(joined, k);
                 run_last_[joined] = k;
-                run_last_range_[joined] = range;
-                run_far_range_[joined] = std::max(run_far_range_[joined], range);
-                run_near_range_[joined] = std::min(run_near_range_[joined], range);
-                run_col_end_[joined] = sorted_col_[k];
-                ++run_size_[joined];
-                run_first_input_[joined] = std::min(run_first_input_[joined], sorted_[k]);
                 point_run_[k] = joined;
+                if (joined != current) store(), load(joined);
+                lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
+                lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
+                hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
+                far = std::max(far, range), near = std::min(near, range);
+                ++size;
+                first_input = std::min(first_input, sorted_[k]);
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
                     open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
@@ -237,20 +246,26 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 }
                 continue;
             }
+            if (current >= 0) store();
             const int run = static_cast<int>(run_first_.size());
-            run_first_.push_back(k), run_last_.push_back(k), run_last_range_.push_back(range);
-            run_far_range_.push_back(range), run_near_range_.push_back(range);
+            run_first_.push_back(k), run_last_.push_back(k);
             run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
             run_row_.push_back(static_cast<int16_t>(r));
-            run_size_.push_back(1), run_first_input_.push_back(sorted_[k]);
             parent_.push_back(run);
-            for (int d = 0; d < 3; ++d)
-                run_lo_[d].push_back(point(d)[k]), run_hi_[d].push_back(point(d)[k]);
+            // Written by store().
+            run_far_range_.emplace_back(), run_near_range_.emplace_back();
+            run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
+            current = run;
+            lo_x = hi_x = xs[k], lo_y = hi_y = ys[k], lo_z = hi_z = zs[k];
+            far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
             next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
+        if (current >= 0) store();
+        if (sum_range > 0.f)
+            row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
         if (seam_col >= 0 && seam2 > 0.f)
             linkAcrossSeam(static_cast<int>(row_runs_begin_[r]),
                            static_cast<int>(run_first_.size()), seam_col, cols, seam2);
@@ -314,76 +329,74 @@ void RunClustering::vertical(const Params& params) {
     const int ext = params.vertical_column_extension;
     const float t_vert2 =
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
-    float merge2 = t_vert2;  // for the pair of rows being compared, see the file comment
-    // The long runs of each row (see kLongSpan).
-    long_runs_.clear(), long_reach_.clear();
-    long_runs_begin_.assign(rows + 1, 0);
-    for (int r = 0; r < rows; ++r) {
-        long_runs_begin_[r] = static_cast<uint32_t>(long_runs_.size());
-        int32_t reach = std::numeric_limits<int32_t>::min();
-        for (uint32_t b = row_runs_begin_[r]; b < row_runs_begin_[r + 1]; ++b) {
-            if (run_col_end_[b] - run_col_begin_[b] <= kLongSpan) continue;
-            long_runs_.push_back(static_cast<int32_t>(b));
-            // Running max of the long runs' last columns (non-decreasing): every long run
-            // before the first one reaching lo ends before lo.
-            reach = std::max(reach, run_col_end_[b]);
-            long_reach_.push_back(reach);
-        }
-    }
-    long_runs_begin_[rows] = static_cast<uint32_t>(long_runs_.size());
-
-    // Runs of row r are visited in column order, so the first candidate of each lower row
-    // only moves forward: one pointer per lower row instead of a binary search per query.
-    // A pair is compared point by point only when its boxes are within T_vert: most pairs in
-    // the column window are not (a wall behind a bush), so the box test is the hot path.
     const int span = params.vertical_ring_span;
-    window_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
-    long_start_.resize(static_cast<std::size_t>(std::max(span, 0)));
-    // Every merge while run a is compared involves a, so its root is found once per run a and
-    // kept up to date here (the root of a union is the smaller one, as in unite()).
-    int root_a = 0;
-    auto mergeIfTouching = [&](int a, int b) {
-        const int root_b = find(b);
-        if (root_a == root_b || !runsTouch(a, b, ext, merge2)) return;
-        parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
-        root_a = std::min(root_a, root_b);
+    const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
+    const RunBox* box = run_box_.data();
+    // Run a of the upper row and run b of a lower row are compared when b's columns overlap
+    // a's widened by T_ext, [lo, hi]; they merge when two of their points are nearer than
+    // merge_dist2_[a] (see the file comment); most pairs' boxes are already farther apart (a
+    // wall behind a bush), so the box test comes first. The merges give the same clusters in
+    // any order, so each pair of rows is swept once, both rows' runs in first-column order:
+    // the pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then
+    // those where b starts before lo and reaches it (for each b, the a whose lo lies in b's
+    // columns). No pair is visited twice, and none that does not overlap.
+
+    // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
+    // overlap), added as x^2 + y^2 + z^2.
+    auto boxGap2 = [box](uint32_t a, uint32_t b) {
+        const Eigen::Array4f gap =
+            (box[a].lo - box[b].hi).max(box[b].lo - box[a].hi).max(Eigen::Array4f::Zero());
+        const Eigen::Array4f gap2 = gap * gap;
+        return gap2[0] + gap2[1] + gap2[2];
     };
+    auto merge = [&](uint32_t a, uint32_t b) {
+        const int root_a = find(static_cast<int>(a)), root_b = find(static_cast<int>(b));
+        if (root_a == root_b ||
+            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, merge_dist2_[a]))
+            return;
+        parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
+    };
+    // The pairs whose boxes are near are listed without a branch (one in five is, at random),
+    // then merged, once per pair of rows (the list's end is known only as it is filled: its
+    // room is checked before each run's candidates, whose number bounds what they add).
+    uint32_t num_near = 0;
+    auto room = [&](uint32_t more) {
+        if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
+        return near_.data();
+    };
+    merge_dist2_.resize(run_first_.size());
     for (int r = 1; r < rows; ++r) {
-        const int lowest = std::max(0, r - span);
-        for (int rr = lowest; rr < r; ++rr) {
-            window_start_[r - 1 - rr] = row_runs_begin_[rr];
-            long_start_[r - 1 - rr] = long_runs_begin_[rr];
-        }
-        for (uint32_t a = row_runs_begin_[r]; a < row_runs_begin_[r + 1]; ++a) {
-            root_a = find(static_cast<int>(a));
-            RunBox box_a;
-            for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
-            const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
-            for (int rr = r - 1; rr >= lowest; --rr) {
-                const float beam_gap = run_far_range_[a] *
-                                       std::fabs(row_elevation_[r] - row_elevation_[rr]) /
-                                       float(r - rr);
-                merge2 = t_vert2 + beam_gap * beam_gap;
-                uint32_t& start = window_start_[r - 1 - rr];
-                const uint32_t end = row_runs_begin_[rr + 1];
-                while (start < end && run_col_begin_[start] < lo - kLongSpan) ++start;
-                uint32_t stop = start;
-                while (stop < end && run_col_begin_[stop] <= hi) ++stop;
-                markNearRuns(box_a, lo, start, stop, merge2);
-                for (uint32_t b = start; b < stop; ++b)
-                    if (near_[b - start]) mergeIfTouching(static_cast<int>(a), static_cast<int>(b));
-                // Long runs are in first-column order too: start at the first that can reach lo
-                // (forward-moving, as lo only grows) and stop at the first beyond hi.
-                uint32_t& long_start = long_start_[r - 1 - rr];
-                const uint32_t long_end = long_runs_begin_[rr + 1];
-                while (long_start < long_end && long_reach_[long_start] < lo) ++long_start;
-                for (uint32_t l = long_start; l < long_end && run_col_begin_[long_runs_[l]] <= hi;
-                     ++l) {
-                    const int b = long_runs_[l];
-                    if (run_col_end_[b] >= lo && boxGap2(box_a, b) < merge2)
-                        mergeIfTouching(static_cast<int>(a), b);
-                }
+        const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
+        // The nearest rows first: their merges make the farther rows' pairs mostly one cluster
+        // already, and those skip the point-by-point test.
+        for (int rr = r - 1; rr >= std::max(0, r - span); --rr) {
+            const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
+            if (a_begin == a_end || b_begin == b_end) continue;
+            const float elevation_gap = std::fabs(row_elevation_[r] - row_elevation_[rr]);
+            const float rows_apart = float(r - rr);
+            for (uint32_t a = a_begin; a < a_end; ++a) {
+                const float beam_gap = run_far_range_[a] * elevation_gap / rows_apart;
+                merge_dist2_[a] = t_vert2 + beam_gap * beam_gap;
             }
+            num_near = 0;
+            // b starts within [lo, hi].
+            uint32_t first = b_begin;
+            for (uint32_t a = a_begin; a < a_end; ++a) {
+                const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
+                while (first < b_end && col_begin[first] < lo) ++first;
+                NearPair* near = room(b_end - first);
+                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b)
+                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+            }
+            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
+            first = a_begin;
+            for (uint32_t b = b_begin; b < b_end; ++b) {
+                while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
+                NearPair* near = room(a_end - first);
+                for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
+                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+            }
+            for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
     }
     linkSeenThrough(params);
@@ -394,17 +407,21 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     // The points in front of the run before and after it on its ring, nearest first, skipping
     // background seen through the far window as well and occluders in front of the object.
     // Roots from run_root_ (no merge happens while runs are looked at).
-    constexpr int kEnclosureWalk = 10;
+    constexpr uint32_t kEnclosureWalk = 10;
     uint32_t before[kEnclosureWalk];
-    int num_before = 0;
-    for (uint32_t k = first; k > row_lo && first - k < kEnclosureWalk;)
-        if (range_[--k] < nearer_than) before[num_before++] = k;
+    int32_t before_root[kEnclosureWalk];
+    uint32_t num_before = 0;
+    // Listed without a branch (in front or not is as likely); their roots looked up once.
+    const uint32_t walk_end = first - std::min(first - row_lo, kEnclosureWalk);
+    for (uint32_t k = first; k-- > walk_end;)
+        before[num_before] = k, num_before += range_[k] < nearer_than;
     if (num_before == 0) return -1;
+    for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
     for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
         if (range_[++k] >= nearer_than) continue;
         const int root = run_root_[point_run_[k]];
-        for (int i = 0; i < num_before; ++i)
-            if (run_root_[point_run_[before[i]]] == root) {
+        for (uint32_t i = 0; i < num_before; ++i)
+            if (before_root[i] == root) {
                 enclosure_left_ = before[i], enclosure_right_ = k;
                 return root;
             }

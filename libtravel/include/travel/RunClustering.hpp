@@ -106,40 +106,30 @@ class RunClustering {
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
     std::vector<uint32_t> run_first_, run_last_;
-    std::vector<float> run_last_range_, run_far_range_, run_near_range_;  // last, max, min
-    std::vector<float> row_elevation_;  // mean elevation of each row [rad]
+    std::vector<float> run_far_range_, run_near_range_;  // max, min
+    std::vector<float> row_elevation_;                   // mean elevation of each row [rad]
     std::vector<int32_t> run_col_begin_, run_col_end_;
     std::vector<int16_t> run_row_;
     std::vector<uint32_t> run_size_, run_first_input_;  // points, smallest input index
-    std::vector<uint32_t> row_runs_begin_;      // runs of row r: [row_runs_begin_[r], [r + 1])
-    std::vector<float> run_lo_[3], run_hi_[3];  // bounding box of each run (x, y, z)
+    std::vector<uint32_t> row_runs_begin_;  // runs of row r: [row_runs_begin_[r], [r + 1])
+    // Bounding box of each run: x, y, z (and an unused 0), so that the vertical update's box
+    // test is a few 4-lane operations.
     struct RunBox {
-        float lo[3], hi[3];
+        Eigen::Array4f lo, hi;
     };
-    float boxGap2(const RunBox& a, int b) const;
-    // Runs of a row are ordered by first column, so the runs that can overlap [lo, hi] are - if
-    // no run were longer than kLongSpan columns - those starting in [lo - kLongSpan, hi]. The
-    // few longer runs (walls, kerbs) are listed per row and always checked, so one long run
-    // cannot turn the search into a scan of the whole row.
-    static constexpr int kLongSpan = 8;
-    // near_[b - begin] = run b of [begin, end) is short, ends at or after column lo and its box
-    // is within sqrt(max_gap2) of box a.
-    void markNearRuns(const RunBox& a, int lo, uint32_t begin, uint32_t end, float max_gap2);
-    std::vector<int32_t> near_;
-    std::vector<int32_t> long_runs_;  // runs spanning many columns, by row
-    std::vector<uint32_t> long_runs_begin_;
-    std::vector<int32_t> long_reach_;     // running max of the long runs' last columns
-    std::vector<uint32_t> window_start_;  // per lower row, during the vertical update
-    std::vector<uint32_t> long_start_;
+    std::vector<RunBox> run_box_;
+    // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
+    // distance below which its points merge with the lower row's.
+    std::vector<float> merge_dist2_;
+    struct NearPair {
+        uint32_t a, b;  // runs of the upper and the lower row whose boxes are near
+    };
+    std::vector<NearPair> near_;      // see vertical()
     std::vector<int32_t> point_run_;  // run of each sorted point
     // The points of a run, in column order: from run_first_, each point's successor, up to
     // kEndOfRun.
     static constexpr uint32_t kEndOfRun = 0xffffffffu;
     std::vector<uint32_t> next_in_run_;
-    const float* point(int axis) const {
-        return axis == 0 ? px_.data() : axis == 1 ? py_.data() : pz_.data();
-    }
-    void growBox(int run, uint32_t k);  // adds sorted point k to the run's box
     std::vector<int32_t> parent_;
     std::vector<int32_t> open_runs_;                 // of the ring being swept, most recent last
     std::vector<int32_t> seam_before_, seam_after_;  // runs ending / starting at the seam
