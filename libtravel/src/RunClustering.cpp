@@ -24,9 +24,11 @@
 //   per HDL-64E ring at 25 m, 0.66 m across T_ring = 3 lower-block rings, 0.5 m (T_vert
 //   itself) per ring at 57 m. So T_vert is the separation beyond that forced one: two runs
 //   merge when their points are closer than sqrt(T_vert^2 + (R * dtheta)^2), R the upper
-//   run's farthest range, dtheta the rows' mean elevations apart. A vertical surface with
-//   missing rings (dark paint, windows) stays one object at 25-80 m; at 10 m the bound grows by
-//   at most 2 cm per ring.
+//   point's range (points at R1, R2 on rays dtheta apart are at least max(R1, R2) dtheta
+//   apart; the run's farthest range would lend an oblique wall's far end to its near points),
+//   dtheta one ring's spacing (the rows' mean elevations apart / rows apart). A vertical surface
+//   with missing rings (dark paint, windows) stays one object at 25-80 m; at 10 m the bound grows
+//   by at most 2 cm per ring.
 // * Seam linkage (extends the circular linkage): a spinning sensor sees the two sides of the
 //   column where its sweep started 0.1 s apart, so an object moving relative to it (oncoming
 //   traffic, or anything while the ego vehicle drives) is cut there and its halves are shifted
@@ -40,7 +42,9 @@
 //   tenth of its points). A run is seen through a gap when the nearest points before and after
 //   it on its ring (within kEnclosureWalk points) are in front of all its points by more than
 //   T_horz, belong to one cluster, are at most occlusion_max_gap apart, and its farthest point
-//   is at most see_through_depth behind them. A cluster joins the enclosing one when all its
+//   is at most see_through_depth behind them (a run seen through a gap but farther behind it
+//   is an object beyond the enclosing one, e.g. a car parked behind a car, and keeps its
+//   cluster apart). A cluster joins the enclosing one when all its
 //   runs seen through gaps are seen through that one cluster's, it lies inside that cluster's
 //   range-image box, behind its nearest point, is smaller, and at least one of its runs has
 //   the enclosing cluster's points in front of it within two rows above or below (a window is
@@ -294,12 +298,16 @@ void RunClustering::linkAcrossSeam(int begin, int end, int seam_col, int cols, f
         }
 }
 
-bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) const {
+bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
+                              float ring_step2) const {
     // Both runs' points are in column order: sweep them together, comparing points whose
-    // columns differ by at most column_window.
+    // columns differ by at most column_window. The ring spacing is taken at the range of a's
+    // point (see the file comment), so a run reaching far (an oblique wall, a ragged bush) does
+    // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
         const int ca = sorted_col_[ka];
+        const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
         while (jb != kEndOfRun && sorted_col_[jb] < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
             if (sorted_col_[kb] > ca + column_window) break;
@@ -315,6 +323,7 @@ void RunClustering::vertical(const Params& params) {
     const float t_vert2 =
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
     float merge2 = t_vert2;  // for the pair of rows being compared, see the file comment
+    float ring_step2 = 0.f;  // (one ring's spacing of that pair of rows [rad])^2
     // The long runs of each row (see kLongSpan).
     long_runs_.clear(), long_reach_.clear();
     long_runs_begin_.assign(rows + 1, 0);
@@ -344,7 +353,7 @@ void RunClustering::vertical(const Params& params) {
     int root_a = 0;
     auto mergeIfTouching = [&](int a, int b) {
         const int root_b = find(b);
-        if (root_a == root_b || !runsTouch(a, b, ext, merge2)) return;
+        if (root_a == root_b || !runsTouch(a, b, ext, t_vert2, ring_step2)) return;
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
         root_a = std::min(root_a, root_b);
     };
@@ -360,9 +369,11 @@ void RunClustering::vertical(const Params& params) {
             for (int d = 0; d < 3; ++d) box_a.lo[d] = run_lo_[d][a], box_a.hi[d] = run_hi_[d][a];
             const int lo = run_col_begin_[a] - ext, hi = run_col_end_[a] + ext;
             for (int rr = r - 1; rr >= lowest; --rr) {
-                const float beam_gap = run_far_range_[a] *
-                                       std::fabs(row_elevation_[r] - row_elevation_[rr]) /
-                                       float(r - rr);
+                const float ring_step =
+                    std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(r - rr);
+                ring_step2 = ring_step * ring_step;
+                // The box pre-filter with a's farthest range: no pair of a's points needs more.
+                const float beam_gap = run_far_range_[a] * ring_step;
                 merge2 = t_vert2 + beam_gap * beam_gap;
                 uint32_t& start = window_start_[r - 1 - rr];
                 const uint32_t end = row_runs_begin_[rr + 1];
@@ -456,9 +467,13 @@ void RunClustering::linkSeenThrough(const Params& params) {
                 enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than);
             if (enclosing < 0 || enclosing == root) continue;
             const uint32_t left = enclosure_left_, right = enclosure_right_;
-            if (dist2(left, right) > max_gap2 ||
-                run_far_range_[b] > std::max(range_[left], range_[right]) + depth)
+            if (dist2(left, right) > max_gap2) continue;
+            // Seen through the gap but deeper behind it than any vehicle is wide: the cluster
+            // is beyond the nearer one (a car parked behind a car), not its far side.
+            if (run_far_range_[b] > std::max(range_[left], range_[right]) + depth) {
+                state = kConflict;
                 continue;
+            }
             if (state == kNone) state = enclosing, any = true;
             if (state != enclosing) {
                 state = kConflict;
