@@ -18,6 +18,7 @@
 
 #include "SceneMetrics.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 
@@ -239,6 +240,39 @@ TEST(HardObjects, PurityOfNeighbouringObjects) {
         purityOf(sim::objectBehindParkedCar(15.0, 1.0, true), {1, 2}, "car_behind_car_15m_gap1.0");
     EXPECT_GE(behind.coverage, 0.97);
     EXPECT_GE(behind.worst_purity, 0.99);
+}
+
+// travel-eval merges' diagnostic (eval::mergedParts) on a cluster made by hand: two cars parked
+// nose to tail 0.6 m apart at 22 m put in one cluster (cluster ids set here, not clustered). Their
+// closest points are on one ring, 0.6 m apart at the same range: beyond T_horz and T_vert (even
+// range-scaled), within occlusion_max_gap, so the rule that can join them is the occlusion one.
+TEST(HardObjects, MergeDiagnosticNamesTheLinkingRule) {
+    const ObjectRun r = run(sim::parkedCarRow(22.0, 0.6), hdl64());
+    const std::size_t n = r.scan.gt.size();
+    std::vector<uint32_t> labels(n), cluster(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const uint32_t id = r.scan.gt.instance[i];
+        labels[i] = id ? (10u | (id << 16)) : r.scan.gt.cls[i] == sim::Ground ? 40u : 0u;
+        cluster[i] = id == 2 || id == 3 ? 1 : 0;
+    }
+    const std::vector<eval::MergedPart> parts =
+        eval::mergedParts(cluster, labels, r.scan.cloud, hdl64().params);
+    // The cluster's largest GT object owns it; the other car is its largest part (the GT's
+    // 0.5 m Euclidean split also cuts window returns off each car: smaller parts).
+    ASSERT_FALSE(parts.empty());
+    const eval::MergedPart& p = *std::max_element(
+        parts.begin(), parts.end(),
+        [](const auto& a, const auto& b) { return a.part_points < b.part_points; });
+    EXPECT_EQ(p.owner_semantic, 10u);
+    EXPECT_EQ(p.part_semantic, 10u);
+    EXPECT_FALSE(p.same_label);
+    EXPECT_TRUE(p.part_is_object);
+    EXPECT_EQ(p.rule, eval::LinkRule::Occlusion) << eval::toString(p.rule);
+    EXPECT_NEAR(p.link_distance, 0.6, 0.1);
+    EXPECT_LT(p.depth_jump, 0.4f);
+    EXPECT_EQ(p.row_gap, 0);
+    EXPECT_GT(p.range, 20.f);
+    EXPECT_LT(p.range, 26.f);
 }
 
 }  // namespace
