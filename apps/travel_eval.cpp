@@ -7,6 +7,8 @@
 //       an object table) and frames.csv (one row per method and frame).
 //   travel-eval sweep -i DIR --labels DIR -o DIR --sweep KEY=v1,v2,... [--method NAME]
 //       one method, one parameter: sweep_KEY.csv and three PNG plots (ground F1, objects, time).
+//   travel-eval merges -i DIR --labels DIR -o DIR [--method NAME]
+//       where under-segmentation comes from: merges.md (MergeDiagnostics).
 //
 // Metrics and timings are those of travel-kitti (same libtravel APIs), aggregated differently.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -31,6 +33,7 @@
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
 
@@ -304,14 +307,17 @@ int run(int argc, char** argv) {
         "ground / objects ms) and the plots sweep_KEY_ground.png (F1, protocols A and B), "
         "sweep_KEY_objects.png (coverage, purity; USE, OSE) and sweep_KEY_time.png. Paper "
         "studies: tgf_resolution=2,4,6,8,10, vertical_ring_span=1,2,3,4,5, "
-        "vertical_column_extension=1,3,5,10,20.",
+        "vertical_column_extension=1,3,5,10,20.\n"
+        "  merges: runs one --method (default travel) and writes <output>/merges.md: the "
+        "clusters holding points of more than one ground-truth object, by linkage rule, class "
+        "pair and range (printed to stdout as well), and merges.csv (one row per part).",
         {"travel-eval report -i data/sequences/00 -o eval",
          "travel-eval report -i seq/00 -i seq/01 --methods travel,gpf+slr -o eval",
          "travel-eval sweep -i data/sequences/00 --sweep tgf_resolution=2,4,6,8,10 -o sweep"});
     TCLAP::CmdLine& cmd = line.cmd;
-    std::vector<std::string> commands{"report", "sweep"};
+    std::vector<std::string> commands{"report", "sweep", "merges"};
     TCLAP::ValuesConstraint<std::string> command_values(commands);
-    TCLAP::UnlabeledValueArg<std::string> command("command", "report or sweep", true, "",
+    TCLAP::UnlabeledValueArg<std::string> command("command", "report, sweep or merges", true, "",
                                                   &command_values, cmd);
     const travel::apps::CommonFlags flags(line, true, "hdl64");
     TCLAP::MultiArg<std::string> labels(
@@ -340,6 +346,7 @@ int run(int argc, char** argv) {
     travel::apps::preferLargePages(jobs.count());  // before any pipeline or thread
 
     const bool is_sweep = command.getValue() == "sweep";
+    const bool is_merges = command.getValue() == "merges";
     // Configuration errors first, before any file is read.
     const std::string out = flags.outputPath();
     const bool quiet = flags.quiet();
@@ -347,7 +354,7 @@ int run(int argc, char** argv) {
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     if (is_sweep && methods.isSet())
         throw travel::apps::usageError("sweep runs one --method, not --methods");
-    if (!is_sweep && (sweep.isSet() || method.isSet()))
+    if (!is_sweep && !is_merges && (sweep.isSet() || method.isSet()))
         throw travel::apps::usageError("report takes --methods; --sweep/--method are for sweep");
     if (is_sweep && !sweep.isSet())
         throw travel::apps::usageError("sweep needs --sweep KEY=v1,v2,...");
@@ -359,7 +366,7 @@ int run(int argc, char** argv) {
     std::vector<std::string> names = methods.isSet()
                                          ? travel::eval::splitList(methods.getValue(), ',')
                                          : travel::eval::methodNames();
-    if (is_sweep) names = {method.getValue()};
+    if (is_sweep || is_merges) names = {method.getValue()};
     for (const std::string& name : names)
         travel::eval::makeSegmenter(name, params);  // throws, listing the valid names
     const travel::eval::SweepSpec spec =
@@ -370,6 +377,26 @@ int run(int argc, char** argv) {
     travel::apps::createFolder(out);
     const fs::path dir(out);
 
+    if (is_merges) {
+        auto segmenter = travel::eval::makeSegmenter(names[0], params);
+        travel::eval::FrameEvaluation frame;
+        travel::eval::MergeTable table;
+        std::ofstream csv = openOut(dir / "merges.csv");
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            const FrameRef& f = frames[k];
+            travel::eval::evaluateFrame(f.scan, f.label, *segmenter, frame, f.format);
+            const std::vector<travel::eval::MergedPart> parts = travel::eval::mergedParts(
+                frame.segmentation.cluster_id, frame.ground_truth, frame.cloud, params);
+            table.add(parts);
+            travel::eval::writeMergedPartsCsv(csv, f.name, parts, k == 0);
+        }
+        const std::string md = table.markdown();
+        openOut(dir / "merges.md") << md;
+        if (!quiet)
+            std::cout << md << "\nWritten: " << (dir / "merges.md").string() << ", "
+                      << (dir / "merges.csv").string() << "\n";
+        return 0;
+    }
     if (!is_sweep) {
         std::vector<MethodRun> runs;
         for (const std::string& name : names)

@@ -24,9 +24,11 @@
 //   per HDL-64E ring at 25 m, 0.66 m across T_ring = 3 lower-block rings, 0.5 m (T_vert
 //   itself) per ring at 57 m. So T_vert is the separation beyond that forced one: two runs
 //   merge when their points are closer than sqrt(T_vert^2 + (R * dtheta)^2), R the upper
-//   run's farthest range, dtheta the rows' mean elevations apart. A vertical surface with
-//   missing rings (dark paint, windows) stays one object at 25-80 m; at 10 m the bound grows by
-//   at most 2 cm per ring.
+//   point's range (points at R1, R2 on rays dtheta apart are at least max(R1, R2) dtheta
+//   apart; the run's farthest range would lend an oblique wall's far end to its near points),
+//   dtheta one ring's spacing (the rows' mean elevations apart / rows apart). A vertical surface
+//   with missing rings (dark paint, windows) stays one object at 25-80 m; at 10 m the bound grows
+//   by at most 2 cm per ring.
 // * Seam linkage (extends the circular linkage): a spinning sensor sees the two sides of the
 //   column where its sweep started 0.1 s apart, so an object moving relative to it (oncoming
 //   traffic, or anything while the ego vehicle drives) is cut there and its halves are shifted
@@ -40,7 +42,9 @@
 //   tenth of its points). A run is seen through a gap when the nearest points before and after
 //   it on its ring (within kEnclosureWalk points) are in front of all its points by more than
 //   T_horz, belong to one cluster, are at most occlusion_max_gap apart, and its farthest point
-//   is at most see_through_depth behind them. A cluster joins the enclosing one when all its
+//   is at most see_through_depth behind them (a run seen through a gap but farther behind it
+//   is an object beyond the enclosing one, e.g. a car parked behind a car, and keeps its
+//   cluster apart). A cluster joins the enclosing one when all its
 //   runs seen through gaps are seen through that one cluster's, it lies inside that cluster's
 //   range-image box, behind its nearest point, is smaller, and at least one of its runs has
 //   the enclosing cluster's points in front of it within two rows above or below (a window is
@@ -309,12 +313,16 @@ void RunClustering::linkAcrossSeam(int begin, int end, int seam_col, int cols, f
         }
 }
 
-bool RunClustering::runsTouch(int a, int b, int column_window, float max_dist2) const {
+bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
+                              float ring_step2) const {
     // Both runs' points are in column order: sweep them together, comparing points whose
-    // columns differ by at most column_window.
+    // columns differ by at most column_window. The ring spacing is taken at the range of a's
+    // point (see the file comment), so a run reaching far (an oblique wall, a ragged bush) does
+    // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
         const int ca = sorted_col_[ka];
+        const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
         while (jb != kEndOfRun && sorted_col_[jb] < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
             if (sorted_col_[kb] > ca + column_window) break;
@@ -334,12 +342,13 @@ void RunClustering::vertical(const Params& params) {
     const RunBox* box = run_box_.data();
     // Run a of the upper row and run b of a lower row are compared when b's columns overlap
     // a's widened by T_ext, [lo, hi]; they merge when two of their points are nearer than
-    // merge_dist2_[a] (see the file comment); most pairs' boxes are already farther apart (a
-    // wall behind a bush), so the box test comes first. The merges give the same clusters in
-    // any order, so each pair of rows is swept once, both rows' runs in first-column order:
-    // the pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then
-    // those where b starts before lo and reaches it (for each b, the a whose lo lies in b's
-    // columns). No pair is visited twice, and none that does not overlap.
+    // sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range (see the file comment), which
+    // is at most merge_dist2_[a] (R = a's farthest range); most pairs' boxes are already farther
+    // apart (a wall behind a bush), so the box test comes first. The merges give the same clusters
+    // in any order, so each pair of rows is swept once, both rows' runs in first-column order: the
+    // pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then those
+    // where b starts before lo and reaches it (for each b, the a whose lo lies in b's columns). No
+    // pair is visited twice, and none that does not overlap.
 
     // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
     // overlap), added as x^2 + y^2 + z^2.
@@ -349,10 +358,11 @@ void RunClustering::vertical(const Params& params) {
         const Eigen::Array4f gap2 = gap * gap;
         return gap2[0] + gap2[1] + gap2[2];
     };
+    float ring_step2 = 0.f;  // (one ring's spacing of the pair of rows being swept [rad])^2
     auto merge = [&](uint32_t a, uint32_t b) {
         const int root_a = find(static_cast<int>(a)), root_b = find(static_cast<int>(b));
         if (root_a == root_b ||
-            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, merge_dist2_[a]))
+            !runsTouch(static_cast<int>(a), static_cast<int>(b), ext, t_vert2, ring_step2))
             return;
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
@@ -372,10 +382,13 @@ void RunClustering::vertical(const Params& params) {
         for (int rr = r - 1; rr >= std::max(0, r - span); --rr) {
             const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
             if (a_begin == a_end || b_begin == b_end) continue;
-            const float elevation_gap = std::fabs(row_elevation_[r] - row_elevation_[rr]);
-            const float rows_apart = float(r - rr);
+            const float ring_step =
+                std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(r - rr);
+            ring_step2 = ring_step * ring_step;
+            // The box pre-filter with a's farthest range: no pair of a's points needs more
+            // (runsTouch takes the spacing at each point's own range).
             for (uint32_t a = a_begin; a < a_end; ++a) {
-                const float beam_gap = run_far_range_[a] * elevation_gap / rows_apart;
+                const float beam_gap = run_far_range_[a] * ring_step;
                 merge_dist2_[a] = t_vert2 + beam_gap * beam_gap;
             }
             num_near = 0;
@@ -473,9 +486,13 @@ void RunClustering::linkSeenThrough(const Params& params) {
                 enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than);
             if (enclosing < 0 || enclosing == root) continue;
             const uint32_t left = enclosure_left_, right = enclosure_right_;
-            if (dist2(left, right) > max_gap2 ||
-                run_far_range_[b] > std::max(range_[left], range_[right]) + depth)
+            if (dist2(left, right) > max_gap2) continue;
+            // Seen through the gap but deeper behind it than any vehicle is wide: the cluster
+            // is beyond the nearer one (a car parked behind a car), not its far side.
+            if (run_far_range_[b] > std::max(range_[left], range_[right]) + depth) {
+                state = kConflict;
                 continue;
+            }
             if (state == kNone) state = enclosing, any = true;
             if (state != enclosing) {
                 state = kConflict;

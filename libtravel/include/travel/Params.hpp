@@ -155,7 +155,9 @@ struct AutoReal {
     X(double, see_through_depth, 2.5, "m", 0.0, 100.0,                                            \
       "Windows: a cluster seen only through gaps (<= occlusion_max_gap) of one nearer cluster, "  \
       "closed above or below by it (a hole, not a fence slot), and at most this far behind it, "  \
-      "joins it: a vehicle's seats and far side (2.5 m = the widest road vehicles). 0 = off")     \
+      "joins it: a vehicle's seats and far side (2.5 m = the widest road vehicles); a cluster "   \
+      "with a run seen through a gap farther behind it than this never joins (an object "         \
+      "beyond, e.g. a car parked behind a car). 0 = off")                                         \
     X(double, seam_max_shift, 2.0, "m", 0.0, 100.0,                                               \
       "Runs of a ring facing each other across the column where the sweep started (0.1 s "        \
       "apart in time) merge when their facing ends are closer than this: a car moving at up to "  \
@@ -165,7 +167,7 @@ struct AutoReal {
     X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \
       "T_vert: runs of different rings merge when their closest points are nearer than "          \
       "sqrt(T_vert^2 + (R dtheta)^2): T_vert beyond the spacing R dtheta of one ring at the "     \
-      "run's range R (0.15-0.22 m at 25 m on an HDL-64E)")                                        \
+      "upper point's range R (0.15-0.22 m at 25 m on an HDL-64E)")                                \
     X(int, vertical_column_extension, 5, "", 0, 65536,                                            \
       "T_ext: columns by which a run's span is widened when looking for runs on other rings")     \
     X(int, min_cluster_size, 10, "", 1, 100000000,                                                \

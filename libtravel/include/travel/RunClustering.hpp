@@ -91,7 +91,9 @@ class RunClustering {
     std::vector<RootBox> root_box_;
     std::vector<uint8_t> closed_;  // per root, see linkSeenThrough()
     void unite(int a, int b);
-    bool runsTouch(int a, int b, int column_window, float max_dist2) const;
+    // Two of the runs' points in columns at most column_window apart are closer than
+    // sqrt(t_vert2 + ring_step2 R^2), R the range of a's point.
+    bool runsTouch(int a, int b, int column_window, float t_vert2, float ring_step2) const;
     float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
 
     // Non-ground points sorted by (row, column, range): input indices, their columns, and

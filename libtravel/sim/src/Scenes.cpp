@@ -245,6 +245,49 @@ Scene movingCarAcrossSweepStart(double distance, double yaw_deg, const Eigen::Ve
     return scene;
 }
 
+Scene personBesideCar(double distance, double gap) {
+    Scene scene;
+    scene.boxes = realisticCar(1, {0.0, distance}, 0.0);
+    scene.boxes.push_back(box(2, 2.25 + gap + 0.25, distance, 0.5, 0.35, 1.75, 0.0));
+    scene.boxes.push_back(box(3, 0.5, distance - 0.9 - gap - 0.175, 0.5, 0.35, 1.75, 0.0));
+    return scene;
+}
+
+Scene parkedCarRow(double distance, double gap) {
+    Scene scene;
+    for (uint32_t k = 0; k < 4; ++k) {
+        const std::vector<Box> parts =
+            realisticCar(k + 1, {-9.75 + k * (4.5 + gap), distance}, 0.0);
+        scene.boxes.insert(scene.boxes.end(), parts.begin(), parts.end());
+    }
+    return scene;
+}
+
+Scene carBeforeHedge(double distance, double gap, double height) {
+    Scene scene;
+    scene.boxes = realisticCar(1, {0.0, distance}, 0.0);
+    Wall hedge;
+    hedge.id = 2;
+    hedge.a = {-10.0, distance + 0.9 + gap + 0.5};
+    hedge.b = {10.0, distance + 0.9 + gap + 0.5};
+    hedge.thickness = 1.0;
+    hedge.height = height;
+    scene.walls.push_back(hedge);
+    return scene;
+}
+
+Scene objectBehindParkedCar(double distance, double gap, bool behind_is_car) {
+    Scene scene;
+    scene.boxes = realisticCar(1, {0.0, distance}, 0.0);
+    if (behind_is_car) {
+        const std::vector<Box> parts = realisticCar(2, {0.3, distance + 1.8 + gap}, 0.0);
+        scene.boxes.insert(scene.boxes.end(), parts.begin(), parts.end());
+    } else {
+        scene.boxes.push_back(box(2, -0.9, distance + 0.9 + gap + 0.175, 0.5, 0.35, 1.2, 0.0));
+    }
+    return scene;
+}
+
 Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,
                                double roll_deg, double pitch_deg, double yaw_deg) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

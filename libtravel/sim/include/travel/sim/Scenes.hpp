@@ -85,6 +85,27 @@ Scene parkedCarsAt20To25Metres();
 /// its two halves 0.1 s apart (what split moving cars at 20-25 m in two).
 Scene movingCarAcrossSweepStart(double distance, double yaw_deg, const Eigen::Vector2d& velocity);
 
+// ---- Purity scenes of issue 14 (objects of different instances joined into one cluster) ----
+
+/// A realisticCar (id 1) parked side on along +x, its centre `distance` m to the left (+y), with
+/// a person (0.5 x 0.35 x 1.75 m box) `gap` metres beyond its front end (id 2, beside it in
+/// azimuth) and another `gap` metres in front of its near side (id 3, between car and sensor).
+Scene personBesideCar(double distance, double gap);
+
+/// Four realisticCars (ids 1-4) parked nose to tail along +x, centres `distance` m to the left,
+/// `gap` metres between bumpers; a car from x = -12 m on.
+Scene parkedCarRow(double distance, double gap);
+
+/// A realisticCar (id 1) parked side on `distance` m to the left, and behind it, `gap` metres
+/// beyond its far side, a 20 m long, 1 m thick hedge or wall (id 2) of `height` metres.
+Scene carBeforeHedge(double distance, double gap, double height);
+
+/// A realisticCar (id 1) parked side on `distance` m to the left and, `gap` metres beyond its
+/// far side, hidden behind it: another realisticCar (id 2, parked alongside) when `behind_is_car`,
+/// else a 1.2 m high, 0.5 m wide child or bicycle (id 2, 0.35 m deep) behind its rear window.
+/// What is seen of id 2 shows only through id 1's windows.
+Scene objectBehindParkedCar(double distance, double gap, bool behind_is_car);
+
 /// Sensor pose in the world: `height` above the terrain at (x, y), attitude
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll) (angles in degrees).
 Eigen::Isometry3d sensorPoseAt(const Scene& scene, double x, double y, double height,
