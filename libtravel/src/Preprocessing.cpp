@@ -26,6 +26,8 @@ Eigen::Matrix3d withoutYaw(const Eigen::Matrix3d& R) {
 /// with the sensor, not with the world. Strict bounds: an empty box (min = max) is off.
 struct SelfBox {
     float min_x, max_x, min_y, max_y, min_z, max_z;
+    /// Squared range of the box's farthest corner (+ rounding margin): farther points are out.
+    float reach2;
 
     explicit SelfBox(const Params& params)
         : min_x(static_cast<float>(params.self_box_min_x)),
@@ -33,16 +35,17 @@ struct SelfBox {
           min_y(static_cast<float>(params.self_box_min_y)),
           max_y(static_cast<float>(params.self_box_max_y)),
           min_z(static_cast<float>(params.self_box_min_z)),
-          max_z(static_cast<float>(params.self_box_max_z)) {}
+          max_z(static_cast<float>(params.self_box_max_z)) {
+        const auto far2 = [](float lo, float hi) { return std::max(lo * lo, hi * hi); };
+        reach2 = (far2(min_x, max_x) + far2(min_y, max_y) + far2(min_z, max_z)) * 1.0001f;
+    }
     bool empty() const { return !(min_x < max_x && min_y < max_y && min_z < max_z); }
-    /// (vx, vy, vz) in the vehicle frame: strictly inside when the largest of the six
-    /// signed distances to the faces (positive outside) is negative. Branch-free (max, one
-    /// compare: cheaper than six compares); the callers reject NaN by its range.
-    bool contains(float vx, float vy, float vz) const {
-        const float dx = std::max(min_x - vx, vx - max_x);
-        const float dy = std::max(min_y - vy, vy - max_y);
-        const float dz = std::max(min_z - vz, vz - max_z);
-        return std::max(dx, std::max(dy, dz)) < 0.f;
+    /// (vx, vy, vz) in the vehicle frame, r2 its squared range. The range test first: nearly
+    /// every point is beyond the box's reach, and the scalar loop then skips the six compares
+    /// (a predictable branch; a vectorised loop computes both, branch-free). False for NaN.
+    bool contains(float r2, float vx, float vy, float vz) const {
+        return r2 < reach2 && ((vx > min_x) & (vx < max_x) & (vy > min_y) & (vy < max_y) &
+                               (vz > min_z) & (vz < max_z));
     }
 };
 
@@ -75,7 +78,8 @@ std::size_t alignWithoutDeskew(const PointCloud& cloud, const Eigen::Matrix3f& R
         // As in preprocess(): finite (NaN and inf propagate into r2), not zero, in the window,
         // not the own vehicle.
         const bool ok = (std::fabs(r2) <= std::numeric_limits<float>::max()) & (r2 > 0.f) &
-                        (r2 >= min_r2) & (r2 <= max_r2) & !(kSelfBox && box.contains(ax, ay, az));
+                        (r2 >= min_r2) & (r2 <= max_r2) &
+                        !(kSelfBox && box.contains(r2, ax, ay, az));
         ox[i] = ok ? ax : 0.f, oy[i] = ok ? ay : 0.f, oz[i] = ok ? az : 0.f;
         valid[i] = ok ? 1 : 0;
         num_valid += ok ? 1 : 0;
@@ -164,7 +168,7 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         bool self_return = false;  // the body moves with the sensor: tested before deskew
         if (!self_box.empty()) {
             const Eigen::Vector3f v = to_vehicle * Eigen::Vector3f(px, py, pz);
-            self_return = self_box.contains(v.x(), v.y(), v.z());
+            self_return = self_box.contains(r2, v.x(), v.y(), v.z());
         }
         const bool ok =
             std::isfinite(r2) && r2 > 0.f && r2 >= min_r2 && r2 <= max_r2 && !self_return;
