@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "travel/MountEstimator.hpp"
 #include "travel/Pipeline.hpp"
@@ -201,6 +202,35 @@ TEST(MountCheck, NoGroundNoEstimate) {
     }
     MountEstimator estimator;
     EXPECT_FALSE(estimator.estimate(cloud, Eigen::Vector3d::UnitZ(), 0.5, 80).found);
+}
+
+TEST(MountEstimate, LeavesTheOwnVehicleOut) {
+    // The self box is tested in the vehicle frame: with the sensor yawed +90 deg, the sensor's
+    // -y axis is the vehicle's +x (a box ahead of the vehicle).
+    Params params;
+    params.mount_yaw_deg = 90.0;
+    params.self_box_min_x = 1.0, params.self_box_max_x = 3.0;
+    params.self_box_min_y = -0.5, params.self_box_max_y = 0.5;
+    params.self_box_min_z = -1.0, params.self_box_max_z = 1.0;
+    PointCloud probe;
+    for (const auto& p : {Eigen::Vector3f(0, -2, 0), Eigen::Vector3f(2, 0, 0)})
+        probe.x.push_back(p.x()), probe.y.push_back(p.y()), probe.z.push_back(p.z());
+    std::vector<uint8_t> is_self;
+    markSelfReturns(probe, params, is_self);
+    ASSERT_EQ(is_self.size(), 2u);
+    EXPECT_EQ(is_self[0], 1);  // vehicle (2, 0, 0): inside
+    EXPECT_EQ(is_self[1], 0);  // vehicle (0, -2, 0): beside it
+
+    // The estimate skips excluded points: with every point excluded there is no ground.
+    const sim::Scan scan = scanFrom(sim::flatGround(), Mount{1.73, 0, 0});
+    MountEstimator estimator;
+    EXPECT_TRUE(estimator.estimate(scan.cloud, Eigen::Vector3d::UnitZ(), 2.7, 80.0).found);
+    const std::vector<uint8_t> all(scan.cloud.size(), 1);
+    EXPECT_FALSE(
+        estimator.estimate(scan.cloud, Eigen::Vector3d::UnitZ(), 2.7, 80.0, all.data()).found);
+    // An empty box marks nothing (and costs no per-point buffer).
+    markSelfReturns(scan.cloud, Params{}, is_self);
+    EXPECT_TRUE(is_self.empty());
 }
 
 TEST(FirstGroundRing, SeedSearchReachesIt) {

@@ -99,6 +99,14 @@ TEST(ParamsValidate, RejectsNaNAndInf) {
     EXPECT_CONTAINS(configErrorOf([&] { p.validate(); }), "max_range");
 }
 
+TEST(ParamsValidate, SelfBoxMinMustNotExceedMax) {
+    Params p;
+    p.self_box_min_y = 1.6, p.self_box_max_y = -1.6;
+    const std::string msg = configErrorOf([&] { p.validate(); });
+    EXPECT_CONTAINS(msg, "self_box_min_y");
+    EXPECT_CONTAINS(msg, "self_box_max_y");
+}
+
 TEST(ParamsValidate, MinRangeMustBeBelowMaxRange) {
     Params p;
     p.min_range = 80.0;
@@ -319,7 +327,18 @@ TEST(Presets, AllShippedPresetsLoad) {
 }
 
 TEST(Presets, Values) {
-    EXPECT_EQ(valuesOf(travel::loadPreset("hdl64")), valuesOf(Params()));
+    // hdl64 = the defaults plus the KITTI car: its self-filter box and the small sphere left.
+    Params kitti_car;
+    kitti_car.min_range = 1.0;
+    kitti_car.self_box_min_x = -2.2, kitti_car.self_box_max_x = 2.8;
+    kitti_car.self_box_min_y = -1.6, kitti_car.self_box_max_y = 1.6;
+    kitti_car.self_box_min_z = -1.73, kitti_car.self_box_max_z = 0.0;
+    EXPECT_EQ(valuesOf(travel::loadPreset("hdl64")), valuesOf(kitti_car));
+    // No vehicle known for the other presets: no box, today's behaviour.
+    for (const char* name : {"hdl32", "vlp16", "os64", "os128"}) {
+        const Params p = travel::loadPreset(name);
+        EXPECT_EQ(p.self_box_min_x, p.self_box_max_x) << name;
+    }
     const Params hdl32 = travel::loadPreset("hdl32");
     EXPECT_EQ(hdl32.sensor_height, 1.84);
     EXPECT_EQ(hdl32.mount_yaw_deg, -90.0);

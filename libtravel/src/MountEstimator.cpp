@@ -171,7 +171,7 @@ double firstGroundRingRadius(double sensor_height, double lowest_elevation_deg,
 
 GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
                                              const Eigen::Vector3d& prior_up, double min_range,
-                                             double max_range) {
+                                             double max_range, const uint8_t* excluded) {
     GroundPlaneEstimate out;
     const Eigen::Vector3d up = prior_up.normalized();
     // Any two directions completing `up` to an orthonormal basis.
@@ -188,6 +188,7 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
         const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
         const double r2 = p.squaredNorm();
         if (!(r2 >= min_r2 && r2 <= max_r2)) continue;  // also drops NaN
+        if (excluded && excluded[i]) continue;
         const double u = e1.dot(p), v = e2.dot(p), h = up.dot(p);
         const int ring = std::min(num_rings - 1, static_cast<int>(ringPosition(u, v)));
         int sector = static_cast<int>(sectorPosition(u, v));
@@ -243,7 +244,7 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
         for (std::size_t i = 0; i < n; ++i) {
             const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
             const double r2 = p.squaredNorm();
-            if (r2 >= min_r2 && r2 <= max_r2) visit(p);
+            if (r2 >= min_r2 && r2 <= max_r2 && !(excluded && excluded[i])) visit(p);
         }
     };
     for (const double band : kRefitDist) {

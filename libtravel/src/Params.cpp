@@ -5,6 +5,7 @@
 #include <locale>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 #include "travel/Config.hpp"
@@ -37,6 +38,16 @@ void Params::validate() const {
         throw ConfigError("min_range = " + formatForMessage(min_range) +
                           " m must be smaller than max_range = " + formatForMessage(max_range) +
                           " m");
+    }
+
+    for (const auto& [axis, lo, hi] : {std::tuple{"x", self_box_min_x, self_box_max_x},
+                                       std::tuple{"y", self_box_min_y, self_box_max_y},
+                                       std::tuple{"z", self_box_min_z, self_box_max_z}}) {
+        if (!(lo <= hi)) {
+            throw ConfigError(std::string("self_box_min_") + axis + " = " + formatForMessage(lo) +
+                              " m must not exceed self_box_max_" + axis + " = " +
+                              formatForMessage(hi) + " m");
+        }
     }
 
     if (!(min_elevation_deg < max_elevation_deg)) {

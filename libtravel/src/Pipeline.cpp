@@ -39,6 +39,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     const std::size_t points = expectedPoints();
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
+    if (params_.self_box_min_x < params_.self_box_max_x) detail::prefault(self_returns_, points);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
     if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
@@ -87,8 +88,11 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     if (mount_done_) return;
     // Up in the sensor frame under the configured mount (auto angles at their fallbacks).
     const Eigen::Vector3d prior_up = mountRotation(params_).transpose() * Eigen::Vector3d::UnitZ();
+    // The own vehicle's returns stay out of the fit, as they stay out of the segmentation.
+    markSelfReturns(cloud, params_, self_returns_);
     const GroundPlaneEstimate ground =
-        mount_estimator_.estimate(cloud, prior_up, params_.min_range, params_.max_range);
+        mount_estimator_.estimate(cloud, prior_up, params_.min_range, params_.max_range,
+                                  self_returns_.empty() ? nullptr : self_returns_.data());
     if (!ground.found) {
         if (frame + 1 < kMaxMountFrames) return;
         mount_done_ = true;

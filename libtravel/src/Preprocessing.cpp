@@ -4,6 +4,7 @@
 // so: deskew with per-point times and a constant-velocity model, then rotate by roll/pitch.
 #include "travel/Preprocessing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -20,12 +21,45 @@ Eigen::Matrix3d withoutYaw(const Eigen::Matrix3d& R) {
     return Eigen::AngleAxisd(-yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R;
 }
 
+/// The self filter: an axis-aligned box in the vehicle frame (the sensor's axes after the mount
+/// rotation, origin at the sensor) that holds the own vehicle's body. Given in vehicle axes
+/// because a vehicle's footprint is (length along x, width along y, whatever the sensor's yaw,
+/// e.g. nuScenes' -90 deg), and tested on the point before deskew and levelling: the body moves
+/// with the sensor, not with the world. Strict bounds: an empty box (min = max) is off.
+struct SelfBox {
+    float min_x, max_x, min_y, max_y, min_z, max_z;
+    /// Squared range of the box's farthest corner (+ rounding margin): farther points are out.
+    float reach2;
+
+    explicit SelfBox(const Params& params)
+        : min_x(static_cast<float>(params.self_box_min_x)),
+          max_x(static_cast<float>(params.self_box_max_x)),
+          min_y(static_cast<float>(params.self_box_min_y)),
+          max_y(static_cast<float>(params.self_box_max_y)),
+          min_z(static_cast<float>(params.self_box_min_z)),
+          max_z(static_cast<float>(params.self_box_max_z)) {
+        const auto far2 = [](float lo, float hi) { return std::max(lo * lo, hi * hi); };
+        reach2 = (far2(min_x, max_x) + far2(min_y, max_y) + far2(min_z, max_z)) * 1.0001f;
+    }
+    bool empty() const { return !(min_x < max_x && min_y < max_y && min_z < max_z); }
+    /// (vx, vy, vz) in the vehicle frame, r2 its squared range. The range test first: nearly
+    /// every point is beyond the box's reach, and the scalar loop then skips the six compares
+    /// (a predictable branch; a vectorised loop computes both, branch-free). False for NaN.
+    TRAVEL_INTO_CALLER bool contains(float r2, float vx, float vy, float vz) const {
+        return r2 < reach2 && ((vx > min_x) & (vx < max_x) & (vy > min_y) & (vy < max_y) &
+                               (vz > min_z) & (vz < max_z));
+    }
+};
+
 /// The points without deskew: validity and rotation per point, branch-free (the loop
 /// vectorises). kRotate = false copies the coordinates unchanged (R = I: a product by 1 and sums
-/// with 0 would turn -0 into +0). The same values as the general loop in preprocess().
-template <bool kRotate>
+/// with 0 would turn -0 into +0). The same values as the general loop in preprocess(), for a
+/// frame without levelling: then R = R_mount and the rotated point is in the vehicle frame, where
+/// the self box is tested (no second rotation). kSelfBox = false: no box, no test.
+template <bool kRotate, bool kSelfBox>
 TRAVEL_INTO_CALLER std::size_t alignWithoutDeskew(const PointCloud& cloud, const Eigen::Matrix3f& R,
-                                                  float min_r2, float max_r2, AlignedCloud& out) {
+                                                  float min_r2, float max_r2,
+                                                  const SelfBox& self_box, AlignedCloud& out) {
     const std::size_t n = cloud.size();
     const float* cx = cloud.x.data();
     const float* cy = cloud.y.data();
@@ -36,16 +70,19 @@ TRAVEL_INTO_CALLER std::size_t alignWithoutDeskew(const PointCloud& cloud, const
     uint8_t* valid = out.valid.data();
     const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
     const float r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
+    const SelfBox box = self_box;  // a local copy: the stores below cannot alias it
     std::size_t num_valid = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const float px = cx[i], py = cy[i], pz = cz[i];
         const float r2 = px * px + py * py + pz * pz;
-        // As in preprocess(): finite (NaN and inf propagate into r2), not zero, in the window.
-        const bool ok = (std::fabs(r2) <= std::numeric_limits<float>::max()) & (r2 > 0.f) &
-                        (r2 >= min_r2) & (r2 <= max_r2);
         const float ax = kRotate ? r00 * px + r01 * py + r02 * pz : px;
         const float ay = kRotate ? r10 * px + r11 * py + r12 * pz : py;
         const float az = kRotate ? r20 * px + r21 * py + r22 * pz : pz;
+        // As in preprocess(): finite (NaN and inf propagate into r2), not zero, in the window,
+        // not the own vehicle.
+        const bool ok = (std::fabs(r2) <= std::numeric_limits<float>::max()) & (r2 > 0.f) &
+                        (r2 >= min_r2) & (r2 <= max_r2) &
+                        !(kSelfBox && box.contains(r2, ax, ay, az));
         ox[i] = ok ? ax : 0.f, oy[i] = ok ? ay : 0.f, oz[i] = ok ? az : 0.f;
         valid[i] = ok ? 1 : 0;
         num_valid += ok ? 1 : 0;
@@ -108,10 +145,22 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
 
     const float min_r2 = static_cast<float>(params.min_range * params.min_range);
     const float max_r2 = static_cast<float>(params.max_range * params.max_range);
+    const SelfBox self_box(params);
+    // Sensor -> vehicle, for the self box; R itself when nothing levels the frame (R_level = I).
+    const Eigen::Matrix3d R_mount = mountRotation(params);
+    const bool levelled = !(R_mount * R.cast<double>().transpose()).isIdentity(1e-6);
+    const Eigen::Matrix3f to_vehicle = R_mount.cast<float>();
     const bool rotate = !R.isIdentity(0.f);
-    if (!deskew) {
-        out.num_valid = rotate ? alignWithoutDeskew<true>(cloud, R, min_r2, max_r2, out)
-                               : alignWithoutDeskew<false>(cloud, R, min_r2, max_r2, out);
+    if (!deskew && self_box.empty()) {
+        out.num_valid =
+            rotate ? alignWithoutDeskew<true, false>(cloud, R, min_r2, max_r2, self_box, out)
+                   : alignWithoutDeskew<false, false>(cloud, R, min_r2, max_r2, self_box, out);
+        return;
+    }
+    if (!deskew && !levelled) {
+        out.num_valid =
+            rotate ? alignWithoutDeskew<true, true>(cloud, R, min_r2, max_r2, self_box, out)
+                   : alignWithoutDeskew<false, true>(cloud, R, min_r2, max_r2, self_box, out);
         return;
     }
     const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
@@ -121,7 +170,13 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         float px = cloud.x[i], py = cloud.y[i], pz = cloud.z[i];
         const float r2 = px * px + py * py + pz * pz;
         // r2 is finite iff all coordinates are (NaN and inf propagate); zero = no return.
-        const bool ok = std::isfinite(r2) && r2 > 0.f && r2 >= min_r2 && r2 <= max_r2;
+        bool self_return = false;  // the body moves with the sensor: tested before deskew
+        if (!self_box.empty()) {
+            const Eigen::Vector3f v = to_vehicle * Eigen::Vector3f(px, py, pz);
+            self_return = self_box.contains(r2, v.x(), v.y(), v.z());
+        }
+        const bool ok =
+            std::isfinite(r2) && r2 > 0.f && r2 >= min_r2 && r2 <= max_r2 && !self_return;
         out.valid[i] = ok;
         num_valid += ok;
         if (!ok) {
@@ -156,6 +211,22 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         }
     }
     out.num_valid = num_valid;
+}
+
+void markSelfReturns(const PointCloud& cloud, const Params& params, std::vector<uint8_t>& is_self) {
+    const SelfBox self_box(params);
+    if (self_box.empty()) {
+        is_self.clear();
+        return;
+    }
+    const std::size_t n = cloud.size();
+    is_self.resize(n);
+    const Eigen::Matrix3f to_vehicle = mountRotation(params).cast<float>();
+    for (std::size_t i = 0; i < n; ++i) {
+        const float px = cloud.x[i], py = cloud.y[i], pz = cloud.z[i];
+        const Eigen::Vector3f v = to_vehicle * Eigen::Vector3f(px, py, pz);
+        is_self[i] = self_box.contains(px * px + py * py + pz * pz, v.x(), v.y(), v.z());
+    }
 }
 
 }  // namespace travel

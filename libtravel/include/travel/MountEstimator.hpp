@@ -39,10 +39,12 @@ class MountEstimator {
   public:
     /// Fits the ground plane of `cloud` (sensor frame). `prior_up`: the expected up direction in
     /// the sensor frame (unit; planes more than 30 deg from it are rejected). Points outside
-    /// [min_range, max_range] (3-D) are not used. found = false when fewer than 100 points lie
-    /// on the best plane.
+    /// [min_range, max_range] (3-D) are not used, nor points i with excluded[i] != 0 when
+    /// `excluded` is given (the own vehicle's returns: markSelfReturns). found = false when
+    /// fewer than 100 points lie on the best plane.
     GroundPlaneEstimate estimate(const PointCloud& cloud, const Eigen::Vector3d& prior_up,
-                                 double min_range, double max_range);
+                                 double min_range, double max_range,
+                                 const uint8_t* excluded = nullptr);
 
   private:
     std::vector<int32_t> bin_point_;  // lowest point of each bin, -1 = none

@@ -43,7 +43,17 @@ struct AutoReal {
       "Height of the sensor origin above the ground under the vehicle (h_s); auto = estimated "   \
       "from the first frame by a robust ground-plane fit")                                        \
     X(double, min_range, 2.7, "m", 0.0, 1000.0,                                                   \
-      "Points closer than this (3-D range) are invalid: returns from the vehicle itself")         \
+      "Points closer than this (3-D range) are invalid: returns from the vehicle itself (with "   \
+      "a self_box, only the sensor head's own blind zone: 1 m in the hdl64 preset)")              \
+    X(double, self_box_min_x, 0.0, "m", -1000.0, 1000.0,                                          \
+      "Self filter box: rear end (-x). Points strictly inside [self_box_min_*, self_box_max_*] "  \
+      "are invalid: returns from the own vehicle's body. Vehicle axes (the sensor's after "       \
+      "mount_*), origin at the sensor; an empty box (min = max, the default) filters nothing")    \
+    X(double, self_box_max_x, 0.0, "m", -1000.0, 1000.0, "Self filter box: front end (+x)")       \
+    X(double, self_box_min_y, 0.0, "m", -1000.0, 1000.0, "Self filter box: right side (-y)")      \
+    X(double, self_box_max_y, 0.0, "m", -1000.0, 1000.0, "Self filter box: left side (+y)")       \
+    X(double, self_box_min_z, 0.0, "m", -1000.0, 1000.0, "Self filter box: bottom (-z)")          \
+    X(double, self_box_max_z, 0.0, "m", -1000.0, 1000.0, "Self filter box: top (+z)")             \
     X(double, max_range, 80.0, "m", 0.1, 2000.0,                                                  \
       "Points farther than this (3-D range) are invalid; also sets the tri-grid extent R")        \
     X(AutoReal, mount_roll_deg, 0.0, "deg", -180.0, 180.0,                                        \

@@ -87,6 +87,7 @@ class Pipeline {
     Params configured_;
     Params params_;
     MountEstimator mount_estimator_;
+    std::vector<uint8_t> self_returns_;  // per point of the frame the mount is estimated on
     MountAnglesSource angles_source_;
     std::size_t frame_index_ = 0;
     bool mount_done_ = false;

@@ -49,9 +49,15 @@ Eigen::Matrix3d mountRotation(const Params& params);
 Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input);
 
 /// Fill 'out' from 'cloud': invalid points (non-finite, exactly zero, outside
-/// [min_range, max_range] in 3-D range) are flagged and never read again; valid points are
+/// [min_range, max_range] in 3-D range, inside the self_box: the own vehicle, tested in the
+/// vehicle frame before deskew) are flagged and never read again; valid points are
 /// deskewed (if params.deskew and times + velocity are given) then rotated.
 void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
                 AlignedCloud& out);
+
+/// The self filter alone, as preprocess() applies it: is_self[i] = 1 where point i lies inside
+/// the self_box (the own vehicle, vehicle frame), else 0; empty when the box is. For the
+/// steps that read the raw cloud before preprocess() (the mount estimate).
+void markSelfReturns(const PointCloud& cloud, const Params& params, std::vector<uint8_t>& is_self);
 
 }  // namespace travel

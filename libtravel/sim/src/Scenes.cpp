@@ -230,6 +230,20 @@ Scene realisticCarBesideSensor(double gap) {
     return scene;
 }
 
+std::vector<Box> egoVehicle() {
+    // Passat B6 Variant: 4.77 x 1.82 m, front 2.7 m ahead of the scanner: centre 2.7 - 4.77 / 2.
+    Box body = box(kEgoVehicleId, 2.7 - 4.77 / 2, 0.0, 4.77, 1.82, 0.95 - 0.35, 0.0);
+    body.clearance = 0.35;
+    return {body};
+}
+
+Scene realisticCarBesideEgoVehicle(double gap) {
+    Scene scene = realisticCarBesideSensor(gap);
+    const std::vector<Box> ego = egoVehicle();
+    scene.boxes.insert(scene.boxes.end(), ego.begin(), ego.end());
+    return scene;
+}
+
 Scene parkedCarsAt20To25Metres() {
     Scene scene;
     for (const std::vector<Box>& parts :

@@ -76,6 +76,18 @@ std::vector<Box> realisticCar(uint32_t id, const Eigen::Vector2d& centre, double
 /// real car 2-3 m beside the sensor into six clusters (windows, missing returns).
 Scene realisticCarBesideSensor(double gap);
 
+/// The own vehicle, for scenes seen from a car's roof: the part of a KITTI-like car (VW Passat
+/// B6 Variant, 4.77 x 1.82 m) that the scanner 1.73 m up sees, its body from 0.35 to 0.95 m
+/// (instance kEgoVehicleId) along +x, front 2.7 m ahead of the sensor at (0, 0), tail 2.07 m
+/// behind. The lowest beams (-24.9 deg) reach its top beyond 1.7 m: the bonnet and the boot, as
+/// on the SemanticKITTI frames (self returns 0.8-1.2 m above the road, 1.3-2.8 m away). Its cabin
+/// stays under the beams there (the road is seen all around from 4.1 m): it has none here.
+constexpr uint32_t kEgoVehicleId = 900;
+std::vector<Box> egoVehicle();
+
+/// realisticCarBesideSensor(gap) seen from the roof of egoVehicle().
+Scene realisticCarBesideEgoVehicle(double gap);
+
 /// Flat ground with parked realistic cars at 20-25 m: side on at 21 m on the left (id 1), a
 /// dark one beyond it (id 2), end on 24 m behind (id 3). What lost a third of its points.
 Scene parkedCarsAt20To25Metres();
