@@ -7,7 +7,7 @@
 #      the rawlog-edit / RawLogViewer checks run in step 2 only; nor can python3 load a sanitized
 #      extension, so the Python tests run in step 2 only), and the multi-threaded test
 #      under ThreadSanitizer (./build-tsan)
-#   4. libFuzzer targets, 20 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
+#   4. libFuzzer targets, 10 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
 # Tests that need the real scans (SemanticKITTI etc., TRAVEL_DATA_DIR) skip with a message when absent.
 set -euo pipefail
@@ -37,7 +37,10 @@ cmake --build build-asan -j2
 # and MRPT's ICP over the 22-frame drive) is a figure, not a code path: plain suite only.
 # Neither is even built here (TRAVEL_BUILD_FIGURE_TESTS=OFF saves minutes of ASan compilation);
 # the filter stays for a build-asan/ configured by hand with them.
-ASAN_SKIP='^(NavClosedLoop\.|Seeds/TravelOnRampKerb\.|Seeds/MapOnRampKerb\.|IndependentRegistration\.)'
+# The apps' common-flag checks (the one flag dialect: parsing and messages, all code paths the
+# apps' own CLI tests run under ASan too) and the installed package's consumer build (CMake, no
+# TRAVEL code runs) are plain suite only as well: ~2 minutes of CI's 30.
+ASAN_SKIP='^(NavClosedLoop\.|Seeds/TravelOnRampKerb\.|Seeds/MapOnRampKerb\.|IndependentRegistration\.|apps\.travel_[a-z_]+_common_flags$|install\.consumer$)'
 log "test suite under sanitizers (closed-loop navigation runs: plain suite only)"
 # allocator_may_return_null: a corrupt rawlog's absurd sizes reach MRPT's allocator; the apps
 # turn the failure into a clean error (apps/MemoryLimit.hpp) instead of ASan aborting.
@@ -56,8 +59,8 @@ TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_robustness --gtest_filter='*T
 
 # Bounded fuzzing of every reader and the segmentation entry point (scripts/run-fuzzers.sh;
 # longer runs: scripts/run-fuzzers.sh 3600).
-log "fuzzing: ${TRAVEL_FUZZ_SECONDS:-20} s per target"
-bash "$ROOT_DIR/scripts/run-fuzzers.sh" "${TRAVEL_FUZZ_SECONDS:-20}"
+log "fuzzing: ${TRAVEL_FUZZ_SECONDS:-10} s per target"
+bash "$ROOT_DIR/scripts/run-fuzzers.sh" "${TRAVEL_FUZZ_SECONDS:-10}"
 
 if command -v clang-format >/dev/null 2>&1; then
   log "clang-format check"
