@@ -346,7 +346,11 @@ TEST(Presets, Values) {
     const Params vlp16 = travel::loadPreset("vlp16");
     EXPECT_EQ(vlp16.node_min_points, 5);
     EXPECT_EQ(vlp16.max_range, 60.0);
-    EXPECT_EQ(travel::loadPreset("os128").sensor_height, 0.0);
+    const Params os128 = travel::loadPreset("os128");
+    EXPECT_EQ(os128.sensor_height, 0.0);
+    // Buffers for the OS1-128's densest mode (128 x 2048), not the 1024-column range image.
+    EXPECT_EQ(os128.scan_points, 128 * 2048);
+    EXPECT_EQ(hdl32.scan_points, 0);
 }
 
 TEST(Presets, UnknownPresetListsAvailableAndSearched) {

@@ -62,6 +62,7 @@ void Pipeline::adoptSettledState(const Pipeline& settled) {
 }
 
 std::size_t Pipeline::expectedPoints() const {
+    if (params_.scan_points > 0) return static_cast<std::size_t>(params_.scan_points);
     const std::size_t beams = std::max<std::size_t>(elevationTableDeg(params_).size(),
                                                     static_cast<std::size_t>(params_.num_rings));
     return beams * static_cast<std::size_t>(params_.num_columns);

@@ -147,6 +147,10 @@ struct AutoReal {
       "HDL-64E) or num_rings uniform bins in [min_elevation_deg, max_elevation_deg]")             \
     X(int, num_rings, 64, "", 1, 1024, "Rows of the range image (laser rings)")                   \
     X(int, num_columns, 2048, "", 16, 65536, "Columns of the range image (azimuth bins)")         \
+    X(int, scan_points, 0, "points", 0, 16777216,                                                 \
+      "Points per scan the buffers are sized for when the pipeline is built (their pages are "    \
+      "mapped then, not on the first frame); 0 = beams x num_columns. A larger scan still "       \
+      "works: its first frame grows the buffers")                                                 \
     X(double, min_elevation_deg, -24.9, "deg", -90.0, 90.0,                                       \
       "Lowest beam elevation, for elevation_table: uniform")                                      \
     X(double, max_elevation_deg, 2.0, "deg", -90.0, 90.0,                                         \

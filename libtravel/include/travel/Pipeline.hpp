@@ -81,7 +81,7 @@ class Pipeline {
     void updateMount(const PointCloud& cloud, const FrameInput& input, MountNote& note);
     /// seed_search_radius >= firstGroundRingRadius for the current height and elevation table.
     void applyFirstGroundRing();
-    /// Points of a full frame of the configured sensor: beams x num_columns.
+    /// Points of a full frame of the configured sensor: scan_points, else beams x num_columns.
     std::size_t expectedPoints() const;
 
     Params configured_;
