@@ -290,7 +290,6 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
 // against those whose first column is, the second starting after the first ends (cyclically).
 void RunClustering::linkAcrossSeam(int begin, int end, int seam_col, int cols, float max_dist2) {
     // KITTI's rings start up to 0.5 deg (3 columns of 2048) after the cut.
-    constexpr int kSeamColumns = 4;
     const auto cyclic = [cols](int a, int b) {  // b - a, wrapped into [-cols / 2, cols / 2)
         int d = (b - a) % cols;
         d += d < -cols / 2 ? cols : 0;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "travel/RangeImage.hpp"
+#include "travel/RunClustering.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
 
 namespace travel::eval {
@@ -134,13 +135,13 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
     const float seam2 = float(params.seam_max_shift * params.seam_max_shift);
     const int span = params.vertical_ring_span;
     const float t_h = float(params.horizontal_merge_dist);
-    // RunClustering's seam linkage: runs touching the sweep start column (+-4 columns).
+    // RunClustering's seam linkage: runs touching the sweep start column.
     const int seam_col = image.sweepStartColumn(), cols = image.cols();
     const std::vector<int32_t>& col = image.col();
     auto nearSeam = [&](std::size_t i) {
         if (seam_col < 0) return false;
         const int d = std::abs(col[i] - seam_col) % cols;
-        return std::min(d, cols - d) <= 4;
+        return std::min(d, cols - d) <= RunClustering::kSeamColumns;
     };
     std::vector<std::vector<uint32_t>> by_row(rows);
     for (std::size_t a = 0; a < order.size();) {
@@ -164,7 +165,6 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                 owner = g;
         for (auto& v : by_row) v.clear();
         for (std::size_t k = a; k < b; ++k) by_row[row[order[k]]].push_back(order[k]);
-        const uint32_t owner_group = groupOf(order[groups[owner].first]);
         for (std::size_t g = 0; g < groups.size(); ++g) {
             const std::size_t gb = groups[g].first, ge = groups[g].second;
             if (g == owner || ge - gb < min_part_points) continue;
@@ -213,7 +213,6 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
             part.part_points = ge - gb;
             part.part_is_object = (group & 0x80000000u) == 0;
             part.same_label = gt_labels[order[gb]] == gt_labels[order[groups[owner].first]];
-            (void)owner_group;
             std::vector<float> ranges;
             for (std::size_t k = gb; k < ge; ++k) ranges.push_back(range[order[k]]);
             std::nth_element(ranges.begin(), ranges.begin() + ranges.size() / 2, ranges.end());

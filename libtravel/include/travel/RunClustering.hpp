@@ -24,6 +24,9 @@ struct TerrainModel;
 
 class RunClustering {
   public:
+    /// Seam linkage: runs ending / starting within this many columns of the sweep start.
+    static constexpr int kSeamColumns = 4;
+
     /// Stage 1 (Sec. IV-B): sort the non-ground points by (ring, column) and build the runs of
     /// every ring, with skipped linkage (a point joins the most recent of the last T_skip + 1
     /// open runs whose end lies within T_horz, or, across an occlusion, within
