@@ -39,7 +39,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     const std::size_t points = expectedPoints();
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
-    if (params_.self_box_min_x < params_.self_box_max_x) detail::prefault(self_returns_, points);
+    if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
     if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)

@@ -213,6 +213,10 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     out.num_valid = num_valid;
 }
 
+bool hasSelfBox(const Params& params) {
+    return !SelfBox(params).empty();
+}
+
 void markSelfReturns(const PointCloud& cloud, const Params& params, std::vector<uint8_t>& is_self) {
     const SelfBox self_box(params);
     if (self_box.empty()) {

@@ -55,6 +55,9 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
 void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
                 AlignedCloud& out);
 
+/// Whether params' self_box holds any volume (min < max on every axis): otherwise it is off.
+bool hasSelfBox(const Params& params);
+
 /// The self filter alone, as preprocess() applies it: is_self[i] = 1 where point i lies inside
 /// the self_box (the own vehicle, vehicle frame), else 0; empty when the box is. For the
 /// steps that read the raw cloud before preprocess() (the mount estimate).
