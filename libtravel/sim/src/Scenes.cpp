@@ -42,6 +42,18 @@ Box car(uint32_t id, double x, double y, double yaw_deg) {
     return box(id, x, y, 4.5, 1.8, 1.5, yaw_deg);
 }
 
+// A verge beside the road along x: from y = y_start it rises `rise` metres over `length` metres
+// away from the road (outward +1: towards +y, -1: towards -y) to a plateau; 400 m long.
+Ramp vergeBesideRoad(double y_start, double outward, double length, double rise) {
+    Ramp ramp;
+    ramp.start = {0.0, y_start};
+    ramp.direction = {0.0, outward};
+    ramp.length = length;
+    ramp.width = 400.0;
+    ramp.slope_deg = std::atan(rise / length) / kDegToRad;
+    return ramp;
+}
+
 Pole pole(uint32_t id, double x, double y, double radius, double height) {
     Pole p;
     p.id = id;
@@ -144,21 +156,38 @@ Scene fencesAndWalls() {
     return scene;
 }
 
+Scene meshFencesOnRoughVerges() {
+    Scene scene;
+    // Left: grass rising 0.3 m over 2 m from y = 4, a mesh fence on the plateau at y = 7.
+    // Right: a rough bank rising 0.4 m over 3 m from y = -5 (7.6 deg), walls on it at y = -9.
+    scene.ramps = {vergeBesideRoad(4.0, 1.0, 2.0, 0.3), vergeBesideRoad(-5.0, -1.0, 3.0, 0.4)};
+    scene.roughness.amplitude = 0.04;
+    scene.roughness.wavelength = 1.0;
+    // Posts every 2.5 m (ids 1-12, x -15..12.5); between them mesh: vertical wires 8 cm wide
+    // every 20 cm (the rays between them reach the grass behind), 3 cm above the ground.
+    uint32_t wire_id = 101;
+    for (int k = 0; k < 12; ++k) {
+        const double x = -15.0 + 2.5 * k;
+        scene.poles.push_back(pole(static_cast<uint32_t>(k + 1), x, 7.0, 0.04, 1.6));
+        for (int w = 1; w < 12; ++w) {
+            Box wire = box(wire_id, x + 0.2 * w + 0.05, 7.0, 0.08, 0.01, 1.45);
+            wire.clearance = 0.03;
+            wire.return_fraction = 0.7;  // thin wires: 30 % of the rays that hit them are lost
+            scene.boxes.push_back(wire);
+        }
+        ++wire_id;  // one id per panel
+    }
+    // A 1.2 m garden wall straight on the rough bank (id 200), x < 0, and a 2 m wall (id 201)
+    // on a 0.15 m high, 0.3 m wide footing (id 202), x > 0.
+    scene.walls.push_back(wall(200, {-30.0, -9.0}, {-1.0, -9.0}, 0.2, 1.2));
+    scene.walls.push_back(wall(201, {1.0, -9.0}, {30.0, -9.0}, 0.2, 2.0));
+    scene.boxes.push_back(box(202, 15.5, -9.0, 29.0, 0.3, 0.15));
+    return scene;
+}
+
 Scene grassVerges() {
     Scene scene;
-    Ramp left;
-    left.start = {0.0, 4.0};
-    left.direction = {0.0, 1.0};
-    left.length = 2.0;
-    left.width = 400.0;
-    left.slope_deg = std::atan(0.3 / 2.0) / kDegToRad;
-    scene.ramps.push_back(left);
-    Ramp right = left;
-    right.start = {0.0, -4.0};
-    right.direction = {0.0, -1.0};
-    right.length = 1.5;
-    right.slope_deg = std::atan(0.5 / 1.5) / kDegToRad;
-    scene.ramps.push_back(right);
+    scene.ramps = {vergeBesideRoad(4.0, 1.0, 2.0, 0.3), vergeBesideRoad(-4.0, -1.0, 1.5, 0.5)};
     scene.roughness.amplitude = 0.03;
     scene.roughness.wavelength = 1.0;
     return scene;

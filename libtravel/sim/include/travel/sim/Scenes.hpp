@@ -46,6 +46,15 @@ Scene mixed();
 /// The bases of fences and walls are what TRAVEL labelled ground 5-20 m away.
 Scene fencesAndWalls();
 
+/// Harder fences and walls on rough verges (3-4 cm roughness, 1 m wavelength): on the left,
+/// grass rising 0.3 m over 2 m from y = 4 and on its plateau (y = 7), from x = -15 to 15 m, a
+/// 1.6 m fence of posts every 2.5 m (ids 1-12) and mesh panels of vertical wires, 8 cm wide
+/// every 20 cm, 3 cm above the grass, 70 % of the rays hitting them returned (one id per
+/// panel, 101-112: rays pass between the wires); on the right, a bank rising 0.4 m over 3 m
+/// from y = -5, and on it (y = -9) a 1.2 m garden wall without footing (id 200, x < 0) and a
+/// 2 m wall (id 201, x > 0) on a 0.15 m high, 0.3 m wide footing (id 202).
+Scene meshFencesOnRoughVerges();
+
 /// A road |y| < 4 between verges: on the left, grass rising 0.3 m over 2 m (8.5 deg) to a
 /// plateau; on the right, an embankment rising 0.5 m over 1.5 m (18 deg) to a plateau; 3 cm
 /// roughness (1 m wavelength) everywhere. All of it is ground: what TRAVEL missed 5-40 m away.
