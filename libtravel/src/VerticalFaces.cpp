@@ -12,6 +12,7 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
                                     std::array<std::size_t, 4>& counts) {
     face_feet_.clear(), foot_faces_.clear();
     const float min_rise = static_cast<float>(params.vertical_face_min_rise);
+    const int max_gap = params.vertical_face_max_gap;
     const int rows = image.rows(), cols = image.cols();
     if (!(min_rise > 0.f) || rows < 2 || cols < 1) return;
     const std::vector<int16_t>& row = image.row();
@@ -39,15 +40,26 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
         if (labels[i] != PointClass::Ground || row[i] < 0) continue;
         const float foot_z = z[i];
         std::size_t c = static_cast<std::size_t>(row[i] + 1) * cols + col[i];
-        // Most ground points: the next ring is not higher (checked before any square root).
-        if (c >= num_cells || !(cells[c].z > foot_z)) continue;
+        if (c >= num_cells) continue;
+        // Most ground points: the next ring returned and is not higher (checked before any
+        // square root).
+        if (cells[c].point >= 0 ? !(cells[c].z > foot_z) : max_gap == 0) continue;
         float prev_z = foot_z, prev_range = std::sqrt(x[i] * x[i] + y[i] * y[i]);
         bool risen = false;
         int32_t face = -1;  // the first non-ground point of the climb
+        int missing = 0;    // consecutive rings without a return
         for (; c < num_cells; c += cols) {
             const int32_t j = cells[c].point;
+            // No return on this ring: foliage, mesh or dark paint let part of the rays pass
+            // or absorb them. The climb resumes from its last point on the next ring that
+            // returned, at most max_gap rings on (the steepness test spans the gap).
+            if (j < 0) {
+                if (++missing > max_gap) break;
+                continue;
+            }
+            missing = 0;
             const float dz = cells[c].z - prev_z;
-            if (!(dz > 0.f)) break;  // also an empty cell (j < 0, NaN height)
+            if (!(dz > 0.f)) break;
             const float range = std::sqrt(x[j] * x[j] + y[j] * y[j]);
             // Steeper than 45 degrees: no traversable slope climbs like this.
             if (!(dz > std::fabs(range - prev_range))) break;

@@ -132,6 +132,10 @@ struct AutoReal {
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this, up to a non-ground point, is the foot of a wall, fence, trunk or bush face: "   \
       "NonGround (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")      \
+    X(int, vertical_face_max_gap, 2, "rings", 0, 16,                                              \
+      "The face rule's climb steps over up to this many consecutive rings without a return "      \
+      "(foliage, mesh fences and dark paint return part of the rays): a porous face keeps its "   \
+      "foot. 0 = an empty ring ends the climb")                                                   \
     X(bool, cluster_face_feet, false, "", 0, 1,                                                   \
       "Each face foot joins the object cluster of its face (else it is left unclustered: on "     \
       "SemanticKITTI the feet at car sills are often labelled road/parking, see docs)")           \

@@ -10,14 +10,16 @@
 // the next steeper than 45 degrees, steeper than any traversable slope) by more than
 // vertical_face_min_rise, up to a non-ground point of eq. 5 (the face), is the face's foot:
 // NonGround. Kerbs (0.10-0.20 m, ground in SemanticKITTI and in the synthetic truth) rise less
-// than the 0.25 m the os64 preset sets, and are kept. Off by default on roads (docs/parameters.md,
-// "Off-road driving": unclustered feet, purity, speed).
-// The object segmentation (Sec. IV) builds its runs without the feet, so that feet of
-// neighbouring objects never link at ground level. With cluster_face_feet each foot then joins
-// the cluster of its own face (RunClustering::attachFeet); without it (the default) the feet
-// stay unclustered: on the SemanticKITTI dev frames about 9 % of the feet are road, parking or
-// sidewalk points of the ground truth, mostly at car sills and tyres, and joined to the cars
-// they lower the purity 0.990 -> 0.986 (docs/parameters.md, "Off-road driving").
+// than the 0.25 m the os64 preset sets, and are kept. Foliage, mesh and dark paint return part
+// of the rays only: the climb steps over up to vertical_face_max_gap rings without a return
+// (the steepness is tested across the gap), so porous faces keep their feet too. Off by default on
+// roads (docs/parameters.md, "Off-road driving": unclustered feet, purity, speed). The object
+// segmentation (Sec. IV) builds its runs without the feet, so that feet of neighbouring objects
+// never link at ground level. With cluster_face_feet each foot then joins the cluster of its own
+// face (RunClustering::attachFeet); without it (the default) the feet stay unclustered: on the
+// SemanticKITTI dev frames about 9 % of the feet are road, parking or sidewalk points of the ground
+// truth, mostly at car sills and tyres, and joined to the cars they lower the purity 0.990 -> 0.986
+// (docs/parameters.md, "Off-road driving").
 #pragma once
 
 #include <array>
