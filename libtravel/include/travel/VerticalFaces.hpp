@@ -18,7 +18,7 @@
 // never link at ground level. With cluster_face_feet each foot then joins the cluster of its own
 // face (RunClustering::attachFeet); without it (the default) the feet stay unclustered: on the
 // SemanticKITTI dev frames about 9 % of the feet are road, parking or sidewalk points of the ground
-// truth, mostly at car sills and tyres, and joined to the cars they lower the purity 0.990 -> 0.986
+// truth, mostly at car sills and tyres, and joined to the cars they lower the purity 0.991 -> 0.985
 // (docs/parameters.md, "Off-road driving").
 #pragma once
 
