@@ -166,7 +166,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_far_range_.clear(), run_near_range_.clear();
     run_size_.clear(), run_first_input_.clear(), run_box_.clear();
-    point_run_.resize(total), next_in_run_.resize(total);
+    point_run_.resize(total), next_in_run_.assign(total, kEndOfRun);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
     const float merge2 = t_horz * t_horz;
@@ -201,11 +201,31 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             size = run_size_[run], first_input = run_first_input_[run];
             current = run;
         };
+        auto extend = [&](uint32_t k, float range) {  // current takes sorted point k
+            lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
+            lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
+            hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
+            far = std::max(far, range), near = std::min(near, range);
+            ++size;
+            first_input = std::min(first_input, sorted_[k]);
+        };
         // Each row's elevation: the range-weighted mean sine of its points' elevations.
         float sum_z = 0.f, sum_range = 0.f;
-        for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
+        const uint32_t row_end = row_begin_[r + 1];
+        for (uint32_t k = row_begin_[r]; k < row_end; ++k) {
             const float range = ranges[k];
             sum_z += zs[k], sum_range += range;
+            // The most recent open run is `current`, whose last point is k - 1 (every point
+            // joins or opens the run that becomes current): the usual case, tested first on
+            // consecutive points, without looking up the open runs. Its last point and box
+            // stay in registers.
+            if (current >= 0 && dist2(k, k - 1) < merge2) {
+                next_in_run_[k - 1] = k;
+                point_run_[k] = current;
+                extend(k, range);
+                continue;
+            }
+            if (current >= 0) run_last_[current] = k - 1;
             // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
@@ -213,7 +233,6 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 const int o = open_runs_[s];
                 const uint32_t last = run_last_[o];
                 const float d2 = dist2(k, last);
-                // The usual case first, alone: one branch, taken for most points.
                 if (d2 < merge2) {
                     joined = o, joined_slot = s;
                     break;
@@ -233,16 +252,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             }
             if (joined >= 0) {
                 next_in_run_[run_last_[joined]] = k;
-                next_in_run_[k] = kEndOfRun;
                 run_last_[joined] = k;
                 point_run_[k] = joined;
                 if (joined != current) store(), load(joined);
-                lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
-                lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
-                hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
-                far = std::max(far, range), near = std::min(near, range);
-                ++size;
-                first_input = std::min(first_input, sorted_[k]);
+                extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
                     open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
@@ -263,11 +276,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             lo_x = hi_x = xs[k], lo_y = hi_y = ys[k], lo_z = hi_z = zs[k];
             far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
-            next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
-        if (current >= 0) store();
+        if (current >= 0) run_last_[current] = row_end - 1, store();
         if (sum_range > 0.f)
             row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
         if (seam_col >= 0 && seam2 > 0.f)
