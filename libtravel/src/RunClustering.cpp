@@ -67,25 +67,31 @@
 namespace travel {
 
 inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
-    const float dx = px_[a] - px_[b], dy = py_[a] - py_[b], dz = pz_[a] - pz_[b];
+    const SortedPoint &p = pts_[a], &q = pts_[b];
+    const float dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
     return dx * dx + dy * dy + dz * dz;
 }
 
 namespace {
 
-// out[k] = std::sqrt(x^2 + y^2 + z^2), the same floats, 4 at a time: std::sqrt keeps a branch
-// for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
-void computeRanges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
+// out[k] = std::sqrt(x^2 + y^2 + z^2) of p[k], the same floats, 4 at a time: std::sqrt keeps
+// a branch for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
+template <class Point>
+void computeRanges(const Point* p, float* out, uint32_t n) {
+    static_assert(sizeof(Point) == 4 * sizeof(float));
     uint32_t k = 0;
 #ifdef __SSE2__
     for (; k + 4 <= n; k += 4) {
-        const __m128 vx = _mm_loadu_ps(x + k), vy = _mm_loadu_ps(y + k), vz = _mm_loadu_ps(z + k);
+        // Four points (x, y, z, column bits) transposed into x, y, z lanes.
+        __m128 vx = _mm_loadu_ps(&p[k].x), vy = _mm_loadu_ps(&p[k + 1].x);
+        __m128 vz = _mm_loadu_ps(&p[k + 2].x), vw = _mm_loadu_ps(&p[k + 3].x);
+        _MM_TRANSPOSE4_PS(vx, vy, vz, vw);
         const __m128 sum =
             _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz));
         _mm_storeu_ps(out + k, _mm_sqrt_ps(sum));
     }
 #endif
-    for (; k < n; ++k) out[k] = std::sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]);
+    for (; k < n; ++k) out[k] = std::sqrt(p[k].x * p[k].x + p[k].y * p[k].y + p[k].z * p[k].z);
 }
 
 }  // namespace
@@ -110,8 +116,8 @@ void RunClustering::unite(int a, int b) {
 void RunClustering::reserve(std::size_t points, std::size_t cells) {
     using detail::prefault;
     prefault(key_count_, cells + 1);
-    prefault(sorted_, points), prefault(sorted_col_, points), prefault(point_run_, points);
-    prefault(px_, points), prefault(py_, points), prefault(pz_, points), prefault(range_, points);
+    prefault(sorted_, points), prefault(pts_, points), prefault(point_run_, points);
+    prefault(range_, points);
     prefault(next_in_run_, points), prefault(point_id_, points);
     prefault(input_, points), prefault(key_, points);
     // Runs: a few points each on real scans; more grow the buffers once.
@@ -149,17 +155,15 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     for (std::size_t k = 0; k < num_keys; ++k) key_count_[k + 1] += key_count_[k];
     row_begin_.resize(rows + 1);
     for (int r = 0; r <= rows; ++r) row_begin_[r] = key_count_[static_cast<std::size_t>(r) * cols];
-    sorted_.resize(total), sorted_col_.resize(total);
-    px_.resize(total), py_.resize(total), pz_.resize(total), range_.resize(total);
+    sorted_.resize(total), pts_.resize(total), range_.resize(total);
     for (uint32_t m = 0; m < total; ++m) {
         const uint32_t i = input_[m];
         const uint32_t slot = key_count_[key_[m]]++;
         sorted_[slot] = i;
-        sorted_col_[slot] = col[i];
         // Contiguous copies in sorted order: every later access is by sorted position.
-        px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
+        pts_[slot] = {cloud.x[i], cloud.y[i], cloud.z[i], col[i]};
     }
-    computeRanges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
+    computeRanges(pts_.data(), range_.data(), total);
     row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
 
     // Runs, ring by ring.
@@ -175,7 +179,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
     const int seam_col = image.sweepStartColumn();
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
-    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data(), *ranges = range_.data();
+    const SortedPoint* pts = pts_.data();
+    const float* ranges = range_.data();
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
@@ -191,7 +196,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
             run_far_range_[current] = far, run_near_range_[current] = near;
             run_size_[current] = size, run_first_input_[current] = first_input;
-            run_col_end_[current] = sorted_col_[run_last_[current]];
+            run_col_end_[current] = pts[run_last_[current]].col;
         };
         auto load = [&](int run) {
             const RunBox& box = run_box_[run];
@@ -202,9 +207,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             current = run;
         };
         auto extend = [&](uint32_t k, float range) {  // current takes sorted point k
-            lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
-            lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
-            hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
+            const SortedPoint& p = pts[k];
+            lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y);
+            lo_z = std::min(lo_z, p.z), hi_x = std::max(hi_x, p.x);
+            hi_y = std::max(hi_y, p.y), hi_z = std::max(hi_z, p.z);
             far = std::max(far, range), near = std::min(near, range);
             ++size;
             first_input = std::min(first_input, sorted_[k]);
@@ -214,7 +220,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         const uint32_t row_end = row_begin_[r + 1];
         for (uint32_t k = row_begin_[r]; k < row_end; ++k) {
             const float range = ranges[k];
-            sum_z += zs[k], sum_range += range;
+            sum_z += pts[k].z, sum_range += range;
             // The most recent open run is `current`, whose last point is k - 1 (every point
             // joins or opens the run that becomes current): the usual case, tested first on
             // consecutive points, without looking up the open runs. Its last point and box
@@ -266,14 +272,14 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             if (current >= 0) store();
             const int run = static_cast<int>(run_first_.size());
             run_first_.push_back(k), run_last_.push_back(k);
-            run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
+            run_col_begin_.push_back(pts[k].col), run_col_end_.push_back(pts[k].col);
             run_row_.push_back(static_cast<int16_t>(r));
             parent_.push_back(run);
             // Written by store().
             run_far_range_.emplace_back(), run_near_range_.emplace_back();
             run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
             current = run;
-            lo_x = hi_x = xs[k], lo_y = hi_y = ys[k], lo_z = hi_z = zs[k];
+            lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
             far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
@@ -332,11 +338,11 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
-        const int ca = sorted_col_[ka];
+        const int ca = pts_[ka].col;
         const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
-        while (jb != kEndOfRun && sorted_col_[jb] < ca - column_window) jb = next_in_run_[jb];
+        while (jb != kEndOfRun && pts_[jb].col < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
-            if (sorted_col_[kb] > ca + column_window) break;
+            if (pts_[kb].col > ca + column_window) break;
             if (dist2(ka, kb) < max_dist2) return true;
         }
     }
@@ -461,11 +467,12 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
     for (int dr = -kRowsLooked; dr <= kRowsLooked; ++dr) {
         const int rr = r + dr;
         if (dr == 0 || rr < 0 || rr >= rows) continue;
-        const int32_t* col = sorted_col_.data();
+        const SortedPoint* pts = pts_.data();
         uint32_t k = static_cast<uint32_t>(
-            std::lower_bound(col + row_begin_[rr], col + row_begin_[rr + 1], run_col_begin_[b]) -
-            col);
-        for (; k < row_begin_[rr + 1] && col[k] <= run_col_end_[b]; ++k)
+            std::lower_bound(pts + row_begin_[rr], pts + row_begin_[rr + 1], run_col_begin_[b],
+                             [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
+            pts);
+        for (; k < row_begin_[rr + 1] && pts[k].col <= run_col_end_[b]; ++k)
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
     return false;
@@ -557,10 +564,10 @@ void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& imag
         // assignment and the summaries read them.
         const uint32_t foot = feet[f];
         const int32_t run = point_run_[slot];
-        sorted_.push_back(foot), sorted_col_.push_back(col[foot]);
-        px_.push_back(cloud.x[foot]), py_.push_back(cloud.y[foot]), pz_.push_back(cloud.z[foot]);
-        range_.push_back(
-            std::sqrt(px_.back() * px_.back() + py_.back() * py_.back() + pz_.back() * pz_.back()));
+        sorted_.push_back(foot);
+        pts_.push_back({cloud.x[foot], cloud.y[foot], cloud.z[foot], col[foot]});
+        const SortedPoint& p = pts_.back();
+        range_.push_back(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
         point_run_.push_back(run), next_in_run_.push_back(kEndOfRun);
         ++run_size_[run];
         run_first_input_[run] = std::min(run_first_input_[run], foot);
@@ -626,7 +633,7 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
     // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
     // locals (registers) and add it to the cluster once, instead of chaining every += through
     // the cluster's memory.
-    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data();
+    const SortedPoint* pts = pts_.data();
     const uint32_t* ids = point_id_.data();
     const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
     for (uint32_t k = 0; k < num_points;) {
@@ -639,7 +646,7 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
         double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float x = xs[k], y = ys[k], z = zs[k];
+            const float x = pts[k].x, y = pts[k].y, z = pts[k].z;
             lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
             hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
             sx += x, sy += y, sz += z;
@@ -677,8 +684,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
         float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float u = cos_yaw * xs[k] + sin_yaw * ys[k];
-            const float v = -sin_yaw * xs[k] + cos_yaw * ys[k];
+            const float u = cos_yaw * pts[k].x + sin_yaw * pts[k].y;
+            const float v = -sin_yaw * pts[k].x + cos_yaw * pts[k].y;
             u_min = std::min(u_min, u), u_max = std::max(u_max, u);
             v_min = std::min(v_min, v), v_max = std::max(v_max, v);
         }
