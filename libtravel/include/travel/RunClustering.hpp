@@ -99,9 +99,10 @@ class RunClustering {
     bool runsTouch(int a, int b, int column_window, float t_vert2, float ring_step2) const;
     float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
 
-    // Non-ground points sorted by (row, column, range): input indices, their coordinates and
-    // columns (one 16-byte record: the sort writes one place per point, the later walks read
-    // a point's coordinates and column together), and the offsets of each row in this order.
+    // Non-ground points sorted by (row, column, input index): input indices, their coordinates
+    // and columns (one 16-byte record: the sort writes two places per point, not five, and the
+    // later walks read a point's coordinates and column together), and the offsets of each row
+    // in this order.
     struct SortedPoint {
         float x, y, z;
         int32_t col;
