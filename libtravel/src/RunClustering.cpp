@@ -59,6 +59,15 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+// The compaction's AVX2 copy: GCC on x86-64, not where the build asks for baseline code only
+// (TRAVEL_NO_CPU_DISPATCH, see CpuDispatch.hpp).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(TRAVEL_NO_CPU_DISPATCH)
+#define TRAVEL_COMPACT_AVX2 1
+#include <immintrin.h>
+
+#include <array>
+#endif
 
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
@@ -92,6 +101,79 @@ void computeRanges(const Point* p, float* out, uint32_t n) {
     }
 #endif
     for (; k < n; ++k) out[k] = std::sqrt(p[k].x * p[k].x + p[k].y * p[k].y + p[k].z * p[k].z);
+}
+
+// The non-ground points with a row, in input order: their input indices and keys
+// row * cols + col, in input[0, total) and key[0, total); returns total. Branch-free (ground and
+// non-ground points alternate unpredictably); input and key hold n values.
+uint32_t compactScalar(const int16_t* row, const int32_t* col, const PointClass* labels,
+                       std::size_t begin, std::size_t n, int cols, uint32_t total, uint32_t* input,
+                       uint32_t* key) {
+    for (std::size_t i = begin; i < n; ++i) {
+        input[total] = static_cast<uint32_t>(i);
+        key[total] = static_cast<uint32_t>(row[i] * cols + col[i]);
+        total += labels[i] == PointClass::NonGround && row[i] >= 0;
+    }
+    return total;
+}
+
+#ifdef TRAVEL_COMPACT_AVX2
+// For each 8-bit mask, the lanes whose bit is set, in order (the rest: 0).
+constexpr std::array<std::array<int32_t, 8>, 256> kLeftPack = [] {
+    std::array<std::array<int32_t, 8>, 256> table{};
+    for (int mask = 0; mask < 256; ++mask) {
+        int k = 0;
+        for (int lane = 0; lane < 8; ++lane)
+            if (mask & (1 << lane)) table[mask][k++] = lane;
+    }
+    return table;
+}();
+
+// compactScalar() 8 points at a time: the selected lanes' indices and keys moved to the front
+// (vpermd with kLeftPack) and stored at `total`; the same values.
+__attribute__((target("avx2,popcnt"))) uint32_t compactAvx2(const int16_t* row, const int32_t* col,
+                                                            const PointClass* labels, std::size_t n,
+                                                            int cols, uint32_t* input,
+                                                            uint32_t* key) {
+    const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i columns = _mm256_set1_epi32(cols);
+    const __m256i non_ground = _mm256_set1_epi32(static_cast<int>(PointClass::NonGround));
+    const __m256i minus_one = _mm256_set1_epi32(-1);
+    uint32_t total = 0;
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m256i r =
+            _mm256_cvtepi16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + i)));
+        const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(col + i));
+        const __m256i k = _mm256_add_epi32(_mm256_mullo_epi32(r, columns), c);
+        const __m256i label =
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(labels + i)));
+        const __m256i selected = _mm256_and_si256(_mm256_cmpeq_epi32(label, non_ground),
+                                                  _mm256_cmpgt_epi32(r, minus_one));
+        const int mask = _mm256_movemask_ps(_mm256_castsi256_ps(selected));
+        const __m256i pack =
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kLeftPack[mask].data()));
+        const __m256i index = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), lanes);
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(input + total),
+                            _mm256_permutevar8x32_epi32(index, pack));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(key + total),
+                            _mm256_permutevar8x32_epi32(k, pack));
+        total += static_cast<uint32_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+    }
+    return compactScalar(row, col, labels, i, n, cols, total, input, key);
+}
+#endif
+
+uint32_t compact(const int16_t* row, const int32_t* col, const PointClass* labels, std::size_t n,
+                 int cols, uint32_t* input, uint32_t* key) {
+#ifdef TRAVEL_COMPACT_AVX2
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
+    }();
+    if (avx2) return compactAvx2(row, col, labels, n, cols, input, key);
+#endif
+    return compactScalar(row, col, labels, 0, n, cols, 0, input, key);
 }
 
 }  // namespace
@@ -145,12 +227,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t num_keys = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
     key_count_.assign(num_keys + 1, 0);
     input_.resize(n), key_.resize(n);
-    uint32_t total = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        input_[total] = static_cast<uint32_t>(i);
-        key_[total] = static_cast<uint32_t>(row[i] * cols + col[i]);
-        total += labels[i] == PointClass::NonGround && row[i] >= 0;
-    }
+    const uint32_t total =
+        compact(row.data(), col.data(), labels.data(), n, cols, input_.data(), key_.data());
     for (uint32_t m = 0; m < total; ++m) ++key_count_[key_[m] + 1];
     for (std::size_t k = 0; k < num_keys; ++k) key_count_[k + 1] += key_count_[k];
     row_begin_.resize(rows + 1);
