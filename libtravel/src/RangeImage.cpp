@@ -20,7 +20,8 @@
 // assigns provisional ring ids (field statistics, the scan-order walk, or the elevation table),
 // and one mapping them to rows: 0.55 ms for a 124k-point KITTI frame on the development machine
 // with baseline SSE2 code, ~0.3 ms with the per-point loops' AVX2 clones (see
-// TRAVEL_AVX2_CLONES; docs/performance.md).
+// TRAVEL_AVX2_CLONES; docs/performance.md). When the elevation table gave the last frame's rows
+// (or is the source asked for), the first pass also takes the quantised elevations.
 #include "travel/RangeImage.hpp"
 
 #include <algorithm>
@@ -60,6 +61,11 @@ constexpr int kMaxRings = 1024;
 // 2 deg higher than far ones. The hdl64 table is measured from this height, which halves its
 // row errors on KITTI; the other tables assume beams from the origin.
 constexpr float kHdl64BeamOriginHeight = 0.2f;
+
+// Height above the origin from which the elevation table's beams are seen.
+float tableOriginHeight(const Params& params) {
+    return params.elevation_table == "hdl64" ? kHdl64BeamOriginHeight : 0.0f;
+}
 
 // HDL-64E S2 on KITTI, ascending [deg]. Measured: rings of SemanticKITTI sequence 00 frames
 // 000000-000005 recovered from the scan order (cut at azimuth 0), then each ring's median of
@@ -152,28 +158,54 @@ inline int angleDifference(int a, int b) {
 // Quantised azimuths (for the scan-order walk) and final columns: col = floor((azimuth + pi) /
 // 2 pi * columns), clamped (azimuth +pi, y = +0 and x < 0, is the last column, -pi the first;
 // no azimuth, x = y = 0 or NaN, column 0), -1 where !keep.
-TRAVEL_AVX2_CLONES
-void azimuthsAndColumns(const float* xs, const float* ys, const uint8_t* keep, std::size_t n,
-                        int cols, int16_t* azimuth16, int32_t* col) {
-    const float columns_per_rad = static_cast<float>(cols) / (2.0f * kPi);
-    const float middle = 0.5f * static_cast<float>(cols);
-    const float last = static_cast<float>(cols - 1);
-    for (std::size_t i = 0; i < n; ++i) {
-        const float azimuth = fastAtan2(ys[i], xs[i]);
-        azimuth16[i] = quantisedAngle(azimuth);
-        float column = std::max(0.0f, azimuth * columns_per_rad + middle);  // NaN -> 0
-        column = std::min(column, last);
-        col[i] = keep[i] ? static_cast<int32_t>(column) : -1;
-    }
+struct ColumnScale {
+    explicit ColumnScale(int cols)
+        : per_rad(static_cast<float>(cols) / (2.0f * kPi)),
+          middle(0.5f * static_cast<float>(cols)),
+          last(static_cast<float>(cols - 1)) {}
+    float per_rad, middle, last;
+};
+
+TRAVEL_INTO_CALLER void azimuthAndColumn(float x, float y, uint8_t keep, const ColumnScale& scale,
+                                         int16_t& azimuth16, int32_t& col) {
+    const float azimuth = fastAtan2(y, x);
+    azimuth16 = quantisedAngle(azimuth);
+    float column = std::max(0.0f, azimuth * scale.per_rad + scale.middle);  // NaN -> 0
+    column = std::min(column, scale.last);
+    col = keep ? static_cast<int32_t>(column) : -1;
 }
 
 // Quantised elevations seen from origin_height above the origin.
+TRAVEL_INTO_CALLER int16_t quantisedElevation(float x, float y, float z, float origin_height) {
+    const float horizontal = vectorisableSqrt(x * x + y * y);
+    return quantisedAngle(fastAtan2(z - origin_height, horizontal));
+}
+
+TRAVEL_AVX2_CLONES
+void azimuthsAndColumns(const float* xs, const float* ys, const uint8_t* keep, std::size_t n,
+                        int cols, int16_t* azimuth16, int32_t* col) {
+    const ColumnScale scale(cols);
+    for (std::size_t i = 0; i < n; ++i)
+        azimuthAndColumn(xs[i], ys[i], keep[i], scale, azimuth16[i], col[i]);
+}
+
 TRAVEL_AVX2_CLONES
 void quantisedElevations(const float* xs, const float* ys, const float* zs, std::size_t n,
                          float origin_height, int16_t* elevation16) {
+    for (std::size_t i = 0; i < n; ++i)
+        elevation16[i] = quantisedElevation(xs[i], ys[i], zs[i], origin_height);
+}
+
+// Both in one pass over the points (the same values): when the rows will come from the
+// elevation table.
+TRAVEL_AVX2_CLONES
+void azimuthsColumnsAndElevations(const float* xs, const float* ys, const float* zs,
+                                  const uint8_t* keep, std::size_t n, int cols, float origin_height,
+                                  int16_t* azimuth16, int32_t* col, int16_t* elevation16) {
+    const ColumnScale scale(cols);
     for (std::size_t i = 0; i < n; ++i) {
-        const float horizontal = vectorisableSqrt(xs[i] * xs[i] + ys[i] * ys[i]);
-        elevation16[i] = quantisedAngle(fastAtan2(zs[i] - origin_height, horizontal));
+        azimuthAndColumn(xs[i], ys[i], keep[i], scale, azimuth16[i], col[i]);
+        elevation16[i] = quantisedElevation(xs[i], ys[i], zs[i], origin_height);
     }
 }
 
@@ -430,18 +462,22 @@ class RowAssigner {
     // The nearest beam of `table_deg` by elevation. `boundaries` receives the midpoints
     // between beams [rad]; `row_of_elevation` caches the row of every quantised elevation for
     // them (rebuilt when they change, `cached_mids` says for which).
+    // `elevations`: the points' quantised elevations (tableOriginHeight()) if already
+    // computed, else null.
     void fromTable(const std::vector<double>& table_deg, std::vector<float>& boundaries,
-                   std::vector<int32_t>& cached_mids, std::vector<int16_t>& row_of_elevation) {
+                   std::vector<int32_t>& cached_mids, std::vector<int16_t>& row_of_elevation,
+                   const int16_t* elevations) {
         const int count = static_cast<int>(table_deg.size()) - 1;
         boundaries.resize(static_cast<std::size_t>(count));
         for (int k = 0; k < count; ++k) {
             boundaries[k] = static_cast<float>(0.5 * (table_deg[k] + table_deg[k + 1]) * kDegToRad);
         }
-        // Vectorised: quantised elevations, in `row`.
-        const float origin_height =
-            params_.elevation_table == "hdl64" ? kHdl64BeamOriginHeight : 0.0f;
-        quantisedElevations(cloud_.x.data(), cloud_.y.data(), cloud_.z.data(), n_, origin_height,
-                            row_.data());
+        // Vectorised: quantised elevations, in `row`, unless given.
+        if (elevations == nullptr) {
+            quantisedElevations(cloud_.x.data(), cloud_.y.data(), cloud_.z.data(), n_,
+                                tableOriginHeight(params_), row_.data());
+            elevations = row_.data();
+        }
         int16_t* row = row_.data();
         const std::size_t n = n_;
         // A search per point would cost more than all the rest: the row of every quantised
@@ -463,7 +499,7 @@ class RowAssigner {
         const int16_t* row_of = row_of_elevation.data();
         const uint8_t* keep = valid_.data();
         for (std::size_t i = 0; i < n; ++i) {
-            const int16_t beam = row_of[row[i] - kNoAngle];
+            const int16_t beam = row_of[elevations[i] - kNoAngle];
             row[i] = keep[i] ? beam : int16_t{-1};
         }
     }
@@ -564,6 +600,7 @@ std::vector<double> elevationTableDeg(const Params& params) {
 
 void RangeImage::reserve(std::size_t points) {
     detail::prefault(row_, points), detail::prefault(col_, points);
+    detail::prefault(elevation_, points);
 }
 
 void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& valid,
@@ -587,12 +624,23 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     }
 
     // Pass 1, vectorised: the final columns, and the quantised azimuths for the scan-order walk
-    // (in row_ until the rows replace them).
+    // (in row_ until the rows replace them). When the rows will likely come from the elevation
+    // table (it is the source asked for, or gave the last frame's rows), the same pass also
+    // takes the quantised elevations (the table's values, computed once per point either way).
     row_.resize(n);
     col_.resize(n);
     cols_ = params.num_columns;
-    azimuthsAndColumns(cloud.x.data(), cloud.y.data(), valid.data(), n, cols_, row_.data(),
-                       col_.data());
+    const bool elevations_first =
+        source == "table" || (is_auto && source_ == RingSource::Table && !cloud.hasRing());
+    if (elevations_first) {
+        elevation_.resize(n);
+        azimuthsColumnsAndElevations(cloud.x.data(), cloud.y.data(), cloud.z.data(), valid.data(),
+                                     n, cols_, tableOriginHeight(params), row_.data(), col_.data(),
+                                     elevation_.data());
+    } else {
+        azimuthsAndColumns(cloud.x.data(), cloud.y.data(), valid.data(), n, cols_, row_.data(),
+                           col_.data());
+    }
 
     // Sweep start (header): the earliest valid point by time, else the first valid point.
     sweep_start_col_ = -1;
@@ -630,7 +678,8 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     }
     // A named table fixes the number of rows, whatever num_rings says.
     fillElevationTableDeg(params, table_deg_);
-    rows.fromTable(table_deg_, table_mid_, table_mids_quantised_, row_of_elevation_);
+    rows.fromTable(table_deg_, table_mid_, table_mids_quantised_, row_of_elevation_,
+                   elevations_first ? elevation_.data() : nullptr);
     source_ = RingSource::Table;
     rows_ = static_cast<int>(table_deg_.size());
     // Storage order alone does not say where the sweep began: only the time field does.

@@ -59,6 +59,15 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+// The compaction's AVX2 copy: GCC on x86-64, not where the build asks for baseline code only
+// (TRAVEL_NO_CPU_DISPATCH, see CpuDispatch.hpp).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(TRAVEL_NO_CPU_DISPATCH)
+#define TRAVEL_COMPACT_AVX2 1
+#include <immintrin.h>
+
+#include <array>
+#endif
 
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
@@ -67,25 +76,104 @@
 namespace travel {
 
 inline float RunClustering::dist2(uint32_t a, uint32_t b) const {
-    const float dx = px_[a] - px_[b], dy = py_[a] - py_[b], dz = pz_[a] - pz_[b];
+    const SortedPoint &p = pts_[a], &q = pts_[b];
+    const float dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
     return dx * dx + dy * dy + dz * dz;
 }
 
 namespace {
 
-// out[k] = std::sqrt(x^2 + y^2 + z^2), the same floats, 4 at a time: std::sqrt keeps a branch
-// for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
-void computeRanges(const float* x, const float* y, const float* z, float* out, uint32_t n) {
+// out[k] = std::sqrt(x^2 + y^2 + z^2) of p[k], the same floats, 4 at a time: std::sqrt keeps
+// a branch for errno that stops GCC from vectorising, and Eigen's fast-math sqrt is approximate.
+template <class Point>
+void computeRanges(const Point* p, float* out, uint32_t n) {
+    static_assert(sizeof(Point) == 4 * sizeof(float));
     uint32_t k = 0;
 #ifdef __SSE2__
     for (; k + 4 <= n; k += 4) {
-        const __m128 vx = _mm_loadu_ps(x + k), vy = _mm_loadu_ps(y + k), vz = _mm_loadu_ps(z + k);
+        // Four points (x, y, z, column bits) transposed into x, y, z lanes.
+        __m128 vx = _mm_loadu_ps(&p[k].x), vy = _mm_loadu_ps(&p[k + 1].x);
+        __m128 vz = _mm_loadu_ps(&p[k + 2].x), vw = _mm_loadu_ps(&p[k + 3].x);
+        _MM_TRANSPOSE4_PS(vx, vy, vz, vw);
         const __m128 sum =
             _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz));
         _mm_storeu_ps(out + k, _mm_sqrt_ps(sum));
     }
 #endif
-    for (; k < n; ++k) out[k] = std::sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]);
+    for (; k < n; ++k) out[k] = std::sqrt(p[k].x * p[k].x + p[k].y * p[k].y + p[k].z * p[k].z);
+}
+
+// The non-ground points with a row, in input order: their input indices and keys
+// row * cols + col, in input[0, total) and key[0, total); returns total. Branch-free (ground and
+// non-ground points alternate unpredictably); input and key hold n values.
+uint32_t compactScalar(const int16_t* row, const int32_t* col, const PointClass* labels,
+                       std::size_t begin, std::size_t n, int cols, uint32_t total, uint32_t* input,
+                       uint32_t* key) {
+    for (std::size_t i = begin; i < n; ++i) {
+        input[total] = static_cast<uint32_t>(i);
+        key[total] = static_cast<uint32_t>(row[i] * cols + col[i]);
+        total += labels[i] == PointClass::NonGround && row[i] >= 0;
+    }
+    return total;
+}
+
+#ifdef TRAVEL_COMPACT_AVX2
+// For each 8-bit mask, the lanes whose bit is set, in order (the rest: 0).
+constexpr std::array<std::array<int32_t, 8>, 256> kLeftPack = [] {
+    std::array<std::array<int32_t, 8>, 256> table{};
+    for (int mask = 0; mask < 256; ++mask) {
+        int k = 0;
+        for (int lane = 0; lane < 8; ++lane)
+            if (mask & (1 << lane)) table[mask][k++] = lane;
+    }
+    return table;
+}();
+
+// compactScalar() 8 points at a time: the selected lanes' indices and keys moved to the front
+// (vpermd with kLeftPack) and stored at `total`; the same values.
+__attribute__((target("avx2,popcnt"))) uint32_t compactAvx2(const int16_t* row, const int32_t* col,
+                                                            const PointClass* labels, std::size_t n,
+                                                            int cols, uint32_t* input,
+                                                            uint32_t* key) {
+    const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i columns = _mm256_set1_epi32(cols);
+    const __m256i non_ground = _mm256_set1_epi32(static_cast<int>(PointClass::NonGround));
+    const __m256i minus_one = _mm256_set1_epi32(-1);
+    uint32_t total = 0;
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m256i r =
+            _mm256_cvtepi16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + i)));
+        const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(col + i));
+        const __m256i k = _mm256_add_epi32(_mm256_mullo_epi32(r, columns), c);
+        const __m256i label =
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(labels + i)));
+        const __m256i selected = _mm256_and_si256(_mm256_cmpeq_epi32(label, non_ground),
+                                                  _mm256_cmpgt_epi32(r, minus_one));
+        const int mask = _mm256_movemask_ps(_mm256_castsi256_ps(selected));
+        const __m256i pack =
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kLeftPack[mask].data()));
+        const __m256i index = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), lanes);
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(input + total),
+                            _mm256_permutevar8x32_epi32(index, pack));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(key + total),
+                            _mm256_permutevar8x32_epi32(k, pack));
+        total += static_cast<uint32_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+    }
+    return compactScalar(row, col, labels, i, n, cols, total, input, key);
+}
+#endif
+
+uint32_t compact(const int16_t* row, const int32_t* col, const PointClass* labels, std::size_t n,
+                 int cols, uint32_t* input, uint32_t* key) {
+#ifdef TRAVEL_COMPACT_AVX2
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
+    }();
+    if (avx2) return compactAvx2(row, col, labels, n, cols, input, key);
+#endif
+    return compactScalar(row, col, labels, 0, n, cols, 0, input, key);
 }
 
 }  // namespace
@@ -110,8 +198,8 @@ void RunClustering::unite(int a, int b) {
 void RunClustering::reserve(std::size_t points, std::size_t cells) {
     using detail::prefault;
     prefault(key_count_, cells + 1);
-    prefault(sorted_, points), prefault(sorted_col_, points), prefault(point_run_, points);
-    prefault(px_, points), prefault(py_, points), prefault(pz_, points), prefault(range_, points);
+    prefault(sorted_, points), prefault(pts_, points), prefault(point_run_, points);
+    prefault(range_, points);
     prefault(next_in_run_, points), prefault(point_id_, points);
     prefault(input_, points), prefault(key_, points);
     // Runs: a few points each on real scans; more grow the buffers once.
@@ -139,34 +227,28 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t num_keys = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
     key_count_.assign(num_keys + 1, 0);
     input_.resize(n), key_.resize(n);
-    uint32_t total = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        input_[total] = static_cast<uint32_t>(i);
-        key_[total] = static_cast<uint32_t>(row[i] * cols + col[i]);
-        total += labels[i] == PointClass::NonGround && row[i] >= 0;
-    }
+    const uint32_t total =
+        compact(row.data(), col.data(), labels.data(), n, cols, input_.data(), key_.data());
     for (uint32_t m = 0; m < total; ++m) ++key_count_[key_[m] + 1];
     for (std::size_t k = 0; k < num_keys; ++k) key_count_[k + 1] += key_count_[k];
     row_begin_.resize(rows + 1);
     for (int r = 0; r <= rows; ++r) row_begin_[r] = key_count_[static_cast<std::size_t>(r) * cols];
-    sorted_.resize(total), sorted_col_.resize(total);
-    px_.resize(total), py_.resize(total), pz_.resize(total), range_.resize(total);
+    sorted_.resize(total), pts_.resize(total), range_.resize(total);
     for (uint32_t m = 0; m < total; ++m) {
         const uint32_t i = input_[m];
         const uint32_t slot = key_count_[key_[m]]++;
         sorted_[slot] = i;
-        sorted_col_[slot] = col[i];
         // Contiguous copies in sorted order: every later access is by sorted position.
-        px_[slot] = cloud.x[i], py_[slot] = cloud.y[i], pz_[slot] = cloud.z[i];
+        pts_[slot] = {cloud.x[i], cloud.y[i], cloud.z[i], col[i]};
     }
-    computeRanges(px_.data(), py_.data(), pz_.data(), range_.data(), total);
+    computeRanges(pts_.data(), range_.data(), total);
     row_elevation_.assign(static_cast<std::size_t>(rows), 0.f);
 
     // Runs, ring by ring.
     run_first_.clear(), run_last_.clear(), run_col_begin_.clear(), run_col_end_.clear();
     run_row_.clear(), parent_.clear(), run_far_range_.clear(), run_near_range_.clear();
     run_size_.clear(), run_first_input_.clear(), run_box_.clear();
-    point_run_.resize(total), next_in_run_.resize(total);
+    point_run_.resize(total), next_in_run_.assign(total, kEndOfRun);
     row_runs_begin_.assign(rows + 1, 0);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
     const float merge2 = t_horz * t_horz;
@@ -175,7 +257,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const std::size_t max_open = static_cast<std::size_t>(params.horizontal_skip_runs) + 1;
     const int seam_col = image.sweepStartColumn();
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
-    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data(), *ranges = range_.data();
+    const SortedPoint* pts = pts_.data();
+    const float* ranges = range_.data();
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         open_runs_.clear();  // most recent last
@@ -191,7 +274,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
             run_far_range_[current] = far, run_near_range_[current] = near;
             run_size_[current] = size, run_first_input_[current] = first_input;
-            run_col_end_[current] = sorted_col_[run_last_[current]];
+            run_col_end_[current] = pts[run_last_[current]].col;
         };
         auto load = [&](int run) {
             const RunBox& box = run_box_[run];
@@ -201,11 +284,32 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             size = run_size_[run], first_input = run_first_input_[run];
             current = run;
         };
+        auto extend = [&](uint32_t k, float range) {  // current takes sorted point k
+            const SortedPoint& p = pts[k];
+            lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y);
+            lo_z = std::min(lo_z, p.z), hi_x = std::max(hi_x, p.x);
+            hi_y = std::max(hi_y, p.y), hi_z = std::max(hi_z, p.z);
+            far = std::max(far, range), near = std::min(near, range);
+            ++size;
+            first_input = std::min(first_input, sorted_[k]);
+        };
         // Each row's elevation: the range-weighted mean sine of its points' elevations.
         float sum_z = 0.f, sum_range = 0.f;
-        for (uint32_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
+        const uint32_t row_end = row_begin_[r + 1];
+        for (uint32_t k = row_begin_[r]; k < row_end; ++k) {
             const float range = ranges[k];
-            sum_z += zs[k], sum_range += range;
+            sum_z += pts[k].z, sum_range += range;
+            // The most recent open run is `current`, whose last point is k - 1 (every point
+            // joins or opens the run that becomes current): the usual case, tested first on
+            // consecutive points, without looking up the open runs. Its last point and box
+            // stay in registers.
+            if (current >= 0 && dist2(k, k - 1) < merge2) {
+                next_in_run_[k - 1] = k;
+                point_run_[k] = current;
+                extend(k, range);
+                continue;
+            }
+            if (current >= 0) run_last_[current] = k - 1;
             // The most recent open run that p continues (usually the last one: stop there).
             int joined = -1;
             std::size_t joined_slot = 0;
@@ -213,7 +317,6 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 const int o = open_runs_[s];
                 const uint32_t last = run_last_[o];
                 const float d2 = dist2(k, last);
-                // The usual case first, alone: one branch, taken for most points.
                 if (d2 < merge2) {
                     joined = o, joined_slot = s;
                     break;
@@ -233,16 +336,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             }
             if (joined >= 0) {
                 next_in_run_[run_last_[joined]] = k;
-                next_in_run_[k] = kEndOfRun;
                 run_last_[joined] = k;
                 point_run_[k] = joined;
                 if (joined != current) store(), load(joined);
-                lo_x = std::min(lo_x, xs[k]), lo_y = std::min(lo_y, ys[k]);
-                lo_z = std::min(lo_z, zs[k]), hi_x = std::max(hi_x, xs[k]);
-                hi_y = std::max(hi_y, ys[k]), hi_z = std::max(hi_z, zs[k]);
-                far = std::max(far, range), near = std::min(near, range);
-                ++size;
-                first_input = std::min(first_input, sorted_[k]);
+                extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
                 if (joined_slot + 1 != open_runs_.size()) {
                     open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
@@ -253,21 +350,20 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             if (current >= 0) store();
             const int run = static_cast<int>(run_first_.size());
             run_first_.push_back(k), run_last_.push_back(k);
-            run_col_begin_.push_back(sorted_col_[k]), run_col_end_.push_back(sorted_col_[k]);
+            run_col_begin_.push_back(pts[k].col), run_col_end_.push_back(pts[k].col);
             run_row_.push_back(static_cast<int16_t>(r));
             parent_.push_back(run);
             // Written by store().
             run_far_range_.emplace_back(), run_near_range_.emplace_back();
             run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
             current = run;
-            lo_x = hi_x = xs[k], lo_y = hi_y = ys[k], lo_z = hi_z = zs[k];
+            lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
             far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
-            next_in_run_[k] = kEndOfRun;
             if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
             open_runs_.push_back(run);
         }
-        if (current >= 0) store();
+        if (current >= 0) run_last_[current] = row_end - 1, store();
         if (sum_range > 0.f)
             row_elevation_[r] = std::asin(std::clamp(sum_z / sum_range, -1.f, 1.f));
         if (seam_col >= 0 && seam2 > 0.f)
@@ -320,11 +416,11 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
-        const int ca = sorted_col_[ka];
+        const int ca = pts_[ka].col;
         const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
-        while (jb != kEndOfRun && sorted_col_[jb] < ca - column_window) jb = next_in_run_[jb];
+        while (jb != kEndOfRun && pts_[jb].col < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
-            if (sorted_col_[kb] > ca + column_window) break;
+            if (pts_[kb].col > ca + column_window) break;
             if (dist2(ka, kb) < max_dist2) return true;
         }
     }
@@ -449,11 +545,12 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
     for (int dr = -kRowsLooked; dr <= kRowsLooked; ++dr) {
         const int rr = r + dr;
         if (dr == 0 || rr < 0 || rr >= rows) continue;
-        const int32_t* col = sorted_col_.data();
+        const SortedPoint* pts = pts_.data();
         uint32_t k = static_cast<uint32_t>(
-            std::lower_bound(col + row_begin_[rr], col + row_begin_[rr + 1], run_col_begin_[b]) -
-            col);
-        for (; k < row_begin_[rr + 1] && col[k] <= run_col_end_[b]; ++k)
+            std::lower_bound(pts + row_begin_[rr], pts + row_begin_[rr + 1], run_col_begin_[b],
+                             [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
+            pts);
+        for (; k < row_begin_[rr + 1] && pts[k].col <= run_col_end_[b]; ++k)
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
     return false;
@@ -545,10 +642,10 @@ void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& imag
         // assignment and the summaries read them.
         const uint32_t foot = feet[f];
         const int32_t run = point_run_[slot];
-        sorted_.push_back(foot), sorted_col_.push_back(col[foot]);
-        px_.push_back(cloud.x[foot]), py_.push_back(cloud.y[foot]), pz_.push_back(cloud.z[foot]);
-        range_.push_back(
-            std::sqrt(px_.back() * px_.back() + py_.back() * py_.back() + pz_.back() * pz_.back()));
+        sorted_.push_back(foot);
+        pts_.push_back({cloud.x[foot], cloud.y[foot], cloud.z[foot], col[foot]});
+        const SortedPoint& p = pts_.back();
+        range_.push_back(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
         point_run_.push_back(run), next_in_run_.push_back(kEndOfRun);
         ++run_size_[run];
         run_first_input_[run] = std::min(run_first_input_[run], foot);
@@ -614,7 +711,7 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
     // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
     // locals (registers) and add it to the cluster once, instead of chaining every += through
     // the cluster's memory.
-    const float *xs = px_.data(), *ys = py_.data(), *zs = pz_.data();
+    const SortedPoint* pts = pts_.data();
     const uint32_t* ids = point_id_.data();
     const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
     for (uint32_t k = 0; k < num_points;) {
@@ -627,7 +724,7 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
         double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float x = xs[k], y = ys[k], z = zs[k];
+            const float x = pts[k].x, y = pts[k].y, z = pts[k].z;
             lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
             hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
             sx += x, sy += y, sz += z;
@@ -665,8 +762,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
         float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float u = cos_yaw * xs[k] + sin_yaw * ys[k];
-            const float v = -sin_yaw * xs[k] + cos_yaw * ys[k];
+            const float u = cos_yaw * pts[k].x + sin_yaw * pts[k].y;
+            const float v = -sin_yaw * pts[k].x + cos_yaw * pts[k].y;
             u_min = std::min(u_min, u), u_max = std::max(u_max, u);
             v_min = std::min(v_min, v), v_max = std::max(v_max, v);
         }

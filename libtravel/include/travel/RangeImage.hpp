@@ -61,6 +61,7 @@ class RangeImage {
     std::vector<float> table_mid_;               // decision boundaries between table beams [rad]
     std::vector<int32_t> table_mids_quantised_;  // the same, quantised (row_of_elevation_'s)
     std::vector<int16_t> row_of_elevation_;      // row of each quantised elevation
+    std::vector<int16_t> elevation_;  // quantised elevations, when taken with the columns
 };
 
 }  // namespace travel

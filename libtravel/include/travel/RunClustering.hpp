@@ -99,14 +99,20 @@ class RunClustering {
     bool runsTouch(int a, int b, int column_window, float t_vert2, float ring_step2) const;
     float dist2(uint32_t a, uint32_t b) const;  // between sorted points a and b
 
-    // Non-ground points sorted by (row, column, range): input indices, their columns, and
-    // the offsets of each row in this order.
+    // Non-ground points sorted by (row, column, input index): input indices, their coordinates
+    // and columns (one 16-byte record: the sort writes two places per point, not five, and the
+    // later walks read a point's coordinates and column together), and the offsets of each row
+    // in this order.
+    struct SortedPoint {
+        float x, y, z;
+        int32_t col;
+    };
     std::vector<uint32_t> sorted_;
-    std::vector<int32_t> sorted_col_;
+    std::vector<SortedPoint> pts_;
     std::vector<uint32_t> row_begin_;
     std::vector<uint32_t> key_count_;
-    std::vector<uint32_t> input_, key_;        // the points to sort and their keys, in input order
-    std::vector<float> px_, py_, pz_, range_;  // of each sorted point
+    std::vector<uint32_t> input_, key_;  // the points to sort and their keys, in input order
+    std::vector<float> range_;           // of each sorted point
 
     // Runs: first and last point (sorted positions), column span, row; runs of a row are
     // consecutive and ordered by first column.
