@@ -30,8 +30,15 @@
 #include <limits>
 #include <vector>
 
+#include "CpuDispatch.hpp"
+
 namespace travel {
 namespace {
+
+using detail::kLanes;
+using detail::LaneMask;
+using detail::Lanes;
+using detail::loadLanes;
 
 thread_local std::vector<uint8_t> clear_scratch;  // per node, reused across frames
 
@@ -50,12 +57,26 @@ std::array<std::size_t, 4> classCounts(const std::vector<PointClass>& labels) {
 }
 
 // True when no point of [begin, end) stands own_plane_clearance or more above the plane
-// (s, d): nothing taller than grass or a kerb stands on the node. Branch-free max, vectorised.
-bool clearAbovePlane(const float* x, const float* y, const float* z, uint32_t begin, uint32_t end,
-                     float s0, float s1, float s2, float d, float clearance) {
-    float highest = -std::numeric_limits<float>::infinity();
-    for (uint32_t i = begin; i < end; ++i)
-        highest = std::max(highest, s0 * x[i] + s1 * y[i] + s2 * z[i] + d);
+// (s, d): nothing taller than grass or a kerb stands on the node. Branch-free max on kLanes
+// lanes (one chain of dependent maxima per point would wait for each): the maximum of the lanes'
+// maxima is the maximum of all (max(h, v) keeps h for a NaN v, in the lanes as in std::max;
+// +0 and -0 compare equal, and either is below the clearance or neither is).
+TRAVEL_INTO_CALLER bool clearAbovePlane(const float* x, const float* y, const float* z,
+                                        uint32_t begin, uint32_t end, float s0, float s1, float s2,
+                                        float d, float clearance) {
+    const float lowest = -std::numeric_limits<float>::infinity();
+    float highest = lowest;
+    uint32_t i = begin;
+    if (end - begin >= static_cast<uint32_t>(kLanes)) {
+        Lanes high = Lanes{} + lowest;
+        for (; i + kLanes <= end; i += kLanes) {
+            const Lanes e =
+                s0 * loadLanes(x + i) + s1 * loadLanes(y + i) + s2 * loadLanes(z + i) + d;
+            high = high < e ? e : high;
+        }
+        for (int l = 0; l < kLanes; ++l) highest = std::max(highest, high[l]);
+    }
+    for (; i < end; ++i) highest = std::max(highest, s0 * x[i] + s1 * y[i] + s2 * z[i] + d);
     return highest < clearance;
 }
 
@@ -108,6 +129,8 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
 
 }  // namespace
 
+// With AVX2 (CpuDispatch.hpp) the per-point loops run 8 points an instruction.
+TRAVEL_AVX2_CLONES
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
                                        const Params& params, const TerrainModel& model,
                                        std::vector<PointClass>& labels) {
@@ -124,6 +147,10 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float outlier_dist = static_cast<float>(params.outlier_dist);
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
     const int num_nodes = static_cast<int>(model.nodes.size());
+    // classifyByPlaneDistance's classes as lane values.
+    const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
+    const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
+    const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     // Reached nodes whose own plane may label points (see the header comment).
     std::vector<uint8_t>& clear = clear_scratch;
     clear.assign(model.nodes.size(), 0);
@@ -154,7 +181,29 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         const uint32_t end = node.begin + node.count;
         const bool own = clear[k] != 0;
         const float od = own ? node.d : std::numeric_limits<float>::infinity();
-        for (uint32_t i = node.begin; i < end; ++i) {
+        // kLanes points at a time: the same floats as the scalar loop below (the same products
+        // and sums in the same order, no FMA) and the same selections; only the points of a
+        // clear node that eq. 5 leaves non-ground ask the neighbours, one by one.
+        uint32_t i = node.begin;
+        for (; i + kLanes <= end; i += kLanes) {
+            const Lanes x = loadLanes(sx + i), y = loadLanes(sy + i), z = loadLanes(sz + i);
+            const Lanes e_refit = s0 * x + s1 * y + s2 * z + d;
+            const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
+            const Lanes e = e_own >= -outlier_dist ? (e_own < e_refit ? e_own : e_refit) : e_refit;
+            const LaneMask label = e < -outlier_dist ? kOutlier
+                                   : e < ground_dist ? kGround
+                                                     : kNonGround;
+            for (int l = 0; l < kLanes; ++l) {
+                PointClass c = static_cast<PointClass>(label[l]);
+                const uint32_t j = i + static_cast<uint32_t>(l);
+                if (own && c == PointClass::NonGround &&
+                    onClearNeighbourPlane(field, model, clear, k, sx[j], sy[j], sz[j], ground_dist,
+                                          outlier_dist))
+                    c = PointClass::Ground;
+                labels[order[j]] = c;
+            }
+        }
+        for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
             const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
