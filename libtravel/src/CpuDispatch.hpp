@@ -59,4 +59,13 @@ TRAVEL_INTO_CALLER Lanes oneWhere(const LaneMask& mask) {
     return v;
 }
 
+// True when any lane of the mask is set.
+TRAVEL_INTO_CALLER bool anyLane(const LaneMask& mask) {
+    uint64_t words[sizeof(LaneMask) / sizeof(uint64_t)];
+    std::memcpy(words, &mask, sizeof mask);
+    uint64_t any = 0;
+    for (const uint64_t w : words) any |= w;
+    return any != 0;
+}
+
 }  // namespace travel::detail

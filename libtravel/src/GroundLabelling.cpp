@@ -27,21 +27,50 @@
 #include "travel/GroundLabelling.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <vector>
+
+#include "CpuDispatch.hpp"
 
 namespace travel {
 namespace {
 
+using detail::kLanes;
+using detail::LaneMask;
+using detail::Lanes;
+using detail::loadLanes;
+
 thread_local std::vector<uint8_t> clear_scratch;  // per node, reused across frames
 
 // Points per class. One counter per class, each a branch-free sum over all labels: a
-// ++counts[label] per point would chain the increments of equal labels through memory.
+// ++counts[label] per point would chain the increments of equal labels through memory. The sums
+// run on 16 byte-wide counters a class (16 labels an instruction; 64-bit counters per label
+// made the compiler widen every byte to 8), emptied into the totals every 255 blocks, before
+// a byte could overflow.
 std::array<std::size_t, 4> classCounts(const std::vector<PointClass>& labels) {
+    typedef uint8_t Bytes __attribute__((vector_size(16)));  // one SSE2 register
     const uint8_t* l = reinterpret_cast<const uint8_t*>(labels.data());
     const std::size_t n = labels.size();
     std::size_t ground = 0, non_ground = 0, outlier = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    const Bytes is_ground = Bytes{} + static_cast<uint8_t>(PointClass::Ground);
+    const Bytes is_non_ground = Bytes{} + static_cast<uint8_t>(PointClass::NonGround);
+    const Bytes is_outlier = Bytes{} + static_cast<uint8_t>(PointClass::Outlier);
+    std::size_t i = 0;
+    while (n - i >= sizeof(Bytes)) {
+        Bytes g = {}, ng = {}, o = {};  // per byte lane: labels of the class seen (<= 255)
+        const std::size_t blocks = std::min<std::size_t>((n - i) / sizeof(Bytes), 255);
+        for (std::size_t b = 0; b < blocks; ++b, i += sizeof(Bytes)) {
+            Bytes v;
+            std::memcpy(&v, l + i, sizeof v);
+            g -= reinterpret_cast<Bytes>(v == is_ground);  // a match is all ones: -(-1)
+            ng -= reinterpret_cast<Bytes>(v == is_non_ground);
+            o -= reinterpret_cast<Bytes>(v == is_outlier);
+        }
+        for (std::size_t k = 0; k < sizeof(Bytes); ++k)
+            ground += g[k], non_ground += ng[k], outlier += o[k];
+    }
+    for (; i < n; ++i) {
         ground += l[i] == static_cast<uint8_t>(PointClass::Ground) ? 1 : 0;
         non_ground += l[i] == static_cast<uint8_t>(PointClass::NonGround) ? 1 : 0;
         outlier += l[i] == static_cast<uint8_t>(PointClass::Outlier) ? 1 : 0;
@@ -50,12 +79,26 @@ std::array<std::size_t, 4> classCounts(const std::vector<PointClass>& labels) {
 }
 
 // True when no point of [begin, end) stands own_plane_clearance or more above the plane
-// (s, d): nothing taller than grass or a kerb stands on the node. Branch-free max, vectorised.
-bool clearAbovePlane(const float* x, const float* y, const float* z, uint32_t begin, uint32_t end,
-                     float s0, float s1, float s2, float d, float clearance) {
-    float highest = -std::numeric_limits<float>::infinity();
-    for (uint32_t i = begin; i < end; ++i)
-        highest = std::max(highest, s0 * x[i] + s1 * y[i] + s2 * z[i] + d);
+// (s, d): nothing taller than grass or a kerb stands on the node. Branch-free max on kLanes
+// lanes (one chain of dependent maxima per point would wait for each): the maximum of the lanes'
+// maxima is the maximum of all (max(h, v) keeps h for a NaN v, in the lanes as in std::max;
+// +0 and -0 compare equal, and either is below the clearance or neither is).
+TRAVEL_INTO_CALLER bool clearAbovePlane(const float* x, const float* y, const float* z,
+                                        uint32_t begin, uint32_t end, float s0, float s1, float s2,
+                                        float d, float clearance) {
+    const float lowest = -std::numeric_limits<float>::infinity();
+    float highest = lowest;
+    uint32_t i = begin;
+    if (end - begin >= static_cast<uint32_t>(kLanes)) {
+        Lanes high = Lanes{} + lowest;
+        for (; i + kLanes <= end; i += kLanes) {
+            const Lanes e =
+                s0 * loadLanes(x + i) + s1 * loadLanes(y + i) + s2 * loadLanes(z + i) + d;
+            high = high < e ? e : high;
+        }
+        for (int l = 0; l < kLanes; ++l) highest = std::max(highest, high[l]);
+    }
+    for (; i < end; ++i) highest = std::max(highest, s0 * x[i] + s1 * y[i] + s2 * z[i] + d);
     return highest < clearance;
 }
 
@@ -108,6 +151,8 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
 
 }  // namespace
 
+// With AVX2 (CpuDispatch.hpp) the per-point loops run 8 points an instruction.
+TRAVEL_AVX2_CLONES
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
                                        const Params& params, const TerrainModel& model,
                                        std::vector<PointClass>& labels) {
@@ -124,6 +169,10 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float outlier_dist = static_cast<float>(params.outlier_dist);
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
     const int num_nodes = static_cast<int>(model.nodes.size());
+    // classifyByPlaneDistance's classes as lane values.
+    const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
+    const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
+    const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     // Reached nodes whose own plane may label points (see the header comment).
     std::vector<uint8_t>& clear = clear_scratch;
     clear.assign(model.nodes.size(), 0);
@@ -154,7 +203,29 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         const uint32_t end = node.begin + node.count;
         const bool own = clear[k] != 0;
         const float od = own ? node.d : std::numeric_limits<float>::infinity();
-        for (uint32_t i = node.begin; i < end; ++i) {
+        // kLanes points at a time: the same floats as the scalar loop below (the same products
+        // and sums in the same order, no FMA) and the same selections; only the points of a
+        // clear node that eq. 5 leaves non-ground ask the neighbours, one by one.
+        uint32_t i = node.begin;
+        for (; i + kLanes <= end; i += kLanes) {
+            const Lanes x = loadLanes(sx + i), y = loadLanes(sy + i), z = loadLanes(sz + i);
+            const Lanes e_refit = s0 * x + s1 * y + s2 * z + d;
+            const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
+            const Lanes e = e_own >= -outlier_dist ? (e_own < e_refit ? e_own : e_refit) : e_refit;
+            const LaneMask label = e < -outlier_dist ? kOutlier
+                                   : e < ground_dist ? kGround
+                                                     : kNonGround;
+            for (int l = 0; l < kLanes; ++l) {
+                PointClass c = static_cast<PointClass>(label[l]);
+                const uint32_t j = i + static_cast<uint32_t>(l);
+                if (own && c == PointClass::NonGround &&
+                    onClearNeighbourPlane(field, model, clear, k, sx[j], sy[j], sz[j], ground_dist,
+                                          outlier_dist))
+                    c = PointClass::Ground;
+                labels[order[j]] = c;
+            }
+        }
+        for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
             const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;

@@ -136,15 +136,24 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
         model.nodes[k].begin = start[k];
         model.nodes[k].count = start[k + 1] - start[k];
     }
-    // Pass 2: every dropped point goes to the one spare slot after the embedded ones.
+    // Pass 2: every dropped point goes to the one spare slot after the embedded ones. The
+    // scatter writes each node's slots a run at a time, one ring after the other: the line a
+    // node's next run starts is often not in the cache, and a store that misses holds up the
+    // stores behind it. Each point therefore asks for the line after its own in the four
+    // arrays (a prefetch for writing, which waits for nothing): by the node's next run it is
+    // there. (At most `kAhead` slots ahead, clamped to the spare slot.)
     sx_.resize(total + 1), sy_.resize(total + 1), sz_.resize(total + 1), order_.resize(total + 1);
     float* sx = sx_.data();
     float* sy = sy_.data();
     float* sz = sz_.data();
     uint32_t* order = order_.data();
+    constexpr uint32_t kAhead = 64 / sizeof(float);  // one cache line
     for (std::size_t i = 0; i < n; ++i) {
         const uint32_t node = point_node[i];
         const uint32_t slot = start[node] + (node != outside ? rank[i] : 0);
+        const uint32_t ahead = std::min(slot + kAhead, total);
+        __builtin_prefetch(sx + ahead, 1), __builtin_prefetch(sy + ahead, 1);
+        __builtin_prefetch(sz + ahead, 1), __builtin_prefetch(order + ahead, 1);
         sx[slot] = px[i], sy[slot] = py[i], sz[slot] = pz[i];
         order[slot] = static_cast<uint32_t>(i);
     }
