@@ -50,6 +50,16 @@
 //   the enclosing cluster's points in front of it within two rows above or below (a window is
 //   a hole, closed by roof and door; the gap between fence panels is a slot, open above and
 //   below: a car behind a fence, seen only through the slots, stays apart).
+// * Set-back linkage (issue 14; extends the vertical update): seen end on at 20-25 m, a sedan's
+//   rings pass over its rear face (or bonnet) onto the cabin 0.6-1.2 m (1.5-2.2 m) behind it; the
+//   boot lid or bonnet between, seen at a grazing angle of 2 degrees, spreads adjacent rings
+//   metres apart and is hit by one ring or none, so the depth jump between the face's top row
+//   and the cabin's lowest is beyond T_vert and the car fell in two. A cluster standing on a
+//   nearer one (every run of its lowest row has that cluster's points in front of it, by more
+//   than T_horz, in the row below) joins it when it lies within that cluster's columns, spans
+//   at least half of them (a cabin spans 0.8-0.9 of its body, a person behind a car a third
+//   or less), and its nearest point is at most set_back_depth behind that cluster's (a bonnet
+//   reaches 1.6 m; a car parked behind a car seen side on is 1.8 m or more behind it).
 // * Merges through union-find with path halving; the root of a set is its smallest run index.
 #include "travel/RunClustering.hpp"
 
@@ -508,6 +518,7 @@ void RunClustering::vertical(const Params& params) {
         }
     }
     linkSeenThrough(params);
+    linkSetBackTops(params);
 }
 
 int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo, uint32_t row_hi,
@@ -619,6 +630,83 @@ void RunClustering::linkSeenThrough(const Params& params) {
         const RootBox &f = root_box_[run], &e = root_box_[enclosure_[run]];
         if (f.row_lo >= e.row_lo && f.row_hi <= e.row_hi && f.col_lo >= e.col_lo &&
             f.col_hi <= e.col_hi && f.nearest > e.nearest && f.points < e.points)
+            unite(run, enclosure_[run]);
+    }
+}
+
+int RunClustering::rootInFrontBelow(uint32_t run, float t_horz, float depth) const {
+    // The row below the run, swept with it in column order: in each of the run's columns (+-1,
+    // the rings' azimuths differ) its nearest point there.
+    const int r = run_row_[run];
+    const uint32_t below_hi = row_begin_[r];
+    const int32_t* col = sorted_col_.data();
+    uint32_t j = static_cast<uint32_t>(
+        std::lower_bound(col + row_begin_[r - 1], col + below_hi, run_col_begin_[run] - 1) - col);
+    int found = kNoRoot;
+    float least_depth = std::numeric_limits<float>::infinity();
+    for (uint32_t k = run_first_[run]; k != kEndOfRun; k = next_in_run_[k]) {
+        const int c = sorted_col_[k];
+        while (j < below_hi && sorted_col_[j] < c - 1) ++j;
+        float nearest = std::numeric_limits<float>::infinity();
+        uint32_t jn = 0;
+        for (uint32_t m = j; m < below_hi && sorted_col_[m] <= c + 1; ++m)
+            if (range_[m] < nearest) nearest = range_[m], jn = m;
+        if (!(nearest < range_[k] - t_horz)) continue;  // nothing below, or not in front
+        const int root = run_root_[point_run_[jn]];
+        if (found != kNoRoot && found != root) return kConflictRoot;
+        found = root;
+        least_depth = std::min(least_depth, range_[k] - nearest);
+    }
+    // Starting deeper behind it than any vehicle reaches: an object beyond the one in front.
+    return least_depth <= depth ? found : found == kNoRoot ? kNoRoot : kConflictRoot;
+}
+
+void RunClustering::linkSetBackTops(const Params& params) {
+    const float depth = static_cast<float>(params.set_back_depth);
+    if (depth <= 0.f) return;
+    const float t_horz = static_cast<float>(params.horizontal_merge_dist);
+    const int num_runs = static_cast<int>(run_first_.size());
+    run_root_.resize(static_cast<std::size_t>(num_runs));
+    for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
+    // Per root: the cluster in front of it right below its lowest row (kNoRoot: none;
+    // kConflictRoot: some of those runs are not over one such cluster). Runs are in row order,
+    // so a root's first run lies in its lowest row.
+    enclosure_.assign(static_cast<std::size_t>(num_runs), kNoRoot);
+    root_low_row_.assign(static_cast<std::size_t>(num_runs), -1);
+    bool any = false;
+    for (int run = 0; run < num_runs; ++run) {
+        const int root = run_root_[run];
+        if (root_low_row_[root] < 0) root_low_row_[root] = run_row_[run];
+        if (run_row_[run] != root_low_row_[root]) continue;
+        int32_t& state = enclosure_[root];
+        if (state == kConflictRoot) continue;
+        const int below = run_row_[run] > 0 ? rootInFrontBelow(run, t_horz, depth) : kNoRoot;
+        if (below == kNoRoot || below == root || (state != kNoRoot && state != below)) {
+            state = kConflictRoot;
+            continue;
+        }
+        state = below, any = true;
+    }
+    if (!any) return;
+    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
+    for (int run = 0; run < num_runs; ++run)
+        if (enclosure_[run] >= 0)
+            root_box_[run].involved = root_box_[enclosure_[run]].involved = true;
+    for (int run = 0; run < num_runs; ++run) {
+        RootBox& box = root_box_[run_root_[run]];
+        if (box.involved) {
+            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
+                    run_size_[run]);
+        }
+    }
+    // The top joins the cluster it stands on when it lies within that one's columns, spans at
+    // least half of them, and its nearest point is at most set_back_depth behind that one's.
+    for (int run = 0; run < num_runs; ++run) {
+        if (enclosure_[run] < 0) continue;
+        const RootBox &f = root_box_[run], &e = root_box_[enclosure_[run]];
+        if (f.col_lo >= e.col_lo && f.col_hi <= e.col_hi &&
+            2 * (f.col_hi - f.col_lo + 1) >= e.col_hi - e.col_lo + 1 && f.row_lo > e.row_lo &&
+            f.nearest > e.nearest && f.nearest <= e.nearest + depth)
             unite(run, enclosure_[run]);
     }
 }

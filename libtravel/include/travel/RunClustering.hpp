@@ -41,7 +41,9 @@ class RunClustering {
     /// points in nearby columns are closer than T_vert beyond one ring's spacing at their range
     /// (sqrt(T_vert^2 + (R dtheta)^2)). Then see-through linkage (a
     /// cluster seen only through the gaps of another, within see_through_depth behind it,
-    /// joins it: a car's seats and far side seen through its windows).
+    /// joins it: a car's seats and far side seen through its windows), and set-back linkage (a
+    /// cluster standing on a nearer one, within its columns, at least half as wide and within
+    /// set_back_depth behind it, joins it: a car's cabin seen end on over its boot or bonnet).
     void vertical(const Params& params);
 
     /// After vertical(), before assignIds(): each point feet[k] (left out of horizontal(), see
@@ -71,6 +73,12 @@ class RunClustering {
     int find(int run);
     void linkAcrossSeam(int begin, int end, int seam_col, int cols, float max_dist2);
     void linkSeenThrough(const Params& params);
+    void linkSetBackTops(const Params& params);
+    static constexpr int kNoRoot = -1, kConflictRoot = -2;
+    // The cluster (root) of the points in front of run's points in the row below it (by more
+    // than t_horz, at most depth), kNoRoot if none, kConflictRoot if two or one deeper.
+    int rootInFrontBelow(uint32_t run, float t_horz, float depth) const;
+    std::vector<int16_t> root_low_row_;  // per root: its lowest row, see linkSetBackTops()
     // The cluster (root) of the nearest pair of points nearer than `nearer_than` before and
     // after the run [first, last] on its row [row_lo, row_hi), within a few points, -1 if
     // none; the pair in enclosure_left_ / enclosure_right_.
