@@ -639,17 +639,19 @@ int RunClustering::rootInFrontBelow(uint32_t run, float t_horz, float depth) con
     // the rings' azimuths differ) its nearest point there.
     const int r = run_row_[run];
     const uint32_t below_hi = row_begin_[r];
-    const int32_t* col = sorted_col_.data();
+    const SortedPoint* pts = pts_.data();
     uint32_t j = static_cast<uint32_t>(
-        std::lower_bound(col + row_begin_[r - 1], col + below_hi, run_col_begin_[run] - 1) - col);
+        std::lower_bound(pts + row_begin_[r - 1], pts + below_hi, run_col_begin_[run] - 1,
+                         [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
+        pts);
     int found = kNoRoot;
     float least_depth = std::numeric_limits<float>::infinity();
     for (uint32_t k = run_first_[run]; k != kEndOfRun; k = next_in_run_[k]) {
-        const int c = sorted_col_[k];
-        while (j < below_hi && sorted_col_[j] < c - 1) ++j;
+        const int c = pts[k].col;
+        while (j < below_hi && pts[j].col < c - 1) ++j;
         float nearest = std::numeric_limits<float>::infinity();
         uint32_t jn = 0;
-        for (uint32_t m = j; m < below_hi && sorted_col_[m] <= c + 1; ++m)
+        for (uint32_t m = j; m < below_hi && pts[m].col <= c + 1; ++m)
             if (range_[m] < nearest) nearest = range_[m], jn = m;
         if (!(nearest < range_[k] - t_horz)) continue;  // nothing below, or not in front
         const int root = run_root_[point_run_[jn]];
