@@ -69,6 +69,16 @@ Params faceParams() {
     return p;
 }
 
+// The face rule with the feet clustered and a foot height of 0.08 m (the smallest that keeps the
+// SemanticKITTI dev purity at 0.990, docs/parameters.md "Off-road driving"; not a default): feet
+// within 0.08 m of their ground plane stay ground.
+Params roadFaceParams() {
+    Params p = faceParams();
+    p.cluster_face_feet = true;
+    p.vertical_face_min_foot_height = 0.08;
+    return p;
+}
+
 // OS1-64 (uniform +-16.6 deg, 64 x 2048), as share/presets/os64.yaml, at 1.3 m.
 Params os64Params() {
     Params p;
@@ -150,7 +160,10 @@ TEST(HardScenes, MeshFencesAndWallsOnRoughVerges) {
     // walls 1706 / 16099 (the road default: no face rule); hdl64_faces F1 0.9893 -> 0.9899,
     // precision 0.9935 -> 0.9956, fence 216 -> 27, walls 386 (the footing's front: its top
     // breaks the climb, see FenceAndWallBasesBesideARoad); os64 F1 0.9951 -> 0.9961, precision
-    // 0.9966 -> 0.9996, fence 175 -> 18, walls 9 -> 6.
+    // 0.9966 -> 0.9996, fence 175 -> 18, walls 9 -> 6. hdl64_foot (the face rule with
+    // vertical_face_min_foot_height 0.08, feet clustered): F1 0.9855, precision 0.9849, fence
+    // 180, walls 1241: the floor gives back most of the rule's fix (the lowest 8 cm of each face
+    // stay ground).
     for (const Case& c :
          {Case{{"hdl64", sim::LidarModel::hdl64(), hdl64Params(), sim::kSensorHeight},
                0.978,
@@ -161,6 +174,11 @@ TEST(HardScenes, MeshFencesAndWallsOnRoughVerges) {
                0.987,
                60,
                450,
+               0},
+          Case{{"hdl64_foot", sim::LidarModel::hdl64(), roadFaceParams(), sim::kSensorHeight},
+               0.984,
+               220,
+               1400,
                0},
           Case{os64Sensor(), 0.994, 40, 15, 0}}) {
         const GroupsAsGround g =

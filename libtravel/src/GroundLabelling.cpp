@@ -155,8 +155,10 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
 TRAVEL_AVX2_CLONES
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
                                        const Params& params, const TerrainModel& model,
-                                       std::vector<PointClass>& labels) {
+                                       std::vector<PointClass>& labels,
+                                       std::vector<float>* heights) {
     const std::size_t n = cloud.valid.size();
+    if (heights) heights->assign(n, std::numeric_limits<float>::infinity());
     labels.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         labels[i] = cloud.valid[i] ? PointClass::NonGround : PointClass::Invalid;
@@ -235,6 +237,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
                                       outlier_dist))
                 label = PointClass::Ground;
             labels[order[i]] = label;
+            if (heights) (*heights)[order[i]] = e;
         }
     }
     return classCounts(labels);

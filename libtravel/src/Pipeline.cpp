@@ -141,12 +141,15 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     t.graph_search = msSince(clock);
     terrain_fitting_.run(field_, params_, result.terrain);
     t.ttmf = msSince(clock);
-    result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels);
     const bool faces = params_.vertical_face_min_rise > 0.0;
+    const bool foot_heights = faces && params_.vertical_face_min_foot_height > 0.0;
+    result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels,
+                                      foot_heights ? &foot_heights_ : nullptr);
     if (faces) {
         range_image_.build(cloud, aligned_.valid, params_);
         vertical_faces_.unlabelFaceFeet(aligned_, range_image_, params_, result.labels,
-                                        result.class_counts);
+                                        result.class_counts,
+                                        foot_heights ? &foot_heights_ : nullptr);
     } else {
         vertical_faces_.clear();
     }

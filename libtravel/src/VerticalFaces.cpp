@@ -9,10 +9,13 @@ namespace travel {
 
 void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage& image,
                                     const Params& params, std::vector<PointClass>& labels,
-                                    std::array<std::size_t, 4>& counts) {
+                                    std::array<std::size_t, 4>& counts,
+                                    const std::vector<float>* heights) {
     face_feet_.clear(), foot_faces_.clear();
     const float min_rise = static_cast<float>(params.vertical_face_min_rise);
     const int max_gap = params.vertical_face_max_gap;
+    const float min_foot = static_cast<float>(params.vertical_face_min_foot_height);
+    const float* foot_height = min_foot > 0.f && heights ? heights->data() : nullptr;
     const int rows = image.rows(), cols = image.cols();
     if (!(min_rise > 0.f) || rows < 2 || cols < 1) return;
     const std::vector<int16_t>& row = image.row();
@@ -44,6 +47,9 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
         // Most ground points: the next ring returned and is not higher (checked before any
         // square root).
         if (cells[c].point >= 0 ? !(cells[c].z > foot_z) : max_gap == 0) continue;
+        // A foot within range noise of its ground plane is on the ground as far as the scan
+        // tells (the road before a car's sill or tyre): it stays ground.
+        if (foot_height && foot_height[i] < min_foot) continue;
         float prev_z = foot_z, prev_range = std::sqrt(x[i] * x[i] + y[i] * y[i]);
         bool risen = false;
         int32_t face = -1;  // the first non-ground point of the climb

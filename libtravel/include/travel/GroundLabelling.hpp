@@ -23,9 +23,12 @@ inline PointClass classifyByPlaneDistance(float e, float ground_dist, float outl
 }
 
 /// labels.size() == cloud size afterwards; every point gets exactly one class.
-/// Returns the number of points per class (indexed by PointClass value).
+/// Returns the number of points per class (indexed by PointClass value). With `heights`, each
+/// point of a node with a ground plane gets the signed distance e that labelled it (+inf for
+/// the others): the face rule's foot height (VerticalFaces).
 std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedCloud& cloud,
                                        const Params& params, const TerrainModel& model,
-                                       std::vector<PointClass>& labels);
+                                       std::vector<PointClass>& labels,
+                                       std::vector<float>* heights = nullptr);
 
 }  // namespace travel

@@ -136,6 +136,10 @@ struct AutoReal {
       "The face rule's climb steps over up to this many consecutive rings without a return "      \
       "(foliage, mesh fences and dark paint return part of the rays): a porous face keeps its "   \
       "foot. 0 = an empty ring ends the climb")                                                   \
+    X(double, vertical_face_min_foot_height, 0.0, "m", 0.0, 100.0,                                \
+      "A face foot stands at least this high above its ground plane (eq. 5's signed "             \
+      "distance): lower points are on the ground as far as range noise tells (SemanticKITTI's "   \
+      "road before car sills and tyres); 0 = every ground point may be a foot")                   \
     X(bool, cluster_face_feet, false, "", 0, 1,                                                   \
       "Each face foot joins the object cluster of its face (else it is left unclustered: on "     \
       "SemanticKITTI the feet at car sills are often labelled road/parking, see docs)")           \

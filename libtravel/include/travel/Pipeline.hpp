@@ -97,6 +97,7 @@ class Pipeline {
     TerrainModelFitting terrain_fitting_;
     RangeImage range_image_;
     VerticalFaces vertical_faces_;
+    std::vector<float> foot_heights_;  // labelPoints' signed distances, for the face rule
     RunClustering clustering_;
 };
 

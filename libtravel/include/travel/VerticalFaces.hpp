@@ -37,8 +37,11 @@ class VerticalFaces {
   public:
     /// Relabels Ground points at the foot of vertical faces NonGround and updates `counts`
     /// (indexed by PointClass). Does nothing when params.vertical_face_min_rise is 0.
+    /// `heights` (labelPoints' signed distances, needed when
+    /// params.vertical_face_min_foot_height > 0): a point lower than that is never a foot.
     void unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage& image, const Params& params,
-                         std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts);
+                         std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts,
+                         const std::vector<float>* heights = nullptr);
 
     void clear() { face_feet_.clear(), foot_faces_.clear(); }
 
