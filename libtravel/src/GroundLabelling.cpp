@@ -225,6 +225,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
                                           outlier_dist))
                     c = PointClass::Ground;
                 labels[order[j]] = c;
+                if (heights) (*heights)[order[j]] = e[l];
             }
         }
         for (; i < end; ++i) {
