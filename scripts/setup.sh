@@ -24,6 +24,7 @@ TEST_PACKAGES=(
   libgtest-dev googletest libbenchmark-dev libmrpt-slam-dev
   clang libclang-rt-14-dev
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-open3d
+  mrpt-apps xvfb xauth  # rawlog-edit -p and RawLogViewer -l loading the plugin (tests/plugin)
 )
 
 log() { printf '[setup] %s\n' "$*"; }
