@@ -499,6 +499,38 @@ TEST(RangeImageScanOrder, ColumnMajorFallsBackToTheTable) {
     }
 }
 
+// Rings stored one after another but not in elevation order: auto rejects the scan order and
+// uses the table, whether the disorder shows in the first rings found (the walk stops there)
+// or only in the last one; ring_source = scan_order keeps the rings and sorts them by elevation.
+TEST(RangeImageScanOrder, RingsOutOfElevationOrder) {
+    const sim::Scan scan =
+        simulate(enclosedScene(), sim::LidarModel::vlp16(), sim::PointOrder::RingMajor);
+    const int beams = 16;
+    // Storage orders of the rings: the first rings shuffled; only the lowest ring out of place.
+    const std::vector<std::vector<int>> orders = {
+        {9, 2, 14, 5, 0, 11, 7, 3, 15, 1, 12, 8, 4, 13, 6, 10},
+        {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 0}};
+    for (const std::vector<int>& order : orders) {
+        PointCloud cloud;
+        std::vector<int> truth;
+        for (const int ring : order) {
+            for (std::size_t i = 0; i < scan.cloud.size(); ++i) {
+                if (scan.cloud.ring[i] != ring) continue;
+                cloud.push_back(scan.cloud.x[i], scan.cloud.y[i], scan.cloud.z[i]);
+                truth.push_back(ring);
+            }
+        }
+        const std::vector<uint8_t> valid = validByRange(cloud, 1.0, 200.0);
+        RangeImage image;
+        image.build(cloud, valid, paramsFor(beams, "vlp16"));
+        EXPECT_EQ(image.source(), RingSource::Table) << "storage order from ring " << order[0];
+        expectAllInRange(image, valid);
+        image.build(cloud, valid, paramsFor(beams, "vlp16", "scan_order"));
+        EXPECT_EQ(image.source(), RingSource::ScanOrder);
+        EXPECT_GE(shareWithin(image, valid, truth, 0), 0.999) << "storage order from " << order[0];
+    }
+}
+
 // In an open scene the upward beams return only from a few objects, and a ring whose returns
 // end before the next ring's begin (in azimuth) is merged with it: fewer rows, still in
 // elevation order, still within one row of the truth for almost every point.

@@ -13,7 +13,8 @@
 //     about +-20 deg ahead (the car's hood). The recovered rings are therefore reversed.
 //   - The ouster128 sample is stored ring by ring too, but clockwise. Its origin is at ground
 //     level, so the rings' mean elevations seen from there are not in beam order: auto rejects
-//     the scan order and uses the table.
+//     the scan order (its walk stops after 48 of the 128 rings, where the disorder is certain)
+//     and uses the table.
 //   - Elevation tables: see fillElevationTableDeg().
 //
 // build() makes three passes over the points: one vectorised (azimuths and columns), one that
@@ -288,13 +289,16 @@ struct RowMap {
     std::array<int16_t, kMaxRings> row_of{};  // Lookup
 };
 
+// How far (in ranks among the ids that have points) an id may sit from its place by elevation
+// with its ids still "in elevation order" (see mapByElevation()).
+constexpr int kMaxDisplacement = 2;
+
 // The map for ids 0..count-1 from their mean elevations. Ids in ascending elevation order are
 // kept, in descending order reversed, where "in order" tolerates each id being up to
 // kMaxDisplacement places from its rank (neighbours with nearly equal means, a ring seen only at
 // short range). Otherwise `mixed` is set and the ids that have points keep their set of rows,
 // handed out by ascending mean elevation.
 RowMap mapByElevation(const RingStats& stats, int count, bool& mixed) {
-    constexpr int kMaxDisplacement = 2;
     std::array<int16_t, kMaxRings> present{}, by_elevation{}, position{};
     int used = 0;
     for (int id = 0; id < count; ++id) {
@@ -327,6 +331,33 @@ RowMap mapByElevation(const RingStats& stats, int count, bool& mixed) {
     for (int k = 0; k < used; ++k) map.row_of[by_elevation[k]] = present[k];
     return map;
 }
+
+// Tells, from the first ids' mean elevations alone, that mapByElevation() will set `mixed`.
+// Fed the ids that have points in ascending id order (their ranks are then final), it looks
+// for two pairs of ids at least kMinRankGap ranks apart: one whose lower-ranked id is strictly
+// above the other (stable sort: it then sorts after it, so one of the two lies more than
+// kMaxDisplacement from its ascending place), and one whose lower-ranked id is not above the
+// other (one of the two lies that far from its descending place).
+class MixedOrderProof {
+  public:
+    static constexpr int kMinRankGap = 2 * kMaxDisplacement + 1;
+    void add(double sin_elevation) {
+        if (ranks_ >= kMinRankGap) {  // the id kMinRankGap ranks lower comes within reach
+            const double reachable = sin_elevation_[ranks_ - kMinRankGap];
+            lowest_ = std::min(lowest_, reachable), highest_ = std::max(highest_, reachable);
+            not_ascending_ = not_ascending_ || highest_ > sin_elevation;
+            not_descending_ = not_descending_ || lowest_ <= sin_elevation;
+        }
+        sin_elevation_[ranks_++] = sin_elevation;
+    }
+    bool mixed() const { return not_ascending_ && not_descending_; }
+
+  private:
+    std::array<double, kMaxRings> sin_elevation_{};  // by rank
+    int ranks_ = 0;
+    double lowest_ = std::numeric_limits<double>::infinity(), highest_ = -lowest_;
+    bool not_ascending_ = false, not_descending_ = false;
+};
 
 // row[i] = map(id[i]), -1 where !valid[i]. `id` may be `row` itself.
 template <class Id>
@@ -412,10 +443,31 @@ class RowAssigner {
             return false;
         }
         // ring_start[k]: index of ring k's first point; the points without azimuth that follow
-        // a ring stay on it.
+        // a ring stay on it. Each ring's mean elevation is taken as soon as the walk has found
+        // its end. When `strict`, rings found out of elevation order either way up
+        // (MixedOrderProof) end the walk: the scan order would be rejected whatever followed.
         std::array<std::size_t, kMaxRings + 1> ring_start;
-        const int recovered = direction > 0 ? findRings<+1>(azimuth, num_rings, ring_start)
-                                            : findRings<-1>(azimuth, num_rings, ring_start);
+        RingStats stats;
+        MixedOrderProof proof;
+        const auto ring_found = [&](int ring, std::size_t end) {
+            // Every 8th point is plenty for a ring's mean elevation; each ring gets one at least.
+            constexpr std::size_t kStatsStride = 8;
+            std::size_t i = ring_start[ring];
+            while (i < end && !valid_[i]) ++i;
+            for (; i < end; i += kStatsStride) {
+                if (valid_[i]) stats.add(ring, cloud_.x[i], cloud_.y[i], cloud_.z[i]);
+            }
+            stats.flush();
+            if (strict && stats.has(ring)) proof.add(stats.sinElevation(ring));
+            return strict && proof.mixed();
+        };
+        const int recovered = direction > 0
+                                  ? findRings<+1>(azimuth, num_rings, ring_start, ring_found)
+                                  : findRings<-1>(azimuth, num_rings, ring_start, ring_found);
+        if (recovered == kOutOfOrder) {
+            why = "the rings found are not stored in elevation order";
+            return false;
+        }
         if (recovered > num_rings) {
             why = "more than num_rings = " + std::to_string(num_rings) + " azimuth wrap-arounds";
             return false;
@@ -426,18 +478,7 @@ class RowAssigner {
                   " azimuth wrap-arounds for num_rings = " + std::to_string(num_rings);
             return false;
         }
-        // Every 8th point is plenty for a ring's mean elevation; each ring gets one at least.
-        constexpr std::size_t kStatsStride = 8;
-        RingStats stats;
-        for (int ring = 0; ring < recovered; ++ring) {
-            const std::size_t end = ring_start[ring + 1];
-            std::size_t i = ring_start[ring];
-            while (i < end && !valid_[i]) ++i;
-            for (; i < end; i += kStatsStride) {
-                if (valid_[i]) stats.add(ring, cloud_.x[i], cloud_.y[i], cloud_.z[i]);
-            }
-        }
-        stats.flush();
+        ring_found(recovered - 1, n_);  // the last ring ends with the points
         bool mixed = false;
         const RowMap map = mapByElevation(stats, recovered, mixed);
         if (strict && mixed) {
@@ -505,13 +546,17 @@ class RowAssigner {
     }
 
   private:
+    static constexpr int kOutOfOrder = -1;  // findRings(): ring_found() stopped the walk
+
     // The walk of fromScanOrder(), for the sweep `Direction` (+1: azimuth increasing): fills
     // ring_start and returns the number of rings, or max_rings + 1 as soon as there are more.
     // A ring ends where the azimuth, measured from the first point's in the sweep direction,
-    // drops back by more than half a turn.
-    template <int Direction>
+    // drops back by more than half a turn; ring_found(ring, end) is then called (not for the
+    // last ring), and when it returns true the walk stops with kOutOfOrder.
+    template <int Direction, class RingFound>
     int findRings(const int16_t* azimuth, int max_rings,
-                  std::array<std::size_t, kMaxRings + 1>& ring_start) const {
+                  std::array<std::size_t, kMaxRings + 1>& ring_start,
+                  const RingFound& ring_found) const {
         // A ring must sweep this far before a wrap can end it: a ring's first points jittering
         // behind the cut (KITTI steps back by up to 7 deg) must not count as a revolution.
         constexpr int kMinRingSweep = kTurn / 4;
@@ -549,6 +594,7 @@ class RowAssigner {
                 if (previous_offset - offset > kHalfTurn && sweep > kMinRingSweep) {
                     if (rings == max_rings) return max_rings + 1;
                     ring_start[rings++] = i;
+                    if (ring_found(rings - 2, i)) return kOutOfOrder;
                     sweep = 0;
                 } else {
                     sweep += Direction * angleDifference(a, previous);
