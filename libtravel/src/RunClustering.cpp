@@ -269,9 +269,11 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
     const SortedPoint* pts = pts_.data();
     const float* ranges = range_.data();
+    open_runs_.resize(max_open);
+    int32_t* const open_runs = open_runs_.data();
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
-        open_runs_.clear();  // most recent last
+        std::size_t open = 0;  // open_runs[0, open), most recent last
         // The most recent open run, whose points mostly follow one another: its box, ranges,
         // size and first input point are kept here (registers) and written back when another
         // run takes a point (one store per point instead of a dozen read-modify-writes).
@@ -320,28 +322,31 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 continue;
             }
             if (current >= 0) run_last_[current] = k - 1;
-            // The most recent open run that p continues (usually the last one: stop there).
+            // The most recent other open run that p continues. `current`, the most recent one
+            // (open_runs[open - 1]), cannot take it: its end k - 1 failed the test above, and
+            // no point lies between them to occlude.
             int joined = -1;
             std::size_t joined_slot = 0;
-            for (std::size_t s = open_runs_.size(); s-- > 0;) {
-                const int o = open_runs_[s];
+            for (std::size_t s = open - (open > 0); s-- > 0;) {
+                const int o = open_runs[s];
                 const uint32_t last = run_last_[o];
                 const float d2 = dist2(k, last);
-                if (d2 < merge2) {
+                const float last_range = ranges[last];
+                // One branch for both links (the occlusion candidates are rare).
+                const bool close = d2 < merge2;
+                if (!(close | ((d2 < occlusion2) & (std::fabs(range - last_range) < t_horz))))
+                    continue;
+                bool link = close;
+                if (!close) {
+                    // Across an occlusion only if every point swept since the run's end is in
+                    // front of both ends (rare: computed only here).
+                    const float in_front = std::min(range, last_range) - t_horz;
+                    link = last + 1 < k;
+                    for (uint32_t j = last + 1; j < k && link; ++j) link = ranges[j] < in_front;
+                }
+                if (link) {
                     joined = o, joined_slot = s;
                     break;
-                }
-                const float last_range = ranges[last];
-                if (d2 < occlusion2 && std::fabs(range - last_range) < t_horz) {
-                    // Across an occlusion only if every point swept since the run's end is
-                    // in front of both ends (rare: computed only here).
-                    const float in_front = std::min(range, last_range) - t_horz;
-                    bool link = last + 1 < k;
-                    for (uint32_t j = last + 1; j < k && link; ++j) link = ranges[j] < in_front;
-                    if (link) {
-                        joined = o, joined_slot = s;
-                        break;
-                    }
                 }
             }
             if (joined >= 0) {
@@ -351,10 +356,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 if (joined != current) store(), load(joined);
                 extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
-                if (joined_slot + 1 != open_runs_.size()) {
-                    open_runs_.erase(open_runs_.begin() + static_cast<std::ptrdiff_t>(joined_slot));
-                    open_runs_.push_back(joined);
-                }
+                for (std::size_t s = joined_slot; s + 1 < open; ++s)
+                    open_runs[s] = open_runs[s + 1];
+                open_runs[open - 1] = joined;
                 continue;
             }
             if (current >= 0) store();
@@ -370,8 +374,11 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
             far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
-            if (open_runs_.size() == max_open) open_runs_.erase(open_runs_.begin());
-            open_runs_.push_back(run);
+            if (open == max_open) {  // the oldest closes
+                for (std::size_t s = 0; s + 1 < open; ++s) open_runs[s] = open_runs[s + 1];
+                --open;
+            }
+            open_runs[open++] = run;
         }
         if (current >= 0) run_last_[current] = row_end - 1, store();
         if (sum_range > 0.f)
@@ -384,10 +391,12 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         const int begin = static_cast<int>(row_runs_begin_[r]);
         const int end = static_cast<int>(run_first_.size());
         const int first_runs = static_cast<int>(std::min<std::size_t>(max_open, end - begin));
-        for (const int late : open_runs_)
+        for (std::size_t s = 0; s < open; ++s) {
+            const int late = open_runs[s];
             for (int early = begin; early < begin + first_runs; ++early)
                 if (late != early && dist2(run_last_[late], run_first_[early]) < merge2)
                     unite(late, early);
+        }
     }
     row_runs_begin_[rows] = static_cast<uint32_t>(run_first_.size());
 }
