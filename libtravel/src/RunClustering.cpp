@@ -274,6 +274,11 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     for (int r = 0; r < rows; ++r) {
         row_runs_begin_[r] = static_cast<uint32_t>(run_first_.size());
         std::size_t open = 0;  // open_runs[0, open), most recent last
+        // Puts `run` in the most recent slot, open_runs[slot] leaving and the later ones moving
+        // one slot down (a rotation through swaps: GCC makes the plain copy loop a memmove call).
+        auto pushOpen = [&](std::size_t slot, int32_t run) {
+            for (std::size_t s = open; s-- > slot;) std::swap(run, open_runs[s]);
+        };
         // The most recent open run, whose points mostly follow one another: its box, ranges,
         // size and first input point are kept here (registers) and written back when another
         // run takes a point (one store per point instead of a dozen read-modify-writes).
@@ -356,9 +361,7 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 if (joined != current) store(), load(joined);
                 extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
-                for (std::size_t s = joined_slot; s + 1 < open; ++s)
-                    open_runs[s] = open_runs[s + 1];
-                open_runs[open - 1] = joined;
+                pushOpen(joined_slot, joined);
                 continue;
             }
             if (current >= 0) store();
@@ -374,11 +377,10 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
             far = near = range, size = 1, first_input = sorted_[k];
             point_run_[k] = run;
-            if (open == max_open) {  // the oldest closes
-                for (std::size_t s = 0; s + 1 < open; ++s) open_runs[s] = open_runs[s + 1];
-                --open;
-            }
-            open_runs[open++] = run;
+            if (open == max_open)
+                pushOpen(0, run);  // the oldest closes
+            else
+                open_runs[open++] = run;
         }
         if (current >= 0) run_last_[current] = row_end - 1, store();
         if (sum_range > 0.f)
