@@ -6,6 +6,7 @@
 // noise: a scan sequence for command-line tests that need no real data.
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <string>
@@ -15,13 +16,20 @@
 #include "travel/sim/SyntheticLidar.hpp"
 
 int main(int argc, char** argv) {
-    if (argc < 2 || argc > 3) {
-        std::fprintf(stderr, "usage: %s OUT_DIR [FRAMES (default 8)]\n", argv[0]);
-        return 2;
+    const bool help =
+        argc >= 2 && (std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0);
+    if (help || argc < 2 || argc > 3 || argv[1][0] == '-') {
+        std::fprintf(help ? stdout : stderr,
+                     "usage: %s OUT_DIR [FRAMES (default 8)]\n"
+                     "Writes FRAMES simulated HDL-64E scans of the mixed synthetic scene as\n"
+                     "OUT_DIR/000000.bin ... (KITTI layout: float32 x, y, z, intensity).\n",
+                     argv[0]);
+        return help ? 0 : 2;
     }
-    const long frames = argc == 3 ? std::strtol(argv[2], nullptr, 10) : 8;
-    if (frames < 1 || frames > 1000) {
-        std::fprintf(stderr, "FRAMES must be in [1, 1000]\n");
+    char* end = nullptr;
+    const long frames = argc == 3 ? std::strtol(argv[2], &end, 10) : 8;
+    if ((argc == 3 && *end != '\0') || frames < 1 || frames > 1000) {
+        std::fprintf(stderr, "FRAMES must be an integer in [1, 1000], got '%s'\n", argv[2]);
         return 2;
     }
     try {
