@@ -219,7 +219,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(merge_dist2_, runs), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
-    prefault(run_box_, runs);
+    prefault(run_box_, runs), prefault(box_arrays_, 6 * (runs + 4));
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
 }
@@ -437,6 +437,56 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     return false;
 }
 
+namespace {
+
+// The vertical update's box test, kBoxLanes runs at a time.
+constexpr uint32_t kBoxLanes = 4;
+
+// Run boxes as arrays (lo x, y, z, hi x, y, z): the lanes of the box test are consecutive runs
+// of one row.
+struct BoxArrays {
+    const float* coord[6];
+};
+
+// Bit l set when run first + l (first + l < end) and run `fixed` have boxes nearer than
+// limit[l] (limit[0] for every lane when broadcast_limit): the squared gap per axis max(0, gap),
+// added as x^2 + y^2 + z^2 in that order (the same floats as one pair at a time).
+inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, uint32_t end,
+                          const float* limit, bool broadcast_limit) {
+    const uint32_t lanes = end > first ? std::min(end - first, kBoxLanes) : 0;
+    const unsigned in_range = (1u << lanes) - 1;
+#ifdef __SSE2__
+    __m128 gap2[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        const float* lo = box.coord[axis];
+        const float* hi = box.coord[axis + 3];
+        const __m128 d1 = _mm_sub_ps(_mm_set1_ps(lo[fixed]), _mm_loadu_ps(hi + first));
+        const __m128 d2 = _mm_sub_ps(_mm_loadu_ps(lo + first), _mm_set1_ps(hi[fixed]));
+        const __m128 gap = _mm_max_ps(_mm_max_ps(d1, d2), _mm_setzero_ps());
+        gap2[axis] = _mm_mul_ps(gap, gap);
+    }
+    const __m128 sum = _mm_add_ps(_mm_add_ps(gap2[0], gap2[1]), gap2[2]);
+    const __m128 lim = broadcast_limit ? _mm_set1_ps(*limit) : _mm_loadu_ps(limit);
+    return in_range & static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(sum, lim)));
+#else
+    unsigned near = 0;
+    for (uint32_t l = 0; l < lanes; ++l) {
+        const uint32_t run = first + l;
+        float gap2[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            const float* lo = box.coord[axis];
+            const float* hi = box.coord[axis + 3];
+            const float gap = std::max(std::max(lo[fixed] - hi[run], lo[run] - hi[fixed]), 0.f);
+            gap2[axis] = gap * gap;
+        }
+        near |= unsigned(gap2[0] + gap2[1] + gap2[2] < limit[broadcast_limit ? 0 : l]) << l;
+    }
+    return near;
+#endif
+}
+
+}  // namespace
+
 void RunClustering::vertical(const Params& params) {
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
     const int ext = params.vertical_column_extension;
@@ -444,24 +494,50 @@ void RunClustering::vertical(const Params& params) {
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
     const int span = params.vertical_ring_span;
     const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
-    const RunBox* box = run_box_.data();
     // Run a of the upper row and run b of a lower row are compared when b's columns overlap
     // a's widened by T_ext, [lo, hi]; they merge when two of their points are nearer than
     // sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range (see the file comment), which
     // is at most merge_dist2_[a] (R = a's farthest range); most pairs' boxes are already farther
     // apart (a wall behind a bush), so the box test comes first. The merges give the same clusters
     // in any order, so each pair of rows is swept once, both rows' runs in first-column order: the
-    // pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then those
-    // where b starts before lo and reaches it (for each b, the a whose lo lies in b's columns). No
-    // pair is visited twice, and none that does not overlap.
-
-    // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
-    // overlap), added as x^2 + y^2 + z^2.
-    auto boxGap2 = [box](uint32_t a, uint32_t b) {
-        const Eigen::Array4f gap =
-            (box[a].lo - box[b].hi).max(box[b].lo - box[a].hi).max(Eigen::Array4f::Zero());
-        const Eigen::Array4f gap2 = gap * gap;
-        return gap2[0] + gap2[1] + gap2[2];
+    // pairs where b starts within [lo, hi] (for each a), then those where b starts before lo and
+    // reaches it (for each b, the a whose lo lies in b's columns). No pair is visited twice, and
+    // none that does not overlap. Each such list of runs is a range of one row's runs, found from
+    // a per-column table of the row (no search: a search loop's exit is a mispredicted branch).
+    const uint32_t num_runs = static_cast<uint32_t>(run_first_.size());
+    const std::size_t stride = num_runs + kBoxLanes;
+    box_arrays_.resize(6 * stride);
+    BoxArrays arrays;
+    {
+        float* coord[6];
+        for (int axis = 0; axis < 6; ++axis) {
+            coord[axis] = box_arrays_.data() + axis * stride;
+            arrays.coord[axis] = coord[axis];
+        }
+        for (uint32_t run = 0; run < num_runs; ++run) {
+            const RunBox& box = run_box_[run];
+            coord[0][run] = box.lo[0], coord[1][run] = box.lo[1], coord[2][run] = box.lo[2];
+            coord[3][run] = box.hi[0], coord[4][run] = box.hi[1], coord[5][run] = box.hi[2];
+        }
+    }
+    // Per row and column c in [0, cols]: the row's first run starting at c or after (the row's
+    // end if none). Rows r - span .. r only, in a ring of span + 1 tables.
+    const int cols = rows > 0 ? static_cast<int>((key_count_.size() - 1) / rows) : 0;
+    const std::size_t table_size = static_cast<std::size_t>(cols) + 1;
+    const int num_tables = std::min(span, rows) + 1;
+    first_run_.resize(static_cast<std::size_t>(num_tables) * table_size);
+    auto table = [&](int q) {
+        return first_run_.data() + std::size_t(q % num_tables) * table_size;
+    };
+    auto fillTable = [&](int q) {
+        uint32_t* first = table(q);
+        int c = 0;
+        for (uint32_t run = row_runs_begin_[q]; run < row_runs_begin_[q + 1]; ++run) {
+            const int start = col_begin[run];
+            std::fill(first + c, first + start + 1, run);
+            c = start + 1;
+        }
+        std::fill(first + c, first + cols + 1, row_runs_begin_[q + 1]);
     };
     float ring_step2 = 0.f;  // (one ring's spacing of the pair of rows being swept [rad])^2
     auto merge = [&](uint32_t a, uint32_t b) {
@@ -472,21 +548,25 @@ void RunClustering::vertical(const Params& params) {
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
     // The pairs whose boxes are near are listed without a branch (one in five is, at random),
-    // then merged, once per pair of rows (the list's end is known only as it is filled: its
-    // room is checked before each run's candidates, whose number bounds what they add).
+    // then merged, once per pair of rows.
     uint32_t num_near = 0;
     auto room = [&](uint32_t more) {
+        more += kBoxLanes;
         if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
         return near_.data();
     };
-    merge_dist2_.resize(run_first_.size());
+    merge_dist2_.resize(stride);
+    if (rows > 0) fillTable(0);
     for (int r = 1; r < rows; ++r) {
         const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
+        fillTable(r);
+        const uint32_t* above = table(r);
         // The nearest rows first: their merges make the farther rows' pairs mostly one cluster
         // already, and those skip the point-by-point test.
         for (int rr = r - 1; rr >= std::max(0, r - span); --rr) {
             const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
             if (a_begin == a_end || b_begin == b_end) continue;
+            const uint32_t* below = table(rr);
             const float ring_step =
                 std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(r - rr);
             ring_step2 = ring_step * ring_step;
@@ -498,21 +578,31 @@ void RunClustering::vertical(const Params& params) {
             }
             num_near = 0;
             // b starts within [lo, hi].
-            uint32_t first = b_begin;
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
-                while (first < b_end && col_begin[first] < lo) ++first;
-                NearPair* near = room(b_end - first);
-                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b)
-                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+                const uint32_t first = below[std::max(lo, 0)], last = below[std::min(hi + 1, cols)];
+                NearPair* near = room(last - first);
+                uint32_t b = first;
+                do {  // the first block without a test: most runs have few candidates
+                    const unsigned lanes = nearLanes(arrays, a, b, last, &merge_dist2_[a], true);
+                    for (uint32_t l = 0; l < kBoxLanes; ++l)
+                        near[num_near] = {a, b + l}, num_near += lanes >> l & 1u;
+                    b += kBoxLanes;
+                } while (b < last);
             }
-            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
-            first = a_begin;
+            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b], i.e.
+            // col_begin[b] + ext < col_begin[a] <= col_end[b] + ext.
             for (uint32_t b = b_begin; b < b_end; ++b) {
-                while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
-                NearPair* near = room(a_end - first);
-                for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
-                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+                const uint32_t first = above[std::min(col_begin[b] + ext + 1, cols)],
+                               last = above[std::min(col_end[b] + ext + 1, cols)];
+                NearPair* near = room(last - first);
+                uint32_t a = first;
+                do {
+                    const unsigned lanes = nearLanes(arrays, b, a, last, &merge_dist2_[a], false);
+                    for (uint32_t l = 0; l < kBoxLanes; ++l)
+                        near[num_near] = {a + l, b}, num_near += lanes >> l & 1u;
+                    a += kBoxLanes;
+                } while (a < last);
             }
             for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }

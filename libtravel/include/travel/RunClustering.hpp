@@ -137,6 +137,11 @@ class RunClustering {
         Eigen::Array4f lo, hi;
     };
     std::vector<RunBox> run_box_;
+    // vertical(): the run boxes as arrays (lo x, y, z, hi x, y, z, each num_runs + padding
+    // floats) for its box test 4 runs at a time, and for the last rows the first run starting
+    // at or after each column.
+    std::vector<float> box_arrays_;
+    std::vector<uint32_t> first_run_;
     // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
     // distance below which its points merge with the lower row's.
     std::vector<float> merge_dist2_;
