@@ -625,9 +625,16 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     for (uint32_t k = first; k-- > walk_end;)
         before[num_before] = k, num_before += range_[k] < nearer_than;
     if (num_before == 0) return -1;
+    // The same after it, before any root is looked up: none on one side needs no root.
+    uint32_t after[kEnclosureWalk];
+    uint32_t num_after = 0;
+    const uint32_t after_end = last + 1 + std::min(row_hi - (last + 1), kEnclosureWalk);
+    for (uint32_t k = last + 1; k < after_end; ++k)
+        after[num_after] = k, num_after += range_[k] < nearer_than;
+    if (num_after == 0) return -1;
     for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
-    for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
-        if (range_[++k] >= nearer_than) continue;
+    for (uint32_t j = 0; j < num_after; ++j) {
+        const uint32_t k = after[j];
         const int root = run_root_[point_run_[k]];
         for (uint32_t i = 0; i < num_before; ++i)
             if (before_root[i] == root) {
@@ -655,6 +662,26 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
     return false;
+}
+
+void RunClustering::boxInvolvedRoots(bool closed_only) {
+    // Only these roots' boxes are reset and filled (a reset of every run's box would write
+    // 28 bytes a run).
+    const std::size_t num_runs = run_first_.size();
+    involved_.assign(num_runs, 0);
+    root_box_.resize(num_runs);
+    auto involve = [&](int32_t root) {
+        if (!involved_[root]) involved_[root] = 1, root_box_[root] = RootBox{};
+    };
+    for (std::size_t run = 0; run < num_runs; ++run)
+        if (enclosure_[run] >= 0 && (!closed_only || closed_[run]))
+            involve(static_cast<int32_t>(run)), involve(enclosure_[run]);
+    for (std::size_t run = 0; run < num_runs; ++run) {
+        const int32_t root = run_root_[run];
+        if (involved_[root])
+            root_box_[root].add(run_row_[run], run_col_begin_[run], run_col_end_[run],
+                                run_near_range_[run], run_size_[run]);
+    }
 }
 
 void RunClustering::linkSeenThrough(const Params& params) {
@@ -700,19 +727,7 @@ void RunClustering::linkSeenThrough(const Params& params) {
         }
     }
     if (!any) return;
-    // Range-image boxes, nearest ranges and sizes of the clusters involved only.
-    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
-    for (int run = 0; run < num_runs; ++run)
-        if (enclosure_[run] >= 0 && closed_[run]) {
-            root_box_[run].involved = true;
-            root_box_[enclosure_[run]].involved = true;
-        }
-    for (int run = 0; run < num_runs; ++run) {
-        RootBox& box = root_box_[run_root_[run]];
-        if (box.involved)
-            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
-                    run_size_[run]);
-    }
+    boxInvolvedRoots(true);
     // A cluster joins the one it is seen through when it lies inside that one's range-image
     // box, behind it, and is smaller: the seats and far side of a car seen through its windows.
     for (int run = 0; run < num_runs; ++run) {
@@ -780,17 +795,7 @@ void RunClustering::linkSetBackTops(const Params& params) {
         state = below, any = true;
     }
     if (!any) return;
-    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
-    for (int run = 0; run < num_runs; ++run)
-        if (enclosure_[run] >= 0)
-            root_box_[run].involved = root_box_[enclosure_[run]].involved = true;
-    for (int run = 0; run < num_runs; ++run) {
-        RootBox& box = root_box_[run_root_[run]];
-        if (box.involved) {
-            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
-                    run_size_[run]);
-        }
-    }
+    boxInvolvedRoots(false);
     // The top joins the cluster it stands on when it lies within that one's columns, spans at
     // least half of them, and its nearest point is at most set_back_depth behind that one's.
     for (int run = 0; run < num_runs; ++run) {
