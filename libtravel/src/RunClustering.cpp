@@ -425,8 +425,10 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     // point (see the file comment), so a run reaching far (an oblique wall, a ragged bush) does
     // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
+    const int last_col = run_col_end_[b] + column_window;  // a's points beyond: none near
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
         const int ca = pts_[ka].col;
+        if (ca > last_col) return false;
         const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
         while (jb != kEndOfRun && pts_[jb].col < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
