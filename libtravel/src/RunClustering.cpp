@@ -456,8 +456,8 @@ struct BoxArrays {
 inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, uint32_t end,
                           const float* limit, bool broadcast_limit) {
     const uint32_t lanes = end > first ? std::min(end - first, kBoxLanes) : 0;
-    const unsigned in_range = (1u << lanes) - 1;
 #ifdef __SSE2__
+    const unsigned in_range = (1u << lanes) - 1;
     __m128 gap2[3];
     for (int axis = 0; axis < 3; ++axis) {
         const float* lo = box.coord[axis];
