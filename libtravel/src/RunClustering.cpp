@@ -600,13 +600,11 @@ void RunClustering::vertical(const Params& params) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
                 const uint32_t first = below[std::max(lo, 0)], last = below[std::min(hi + 1, cols)];
                 NearPair* near = room(last - first);
-                uint32_t b = first;
-                do {  // the first block without a test: most runs have few candidates
+                for (uint32_t b = first; b < last; b += kBoxLanes) {
                     const unsigned lanes = nearLanes(arrays, a, b, last, &merge_dist2_[a], true);
                     for (uint32_t l = 0; l < kBoxLanes; ++l)
                         near[num_near] = {a, b + l}, num_near += lanes >> l & 1u;
-                    b += kBoxLanes;
-                } while (b < last);
+                }
             }
             // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b], i.e.
             // col_begin[b] + ext < col_begin[a] <= col_end[b] + ext.
@@ -614,13 +612,11 @@ void RunClustering::vertical(const Params& params) {
                 const uint32_t first = above[std::min(col_begin[b] + ext + 1, cols)],
                                last = above[std::min(col_end[b] + ext + 1, cols)];
                 NearPair* near = room(last - first);
-                uint32_t a = first;
-                do {
+                for (uint32_t a = first; a < last; a += kBoxLanes) {
                     const unsigned lanes = nearLanes(arrays, b, a, last, &merge_dist2_[a], false);
                     for (uint32_t l = 0; l < kBoxLanes; ++l)
                         near[num_near] = {a + l, b}, num_near += lanes >> l & 1u;
-                    a += kBoxLanes;
-                } while (a < last);
+                }
             }
             for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
