@@ -217,11 +217,15 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(merge_dist2_, runs), prefault(near_, runs);
+    prefault(parent_, runs), prefault(merge_dist2_, runs + 4), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
     prefault(run_box_, runs), prefault(box_arrays_, 6 * (runs + 4));
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
+    prefault(root_box_, runs), prefault(involved_, runs);
+    // vertical()'s per-column tables: T_ring + 1 rows of columns + 1 entries (the default T_ring
+    // = 3 with up to 4096 columns; more grow once).
+    prefault(first_run_, std::min<std::size_t>(cells + 1, 4 * 4097));
 }
 
 void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& image,
