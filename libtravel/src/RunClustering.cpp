@@ -235,11 +235,15 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_first_, runs), prefault(run_last_, runs);
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
-    prefault(parent_, runs), prefault(merge_dist2_, runs), prefault(near_, runs);
+    prefault(parent_, runs), prefault(merge_dist2_, runs + 4), prefault(near_, runs);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
-    prefault(run_box_, runs);
+    prefault(run_box_, runs), prefault(box_arrays_, 6 * (runs + 4));
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
     prefault(root_first_, runs), prefault(root_id_, runs), prefault(root_order_, runs);
+    prefault(root_box_, runs), prefault(involved_, runs);
+    // vertical()'s per-column tables: T_ring + 1 rows of columns + 1 entries (the default T_ring
+    // = 3 with up to 4096 columns; more grow once).
+    prefault(first_run_, std::min<std::size_t>(cells + 1, 4 * 4097));
 }
 
 void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& image,
@@ -454,8 +458,10 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     // point (see the file comment), so a run reaching far (an oblique wall, a ragged bush) does
     // not lend its far end's spacing to its near points.
     uint32_t jb = run_first_[b];
+    const int last_col = run_col_end_[b] + column_window;  // a's points beyond: none near
     for (uint32_t ka = run_first_[a]; ka != kEndOfRun; ka = next_in_run_[ka]) {
         const int ca = pts_[ka].col;
+        if (ca > last_col) return false;
         const float max_dist2 = t_vert2 + ring_step2 * range_[ka] * range_[ka];
         while (jb != kEndOfRun && pts_[jb].col < ca - column_window) jb = next_in_run_[jb];
         for (uint32_t kb = jb; kb != kEndOfRun; kb = next_in_run_[kb]) {
@@ -466,6 +472,74 @@ bool RunClustering::runsTouch(int a, int b, int column_window, float t_vert2,
     return false;
 }
 
+namespace {
+
+// The vertical update's box test, kBoxLanes runs at a time.
+constexpr uint32_t kBoxLanes = 4;
+
+// Run boxes as arrays (lo x, y, z, hi x, y, z): the lanes of the box test are consecutive runs
+// of one row.
+struct BoxArrays {
+    const float* coord[6];
+};
+
+// Bit l set when run first + l (first + l < end) and run `fixed` have boxes nearer than
+// limit[l] (limit[0] for every lane when broadcast_limit): the squared gap per axis max(0, gap),
+// added as x^2 + y^2 + z^2 in that order (the same floats as one pair at a time).
+inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, uint32_t end,
+                          const float* limit, bool broadcast_limit) {
+    const uint32_t lanes = end > first ? std::min(end - first, kBoxLanes) : 0;
+#ifdef __SSE2__
+    const unsigned in_range = (1u << lanes) - 1;
+    __m128 gap2[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        const float* lo = box.coord[axis];
+        const float* hi = box.coord[axis + 3];
+        const __m128 d1 = _mm_sub_ps(_mm_set1_ps(lo[fixed]), _mm_loadu_ps(hi + first));
+        const __m128 d2 = _mm_sub_ps(_mm_loadu_ps(lo + first), _mm_set1_ps(hi[fixed]));
+        const __m128 gap = _mm_max_ps(_mm_max_ps(d1, d2), _mm_setzero_ps());
+        gap2[axis] = _mm_mul_ps(gap, gap);
+    }
+    const __m128 sum = _mm_add_ps(_mm_add_ps(gap2[0], gap2[1]), gap2[2]);
+    const __m128 lim = broadcast_limit ? _mm_set1_ps(*limit) : _mm_loadu_ps(limit);
+    return in_range & static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(sum, lim)));
+#else
+    unsigned near = 0;
+    for (uint32_t l = 0; l < lanes; ++l) {
+        const uint32_t run = first + l;
+        float gap2[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            const float* lo = box.coord[axis];
+            const float* hi = box.coord[axis + 3];
+            const float gap = std::max(std::max(lo[fixed] - hi[run], lo[run] - hi[fixed]), 0.f);
+            gap2[axis] = gap * gap;
+        }
+        near |= unsigned(gap2[0] + gap2[1] + gap2[2] < limit[broadcast_limit ? 0 : l]) << l;
+    }
+    return near;
+#endif
+}
+
+// values[k] = values[0] + ... + values[k], 4 at a time on SSE2 (a loop of scalar sums is a chain
+// of one add per value).
+inline void prefixSums(uint32_t* values, std::size_t n) {
+    std::size_t k = 0;
+#ifdef __SSE2__
+    __m128i carry = _mm_setzero_si128();  // the sum so far, in every lane
+    for (; k + 4 <= n; k += 4) {
+        __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + k));
+        x = _mm_add_epi32(x, _mm_slli_si128(x, 4));
+        x = _mm_add_epi32(x, _mm_slli_si128(x, 8));
+        x = _mm_add_epi32(x, carry);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(values + k), x);
+        carry = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 3, 3));
+    }
+#endif
+    for (uint32_t sum = k > 0 ? values[k - 1] : 0; k < n; ++k) sum += values[k], values[k] = sum;
+}
+
+}  // namespace
+
 void RunClustering::vertical(const Params& params) {
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
     const int ext = params.vertical_column_extension;
@@ -473,24 +547,48 @@ void RunClustering::vertical(const Params& params) {
         static_cast<float>(params.vertical_merge_dist * params.vertical_merge_dist);
     const int span = params.vertical_ring_span;
     const int32_t *col_begin = run_col_begin_.data(), *col_end = run_col_end_.data();
-    const RunBox* box = run_box_.data();
     // Run a of the upper row and run b of a lower row are compared when b's columns overlap
     // a's widened by T_ext, [lo, hi]; they merge when two of their points are nearer than
     // sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range (see the file comment), which
     // is at most merge_dist2_[a] (R = a's farthest range); most pairs' boxes are already farther
     // apart (a wall behind a bush), so the box test comes first. The merges give the same clusters
     // in any order, so each pair of rows is swept once, both rows' runs in first-column order: the
-    // pairs where b starts within [lo, hi] (for each a, from a forward-moving pointer), then those
-    // where b starts before lo and reaches it (for each b, the a whose lo lies in b's columns). No
-    // pair is visited twice, and none that does not overlap.
-
-    // Squared gap between the boxes of runs a and b: per axis max(0, gap) (0 where they
-    // overlap), added as x^2 + y^2 + z^2.
-    auto boxGap2 = [box](uint32_t a, uint32_t b) {
-        const Eigen::Array4f gap =
-            (box[a].lo - box[b].hi).max(box[b].lo - box[a].hi).max(Eigen::Array4f::Zero());
-        const Eigen::Array4f gap2 = gap * gap;
-        return gap2[0] + gap2[1] + gap2[2];
+    // pairs where b starts within [lo, hi] (for each a), then those where b starts before lo and
+    // reaches it (for each b, the a whose lo lies in b's columns). No pair is visited twice, and
+    // none that does not overlap. Each such list of runs is a range of one row's runs, found from
+    // a per-column table of the row (no search: a search loop's exit is a mispredicted branch).
+    const uint32_t num_runs = static_cast<uint32_t>(run_first_.size());
+    const std::size_t stride = num_runs + kBoxLanes;
+    box_arrays_.resize(6 * stride);
+    BoxArrays arrays;
+    {
+        float* coord[6];
+        for (int axis = 0; axis < 6; ++axis) {
+            coord[axis] = box_arrays_.data() + axis * stride;
+            arrays.coord[axis] = coord[axis];
+        }
+        for (uint32_t run = 0; run < num_runs; ++run) {
+            const RunBox& box = run_box_[run];
+            coord[0][run] = box.lo[0], coord[1][run] = box.lo[1], coord[2][run] = box.lo[2];
+            coord[3][run] = box.hi[0], coord[4][run] = box.hi[1], coord[5][run] = box.hi[2];
+        }
+    }
+    // Per row and column c in [0, cols]: the row's first run starting at c or after (the row's
+    // end if none). Rows r - span .. r only, in a ring of span + 1 tables.
+    const int cols = rows > 0 ? static_cast<int>((key_count_.size() - 1) / rows) : 0;
+    const std::size_t table_size = static_cast<std::size_t>(cols) + 1;
+    const int num_tables = std::min(span, rows) + 1;
+    first_run_.resize(static_cast<std::size_t>(num_tables) * table_size);
+    auto table = [&](int q) {
+        return first_run_.data() + std::size_t(q % num_tables) * table_size;
+    };
+    auto fillTable = [&](int q) {  // runs starting in each column, then their prefix sums
+        uint32_t* first = table(q);
+        std::fill(first, first + table_size, 0u);
+        for (uint32_t run = row_runs_begin_[q]; run < row_runs_begin_[q + 1]; ++run)
+            ++first[col_begin[run] + 1];
+        first[0] = row_runs_begin_[q];
+        prefixSums(first, table_size);
     };
     float ring_step2 = 0.f;  // (one ring's spacing of the pair of rows being swept [rad])^2
     auto merge = [&](uint32_t a, uint32_t b) {
@@ -501,21 +599,25 @@ void RunClustering::vertical(const Params& params) {
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
     // The pairs whose boxes are near are listed without a branch (one in five is, at random),
-    // then merged, once per pair of rows (the list's end is known only as it is filled: its
-    // room is checked before each run's candidates, whose number bounds what they add).
+    // then merged, once per pair of rows.
     uint32_t num_near = 0;
     auto room = [&](uint32_t more) {
+        more += kBoxLanes;
         if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
         return near_.data();
     };
-    merge_dist2_.resize(run_first_.size());
+    merge_dist2_.resize(stride);
+    if (rows > 0) fillTable(0);
     for (int r = 1; r < rows; ++r) {
         const uint32_t a_begin = row_runs_begin_[r], a_end = row_runs_begin_[r + 1];
+        fillTable(r);
+        const uint32_t* above = table(r);
         // The nearest rows first: their merges make the farther rows' pairs mostly one cluster
         // already, and those skip the point-by-point test.
         for (int rr = r - 1; rr >= std::max(0, r - span); --rr) {
             const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
             if (a_begin == a_end || b_begin == b_end) continue;
+            const uint32_t* below = table(rr);
             const float ring_step =
                 std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(r - rr);
             ring_step2 = ring_step * ring_step;
@@ -527,21 +629,27 @@ void RunClustering::vertical(const Params& params) {
             }
             num_near = 0;
             // b starts within [lo, hi].
-            uint32_t first = b_begin;
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
-                while (first < b_end && col_begin[first] < lo) ++first;
-                NearPair* near = room(b_end - first);
-                for (uint32_t b = first; b < b_end && col_begin[b] <= hi; ++b)
-                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+                const uint32_t first = below[std::max(lo, 0)], last = below[std::min(hi + 1, cols)];
+                NearPair* near = room(last - first);
+                for (uint32_t b = first; b < last; b += kBoxLanes) {
+                    const unsigned lanes = nearLanes(arrays, a, b, last, &merge_dist2_[a], true);
+                    for (uint32_t l = 0; l < kBoxLanes; ++l)
+                        near[num_near] = {a, b + l}, num_near += lanes >> l & 1u;
+                }
             }
-            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b].
-            first = a_begin;
+            // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b], i.e.
+            // col_begin[b] + ext < col_begin[a] <= col_end[b] + ext.
             for (uint32_t b = b_begin; b < b_end; ++b) {
-                while (first < a_end && col_begin[first] - ext <= col_begin[b]) ++first;
-                NearPair* near = room(a_end - first);
-                for (uint32_t a = first; a < a_end && col_begin[a] - ext <= col_end[b]; ++a)
-                    near[num_near] = {a, b}, num_near += boxGap2(a, b) < merge_dist2_[a];
+                const uint32_t first = above[std::min(col_begin[b] + ext + 1, cols)],
+                               last = above[std::min(col_end[b] + ext + 1, cols)];
+                NearPair* near = room(last - first);
+                for (uint32_t a = first; a < last; a += kBoxLanes) {
+                    const unsigned lanes = nearLanes(arrays, b, a, last, &merge_dist2_[a], false);
+                    for (uint32_t l = 0; l < kBoxLanes; ++l)
+                        near[num_near] = {a + l, b}, num_near += lanes >> l & 1u;
+                }
             }
             for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
@@ -564,9 +672,16 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     for (uint32_t k = first; k-- > walk_end;)
         before[num_before] = k, num_before += range_[k] < nearer_than;
     if (num_before == 0) return -1;
+    // The same after it, before any root is looked up: none on one side needs no root.
+    uint32_t after[kEnclosureWalk];
+    uint32_t num_after = 0;
+    const uint32_t after_end = last + 1 + std::min(row_hi - (last + 1), kEnclosureWalk);
+    for (uint32_t k = last + 1; k < after_end; ++k)
+        after[num_after] = k, num_after += range_[k] < nearer_than;
+    if (num_after == 0) return -1;
     for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
-    for (uint32_t k = last; k + 1 < row_hi && k - last < kEnclosureWalk;) {
-        if (range_[++k] >= nearer_than) continue;
+    for (uint32_t j = 0; j < num_after; ++j) {
+        const uint32_t k = after[j];
         const int root = run_root_[point_run_[k]];
         for (uint32_t i = 0; i < num_before; ++i)
             if (before_root[i] == root) {
@@ -594,6 +709,26 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
     return false;
+}
+
+void RunClustering::boxInvolvedRoots(bool closed_only) {
+    // Only these roots' boxes are reset and filled (a reset of every run's box would write
+    // 28 bytes a run).
+    const std::size_t num_runs = run_first_.size();
+    involved_.assign(num_runs, 0);
+    root_box_.resize(num_runs);
+    auto involve = [&](int32_t root) {
+        if (!involved_[root]) involved_[root] = 1, root_box_[root] = RootBox{};
+    };
+    for (std::size_t run = 0; run < num_runs; ++run)
+        if (enclosure_[run] >= 0 && (!closed_only || closed_[run]))
+            involve(static_cast<int32_t>(run)), involve(enclosure_[run]);
+    for (std::size_t run = 0; run < num_runs; ++run) {
+        const int32_t root = run_root_[run];
+        if (involved_[root])
+            root_box_[root].add(run_row_[run], run_col_begin_[run], run_col_end_[run],
+                                run_near_range_[run], run_size_[run]);
+    }
 }
 
 void RunClustering::linkSeenThrough(const Params& params) {
@@ -639,19 +774,7 @@ void RunClustering::linkSeenThrough(const Params& params) {
         }
     }
     if (!any) return;
-    // Range-image boxes, nearest ranges and sizes of the clusters involved only.
-    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
-    for (int run = 0; run < num_runs; ++run)
-        if (enclosure_[run] >= 0 && closed_[run]) {
-            root_box_[run].involved = true;
-            root_box_[enclosure_[run]].involved = true;
-        }
-    for (int run = 0; run < num_runs; ++run) {
-        RootBox& box = root_box_[run_root_[run]];
-        if (box.involved)
-            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
-                    run_size_[run]);
-    }
+    boxInvolvedRoots(true);
     // A cluster joins the one it is seen through when it lies inside that one's range-image
     // box, behind it, and is smaller: the seats and far side of a car seen through its windows.
     for (int run = 0; run < num_runs; ++run) {
@@ -719,17 +842,7 @@ void RunClustering::linkSetBackTops(const Params& params) {
         state = below, any = true;
     }
     if (!any) return;
-    root_box_.assign(static_cast<std::size_t>(num_runs), RootBox{});
-    for (int run = 0; run < num_runs; ++run)
-        if (enclosure_[run] >= 0)
-            root_box_[run].involved = root_box_[enclosure_[run]].involved = true;
-    for (int run = 0; run < num_runs; ++run) {
-        RootBox& box = root_box_[run_root_[run]];
-        if (box.involved) {
-            box.add(run_row_[run], run_col_begin_[run], run_col_end_[run], run_near_range_[run],
-                    run_size_[run]);
-        }
-    }
+    boxInvolvedRoots(false);
     // The top joins the cluster it stands on when it lies within that one's columns, spans at
     // least half of them, and its nearest point is at most set_back_depth behind that one's.
     for (int run = 0; run < num_runs; ++run) {

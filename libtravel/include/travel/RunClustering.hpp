@@ -92,14 +92,17 @@ class RunClustering {
         int row_lo = 1 << 30, row_hi = -1, col_lo = 1 << 30, col_hi = -1;
         float nearest = std::numeric_limits<float>::infinity();
         uint32_t points = 0;
-        bool involved = false;  // a fragment seen through a cluster's gaps, or that cluster
         void add(int row, int col_begin, int col_end, float range, uint32_t size) {
             row_lo = std::min(row_lo, row), row_hi = std::max(row_hi, row);
             col_lo = std::min(col_lo, col_begin), col_hi = std::max(col_hi, col_end);
             nearest = std::min(nearest, range), points += size;
         }
     };
-    std::vector<RootBox> root_box_;
+    std::vector<RootBox> root_box_;  // of the roots involved_ only
+    std::vector<uint8_t> involved_;  // per root: to join another, or to be joined
+    // root_box_ of the roots with enclosure_[root] >= 0 (and closed_[root] when closed_only)
+    // and of the roots they would join.
+    void boxInvolvedRoots(bool closed_only);
     std::vector<uint8_t> closed_;  // per root, see linkSeenThrough()
     void unite(int a, int b);
     // Two of the runs' points in columns at most column_window apart are closer than
@@ -137,6 +140,11 @@ class RunClustering {
         Eigen::Array4f lo, hi;
     };
     std::vector<RunBox> run_box_;
+    // vertical(): the run boxes as arrays (lo x, y, z, hi x, y, z, each num_runs + padding
+    // floats) for its box test 4 runs at a time, and for the last rows the first run starting
+    // at or after each column.
+    std::vector<float> box_arrays_;
+    std::vector<uint32_t> first_run_;
     // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
     // distance below which its points merge with the lower row's.
     std::vector<float> merge_dist2_;
