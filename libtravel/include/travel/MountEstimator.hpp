@@ -40,16 +40,21 @@ class MountEstimator {
     /// Fits the ground plane of `cloud` (sensor frame). `prior_up`: the expected up direction in
     /// the sensor frame (unit; planes more than 30 deg from it are rejected). Points outside
     /// [min_range, max_range] (3-D) are not used, nor points i with excluded[i] != 0 when
-    /// `excluded` is given (the own vehicle's returns: markSelfReturns). found = false when
-    /// fewer than 100 points lie on the best plane.
+    /// `excluded` is given (the own vehicle's returns: markSelfReturns). `stride` > 1 uses only
+    /// the points 0, stride, 2 stride, ... (a check of configured values needs less precision
+    /// than an estimate: Pipeline). found = false when fewer than 100 / stride of the used points
+    /// lie on the best plane.
     GroundPlaneEstimate estimate(const PointCloud& cloud, const Eigen::Vector3d& prior_up,
                                  double min_range, double max_range,
-                                 const uint8_t* excluded = nullptr);
+                                 const uint8_t* excluded = nullptr, std::size_t stride = 1);
 
   private:
     std::vector<int32_t> bin_point_;  // lowest point of each bin, -1 = none
     std::vector<float> bin_height_;
     std::vector<Eigen::Vector3d> candidates_;
+    std::vector<double> candidate_x_, candidate_y_, candidate_z_;  // candidates_ as arrays
+    std::vector<int32_t> point_bin_;  // per used point: its bin, or kNoBin / kExactBin
+    std::vector<int32_t> selected_;   // points within a refit's band
 };
 
 /// Roll and pitch [deg] of a mount R = Rz(yaw) Ry(pitch) Rx(roll) under which the sensor-frame
