@@ -10,6 +10,7 @@
 
 #include "CpuDispatch.hpp"
 #include "FastAtan2.hpp"
+#include "Prefault.hpp"
 
 namespace travel {
 namespace {
@@ -242,6 +243,15 @@ double firstGroundRingRadius(double sensor_height, double lowest_elevation_deg,
                              double tgf_resolution) {
     if (!(lowest_elevation_deg < 0.0) || !(sensor_height > 0.0)) return 0.0;
     return sensor_height / std::tan(-lowest_elevation_deg / kRadToDeg) + 0.5 * tgf_resolution;
+}
+
+void MountEstimator::reserve(std::size_t points) {
+    const std::size_t bins = static_cast<std::size_t>(kSectors) *
+                             static_cast<std::size_t>(std::ceil(kMaxCandidateRange / kBinLength));
+    detail::prefault(bin_point_, bins), detail::prefault(bin_height_, bins);
+    detail::prefault(candidates_, bins), detail::prefault(candidate_x_, bins);
+    detail::prefault(candidate_y_, bins), detail::prefault(candidate_z_, bins);
+    detail::prefault(point_bin_, points), detail::prefault(selected_, points);
 }
 
 GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,

@@ -35,6 +35,10 @@ bool hasAutoMount(const Params& p) {
     return p.sensor_height.isAuto() || p.mount_roll_deg.isAuto() || p.mount_pitch_deg.isAuto();
 }
 
+std::size_t mountStride(const Params& configured) {
+    return hasAutoMount(configured) ? 1 : kMountCheckStride;
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) {
@@ -46,6 +50,8 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
     if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
+    const std::size_t stride = mountStride(configured_);
+    mount_estimator_.reserve((points + stride - 1) / stride);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
     if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
@@ -97,10 +103,9 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     const Eigen::Vector3d prior_up = mountRotation(params_).transpose() * Eigen::Vector3d::UnitZ();
     // The own vehicle's returns stay out of the fit, as they stay out of the segmentation.
     markSelfReturns(cloud, params_, self_returns_);
-    const GroundPlaneEstimate ground =
-        mount_estimator_.estimate(cloud, prior_up, params_.min_range, params_.max_range,
-                                  self_returns_.empty() ? nullptr : self_returns_.data(),
-                                  hasAutoMount(configured_) ? 1 : kMountCheckStride);
+    const GroundPlaneEstimate ground = mount_estimator_.estimate(
+        cloud, prior_up, params_.min_range, params_.max_range,
+        self_returns_.empty() ? nullptr : self_returns_.data(), mountStride(configured_));
     if (!ground.found) {
         if (frame + 1 < kMaxMountFrames) return;
         mount_done_ = true;

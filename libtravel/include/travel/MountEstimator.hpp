@@ -47,6 +47,9 @@ class MountEstimator {
     GroundPlaneEstimate estimate(const PointCloud& cloud, const Eigen::Vector3d& prior_up,
                                  double min_range, double max_range,
                                  const uint8_t* excluded = nullptr, std::size_t stride = 1);
+    /// Sizes (and maps) the buffers for an estimate that uses `points` points (the frame's
+    /// points / stride), so the first estimate pays no page faults for them.
+    void reserve(std::size_t points);
 
   private:
     std::vector<int32_t> bin_point_;  // lowest point of each bin, -1 = none
