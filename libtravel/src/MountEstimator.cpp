@@ -8,7 +8,9 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "CpuDispatch.hpp"
 #include "FastAtan2.hpp"
+#include "Prefault.hpp"
 
 namespace travel {
 namespace {
@@ -46,21 +48,95 @@ double sectorPosition(double u, double v) {
     return (std::atan2(v, u) + M_PI) / (2 * M_PI) * kSectors;
 }
 
+constexpr int32_t kNoBin = -1;     // outside [min_range, max_range], NaN, or excluded
+constexpr int32_t kExactBin = -2;  // near a bin edge: binned with the exact calls
+
+// a.p as Eigen's a.dot(p) computes it: (a0 p0 + a1 p1) + a2 p2.
+TRAVEL_INTO_CALLER double dot3(const double* a, double x, double y, double z) {
+    return (a[0] * x + a[1] * y) + a[2] * z;
+}
+TRAVEL_INTO_CALLER double planeDistance(const double* n, double d, double x, double y, double z) {
+    return dot3(n, x, y, z) + d;
+}
+
+// The bin of every stride-th point i = k stride (in bins[k]) as ringPosition() and
+// sectorPosition() give it (the same approximations and edge margins), without branches:
+// kNoBin for points left out, kExactBin for points within the approximations' error of a bin
+// edge (the caller bins those with the exact calls). u, v and r^2 are computed as Eigen's dot
+// products and squaredNorm compute them.
+TRAVEL_AVX2_CLONES
+void approximateBins(const float* xs, const float* ys, const float* zs, const uint8_t* excluded,
+                     std::size_t m, std::size_t stride, const double* e1, const double* e2,
+                     double min_r2, double max_r2, int num_rings, int32_t* bins) {
+    constexpr double kRingEdge = 1e-9;
+    constexpr double kSectorEdge = 2 * detail::kFastAtan2MaxError / (2 * M_PI) * kSectors;
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = k * stride;
+        const double x = xs[i], y = ys[i], z = zs[i];
+        const double r2 = (x * x + y * y) + z * z;
+        const bool used = (r2 >= min_r2) & (r2 <= max_r2) & !(excluded && excluded[i]);
+        const double u = dot3(e1, x, y, z), v = dot3(e2, x, y, z);
+        // Points left out get 0 (no NaN or out-of-range value converted to int).
+        const double ring = used ? std::sqrt(u * u + v * v) / kBinLength : 0.0;
+        const float angle = detail::fastAtan2(static_cast<float>(v), static_cast<float>(u));
+        const double sector = used ? (angle + M_PI) / (2 * M_PI) * kSectors : 0.0;
+        const int ring_index = static_cast<int>(ring), sector_index = static_cast<int>(sector);
+        const double ring_frac = ring - ring_index, sector_frac = sector - sector_index;
+        const bool exact = (ring_frac < kRingEdge) | (ring_frac > 1.0 - kRingEdge) |
+                           (sector_frac < kSectorEdge) | (sector_frac > 1.0 - kSectorEdge);
+        const int bin =
+            std::min(num_rings - 1, ring_index) * kSectors + std::min(sector_index, kSectors - 1);
+        bins[k] = !used ? kNoBin : (exact ? kExactBin : bin);
+    }
+}
+
+// How many of the m points are within `band` of the plane n.p + d = 0 (RANSAC's inlier count).
+TRAVEL_AVX2_CLONES
+std::size_t countWithin(const double* xs, const double* ys, const double* zs, std::size_t m,
+                        const double* normal, double d, double band) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < m; ++i)
+        count += std::fabs(planeDistance(normal, d, xs[i], ys[i], zs[i])) < band;
+    return count;
+}
+
+// The used points i = k stride (bins[k] != kNoBin) within `band` of the plane, in input order,
+// into `selected`; returns how many.
+TRAVEL_AVX2_CLONES
+std::size_t selectWithin(const float* xs, const float* ys, const float* zs, const int32_t* bins,
+                         std::size_t m, std::size_t stride, const double* normal, double d,
+                         double band, int32_t* selected) {
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = k * stride;
+        const double dist = planeDistance(normal, d, xs[i], ys[i], zs[i]);
+        selected[count] = static_cast<int32_t>(i);
+        count += (bins[k] != kNoBin) & (std::fabs(dist) < band);
+    }
+    return count;
+}
+
 // Plane n.p + d = 0 through the points within `band` of the previous plane (PCA); false when
 // fewer than 3 points.
 template <class ForEachPoint>
 bool refitPlane(ForEachPoint&& for_each, Eigen::Vector3d& n, double& d, double band,
                 std::size_t& count) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    // The sums of p p^T's six distinct entries, in scalars (Eigen's `outer += p * p.transpose()`
+    // goes through a temporary in memory and stalls on it; each entry is the same product and
+    // sum either way).
+    double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
     count = 0;
     for_each([&](const Eigen::Vector3d& p) {
         if (std::fabs(n.dot(p) + d) >= band) return;
         sum += p;
-        outer += p * p.transpose();
+        xx += p.x() * p.x(), xy += p.x() * p.y(), xz += p.x() * p.z();
+        yy += p.y() * p.y(), yz += p.y() * p.z(), zz += p.z() * p.z();
         ++count;
     });
     if (count < 3) return false;
+    Eigen::Matrix3d outer;
+    outer << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     const Eigen::Vector3d mean = sum / static_cast<double>(count);
     const Eigen::Matrix3d cov = outer / static_cast<double>(count) - mean * mean.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
@@ -153,8 +229,12 @@ MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& 
     note.kind = MountNote::Kind::Mismatch;
     note.frame = frame;
     note.ground = ground;
+    // A check may use every stride-th point only (Pipeline): say so, the count is of those.
     note.message = what + " (measured on frame " + std::to_string(frame) + ", " +
-                   grouped(ground.num_inliers) + " ground points)";
+                   grouped(ground.num_inliers) + " ground points" +
+                   (ground.stride > 1 ? " in a 1-in-" + std::to_string(ground.stride) + " sample"
+                                      : std::string()) +
+                   ")";
     return note;
 }
 
@@ -169,9 +249,19 @@ double firstGroundRingRadius(double sensor_height, double lowest_elevation_deg,
     return sensor_height / std::tan(-lowest_elevation_deg / kRadToDeg) + 0.5 * tgf_resolution;
 }
 
+void MountEstimator::reserve(std::size_t points) {
+    const std::size_t bins = static_cast<std::size_t>(kSectors) *
+                             static_cast<std::size_t>(std::ceil(kMaxCandidateRange / kBinLength));
+    detail::prefault(bin_point_, bins), detail::prefault(bin_height_, bins);
+    detail::prefault(candidates_, bins), detail::prefault(candidate_x_, bins);
+    detail::prefault(candidate_y_, bins), detail::prefault(candidate_z_, bins);
+    detail::prefault(point_bin_, points), detail::prefault(selected_, points);
+}
+
 GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
                                              const Eigen::Vector3d& prior_up, double min_range,
-                                             double max_range, const uint8_t* excluded) {
+                                             double max_range, const uint8_t* excluded,
+                                             std::size_t stride) {
     GroundPlaneEstimate out;
     const Eigen::Vector3d up = prior_up.normalized();
     // Any two directions completing `up` to an orthonormal basis.
@@ -184,16 +274,23 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
 
     const std::size_t n = cloud.size();
     const double min_r2 = min_range * min_range, max_r2 = max_r * max_r;
-    for (std::size_t i = 0; i < n; ++i) {
+    stride = std::max<std::size_t>(stride, 1);
+    const std::size_t m = (n + stride - 1) / stride;  // points used: i = k stride, k < m
+    point_bin_.resize(m);
+    approximateBins(cloud.x.data(), cloud.y.data(), cloud.z.data(), excluded, m, stride, e1.data(),
+                    e2.data(), min_r2, max_r2, num_rings, point_bin_.data());
+    for (std::size_t k = 0; k < m; ++k) {
+        int32_t bin = point_bin_[k];
+        if (bin == kNoBin) continue;
+        const std::size_t i = k * stride;
         const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
-        const double r2 = p.squaredNorm();
-        if (!(r2 >= min_r2 && r2 <= max_r2)) continue;  // also drops NaN
-        if (excluded && excluded[i]) continue;
-        const double u = e1.dot(p), v = e2.dot(p), h = up.dot(p);
-        const int ring = std::min(num_rings - 1, static_cast<int>(ringPosition(u, v)));
-        int sector = static_cast<int>(sectorPosition(u, v));
-        sector = std::clamp(sector, 0, kSectors - 1);
-        const std::size_t bin = static_cast<std::size_t>(ring) * kSectors + sector;
+        if (bin == kExactBin) {
+            const double u = e1.dot(p), v = e2.dot(p);
+            const int ring = std::min(num_rings - 1, static_cast<int>(ringPosition(u, v)));
+            const int sector = std::clamp(static_cast<int>(sectorPosition(u, v)), 0, kSectors - 1);
+            bin = ring * kSectors + sector;
+        }
+        const double h = up.dot(p);
         if (bin_point_[bin] < 0 || h < bin_height_[bin]) {
             bin_point_[bin] = static_cast<int32_t>(i);
             bin_height_[bin] = static_cast<float>(h);
@@ -205,6 +302,12 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
     }
     out.num_candidates = candidates_.size();
     if (candidates_.size() < 3) return out;
+    candidate_x_.resize(candidates_.size()), candidate_y_.resize(candidates_.size());
+    candidate_z_.resize(candidates_.size());
+    for (std::size_t k = 0; k < candidates_.size(); ++k) {
+        candidate_x_[k] = candidates_[k].x(), candidate_y_[k] = candidates_[k].y();
+        candidate_z_[k] = candidates_[k].z();
+    }
 
     // RANSAC, seeded: a 64-bit LCG (Knuth's MMIX constants), the same on every platform.
     uint64_t state = 0x9E3779B97F4A7C15ull;
@@ -216,11 +319,11 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
     std::size_t best_count = 0;
     Eigen::Vector3d best_n = up;
     double best_d = 0;
-    const std::size_t m = candidates_.size();
+    const std::size_t num_candidates = candidates_.size();
     for (int it = 0; it < kRansacIterations; ++it) {
-        const Eigen::Vector3d& a = candidates_[next(m)];
-        const Eigen::Vector3d& b = candidates_[next(m)];
-        const Eigen::Vector3d& c = candidates_[next(m)];
+        const Eigen::Vector3d& a = candidates_[next(num_candidates)];
+        const Eigen::Vector3d& b = candidates_[next(num_candidates)];
+        const Eigen::Vector3d& c = candidates_[next(num_candidates)];
         Eigen::Vector3d normal = (b - a).cross(c - a);
         const double len = normal.norm();
         if (!(len > 1e-9)) continue;
@@ -229,8 +332,9 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
         if (normal.dot(up) < min_up) continue;
         const double d = -normal.dot(a);
         if (!(d > 0)) continue;  // the sensor must be above the ground
-        std::size_t count = 0;
-        for (const auto& p : candidates_) count += std::fabs(normal.dot(p) + d) < kRansacInlierDist;
+        const std::size_t count =
+            countWithin(candidate_x_.data(), candidate_y_.data(), candidate_z_.data(),
+                        num_candidates, normal.data(), d, kRansacInlierDist);
         if (count > best_count) best_count = count, best_n = normal, best_d = d;
     }
     if (best_count < 3) return out;
@@ -240,21 +344,27 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
     };
     std::size_t count = 0;
     if (!refitPlane(candidate_points, best_n, best_d, kRansacInlierDist, count)) return out;
-    const auto all_points = [&](auto&& visit) {
-        for (std::size_t i = 0; i < n; ++i) {
-            const Eigen::Vector3d p(cloud.x[i], cloud.y[i], cloud.z[i]);
-            const double r2 = p.squaredNorm();
-            if (r2 >= min_r2 && r2 <= max_r2 && !(excluded && excluded[i])) visit(p);
-        }
-    };
+    // The refits on all used points: those within the band listed first (a loop without
+    // branches), then summed in input order.
+    selected_.resize(m);
     for (const double band : kRefitDist) {
-        if (!refitPlane(all_points, best_n, best_d, band, count)) return out;
+        const std::size_t num_selected =
+            selectWithin(cloud.x.data(), cloud.y.data(), cloud.z.data(), point_bin_.data(), m,
+                         stride, best_n.data(), best_d, band, selected_.data());
+        const auto points_within = [&](auto&& visit) {
+            for (std::size_t k = 0; k < num_selected; ++k) {
+                const int32_t i = selected_[k];
+                visit(Eigen::Vector3d(cloud.x[i], cloud.y[i], cloud.z[i]));
+            }
+        };
+        if (!refitPlane(points_within, best_n, best_d, band, count)) return out;
     }
     out.normal = best_n;
     out.height = best_d;
     out.num_inliers = count;
+    out.stride = stride;
     mountAnglesFromNormal(best_n, out.roll_deg, out.pitch_deg);
-    out.found = count >= kMinInliers && best_d > 0;
+    out.found = count * stride >= kMinInliers && best_d > 0;
     return out;
 }
 

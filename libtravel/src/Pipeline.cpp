@@ -24,9 +24,19 @@ double msSince(Clock::time_point& t) {
 
 // Frames on which `auto` mount values are tried before the fallbacks are kept for good.
 constexpr std::size_t kMaxMountFrames = 10;
+// A check of configured mount values fits the ground plane on every 4th point: its tolerances
+// are 0.3 m and 5 deg (kMountHeightTolerance, kMountTiltToleranceDeg), and a quarter of a
+// 64-beam scan (~10k ground points) gives the plane of the fit on all points within 5 mm and
+// 0.11 deg (SemanticKITTI 00 frames 0-5 and the 22 kitti_raw_pcd frames), at a quarter of the
+// cost on the first frame. `auto` values are estimated on every point.
+constexpr std::size_t kMountCheckStride = 4;
 
 bool hasAutoMount(const Params& p) {
     return p.sensor_height.isAuto() || p.mount_roll_deg.isAuto() || p.mount_pitch_deg.isAuto();
+}
+
+std::size_t mountStride(const Params& configured) {
+    return hasAutoMount(configured) ? 1 : kMountCheckStride;
 }
 
 }  // namespace
@@ -40,6 +50,8 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
     if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
+    const std::size_t stride = mountStride(configured_);
+    mount_estimator_.reserve((points + stride - 1) / stride);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
     if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
@@ -91,9 +103,9 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     const Eigen::Vector3d prior_up = mountRotation(params_).transpose() * Eigen::Vector3d::UnitZ();
     // The own vehicle's returns stay out of the fit, as they stay out of the segmentation.
     markSelfReturns(cloud, params_, self_returns_);
-    const GroundPlaneEstimate ground =
-        mount_estimator_.estimate(cloud, prior_up, params_.min_range, params_.max_range,
-                                  self_returns_.empty() ? nullptr : self_returns_.data());
+    const GroundPlaneEstimate ground = mount_estimator_.estimate(
+        cloud, prior_up, params_.min_range, params_.max_range,
+        self_returns_.empty() ? nullptr : self_returns_.data(), mountStride(configured_));
     if (!ground.found) {
         if (frame + 1 < kMaxMountFrames) return;
         mount_done_ = true;

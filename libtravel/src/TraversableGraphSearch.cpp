@@ -56,6 +56,19 @@ struct EdgeTest {
         return std::fabs(a.normal.dot(b.normal)) > 1.f - normal_turn;
     }
 };
+
+// Calls visit(i) for every set bit i in [lo, hi] of the bit array `bits`, in increasing i.
+template <class Visit>
+void forEachSetBit(const uint64_t* bits, int lo, int hi, Visit&& visit) {
+    if (lo > hi) return;
+    const int first = lo / 64, last = hi / 64;
+    for (int w = first; w <= last; ++w) {
+        uint64_t word = bits[w];
+        if (w == first) word &= ~uint64_t{0} << (lo % 64);
+        if (w == last && hi % 64 != 63) word &= (uint64_t{1} << (hi % 64 + 1)) - 1;
+        for (; word != 0; word &= word - 1) visit(64 * w + __builtin_ctzll(word));
+    }
+}
 }  // namespace
 
 bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params) {
@@ -67,6 +80,10 @@ void TraversableGraphSearch::reserve(const TriGridField& field) {
     detail::prefault(reached_, nodes), detail::prefault(reached_where_, nodes);
     detail::prefault(candidates_, nodes), detail::prefault(nearest_, nodes);
     detail::prefault(node_reached_, nodes), detail::prefault(node_xy_, nodes);
+    const int n = field.cellsPerSide();
+    const std::size_t bit_words =
+        static_cast<std::size_t>(n) * static_cast<std::size_t>((n + 63) / 64);
+    detail::prefault(row_cells_, bit_words), detail::prefault(col_cells_, bit_words);
 }
 
 void TraversableGraphSearch::markReached(int node, int16_t component, const TriGridField& field,
@@ -77,6 +94,9 @@ void TraversableGraphSearch::markReached(int node, int16_t component, const TriG
     node_reached_[node] = 1;
     node_xy_[node] = reached.mean.head<2>();
     const int cell = node / 4, n = field.cellsPerSide();
+    const int ix = cell % n, iy = cell / n;
+    row_cells_[static_cast<std::size_t>(iy) * words_ + ix / 64] |= uint64_t{1} << (ix % 64);
+    col_cells_[static_cast<std::size_t>(ix) * words_ + iy / 64] |= uint64_t{1} << (iy % 64);
     reached_.push_back(node);
     reached_where_.push_back({reached.mean.head<2>(), cell % n, cell / n});
 }
@@ -113,23 +133,31 @@ void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridFi
     int nearest = -1;
     float best = max_dist2;
     const Eigen::Vector2f xy = cand.mean.head<2>();
+    const auto visit_cell = [&](int cell) {
+        for (int k = 0; k < 4; ++k) {
+            const int id = 4 * cell + k;
+            if (!node_reached_[id]) continue;
+            const float d2 = (node_xy_[id] - xy).squaredNorm();
+            if (d2 < best || (d2 == best && id < nearest)) best = d2, nearest = id;
+        }
+    };
     for (int ring = 0; ring <= window_rings_; ++ring) {
         const float gap = std::max(0, ring - 1) * field.resolution();
         if (gap * gap > best) break;
-        for (int iy = cy - ring; iy <= cy + ring; ++iy) {
-            if (iy < 0 || iy >= n) continue;
-            const bool edge_row = iy == cy - ring || iy == cy + ring;
-            for (int ix = cx - ring; ix <= cx + ring; ix += edge_row ? 1 : 2 * ring) {
-                if (ix >= 0 && ix < n) {
-                    for (int k = 0; k < 4; ++k) {
-                        const int id = 4 * (iy * n + ix) + k;
-                        if (!node_reached_[id]) continue;
-                        const float d2 = (node_xy_[id] - xy).squaredNorm();
-                        if (d2 < best || (d2 == best && id < nearest)) best = d2, nearest = id;
-                    }
-                }
-                if (ring == 0) break;
-            }
+        // The ring's two rows (one at ring 0), then its two columns without their corners.
+        const int x_lo = std::max(0, cx - ring), x_hi = std::min(n - 1, cx + ring);
+        for (const int iy : {cy - ring, cy + ring}) {
+            if (iy >= 0 && iy < n)
+                forEachSetBit(&row_cells_[static_cast<std::size_t>(iy) * words_], x_lo, x_hi,
+                              [&](int ix) { visit_cell(iy * n + ix); });
+            if (ring == 0) break;
+        }
+        if (ring == 0) continue;
+        const int y_lo = std::max(0, cy - ring + 1), y_hi = std::min(n - 1, cy + ring - 1);
+        for (const int ix : {cx - ring, cx + ring}) {
+            if (ix >= 0 && ix < n)
+                forEachSetBit(&col_cells_[static_cast<std::size_t>(ix) * words_], y_lo, y_hi,
+                              [&](int iy) { visit_cell(iy * n + ix); });
         }
     }
     near.node = nearest;
@@ -138,17 +166,17 @@ void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridFi
 
 // nearestReached() of candidate c, from what it was when last asked: the reached set only
 // grows, so the nearest is the nearer of the last answer and the nodes reached since (in the
-// same window, same ties); a full ring scan only when more nodes were reached since than the
-// window has cells. Re-seeding asks every candidate again after each accepted seed.
+// same window, same ties); a full ring scan (which visits only cells with reached nodes) when
+// more than kMaxNewReached nodes were reached since. Re-seeding asks every candidate again
+// after each accepted seed.
+constexpr std::size_t kMaxNewReached = 64;
 int TraversableGraphSearch::nearestReachedNow(std::size_t c, const TriGridField& field,
                                               const TerrainModel& model, float max_dist2) {
     Nearest& near = nearest_[c];
     const TriNode& cand = model.nodes[candidates_[c]];
     if (near.cx < 0) return -1;  // mean outside the grid
     const std::size_t reached = reached_.size();
-    const std::size_t window = static_cast<std::size_t>((2 * window_rings_ + 1)) *
-                               static_cast<std::size_t>(2 * window_rings_ + 1);
-    if (near.seen == 0 || reached - near.seen > window) {
+    if (near.seen == 0 || reached - near.seen > kMaxNewReached) {
         nearestReached(cand, field, max_dist2, near);
     } else {
         const Eigen::Vector2f xy = cand.mean.head<2>();
@@ -175,6 +203,10 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     // (a TriNode is ~100 bytes: the scans would read one cache line per node).
     node_reached_.assign(model.nodes.size(), 0);
     node_xy_.resize(model.nodes.size());
+    const int n = field.cellsPerSide();
+    words_ = (n + 63) / 64;
+    row_cells_.assign(static_cast<std::size_t>(n) * words_, 0);
+    col_cells_.assign(static_cast<std::size_t>(n) * words_, 0);
     // Start node (see the decisions above).
     const float radius2 = static_cast<float>(params.seed_search_radius * params.seed_search_radius);
     int seed = -1;

@@ -33,6 +33,7 @@ struct GroundPlaneEstimate {
     double pitch_deg = 0.0;  ///< mount pitch, likewise
     std::size_t num_candidates = 0;  ///< lowest points of the polar bins
     std::size_t num_inliers = 0;     ///< points on the final plane (within 0.06 m)
+    std::size_t stride = 1;          ///< every stride-th point was used (estimate's `stride`)
 };
 
 class MountEstimator {
@@ -40,16 +41,24 @@ class MountEstimator {
     /// Fits the ground plane of `cloud` (sensor frame). `prior_up`: the expected up direction in
     /// the sensor frame (unit; planes more than 30 deg from it are rejected). Points outside
     /// [min_range, max_range] (3-D) are not used, nor points i with excluded[i] != 0 when
-    /// `excluded` is given (the own vehicle's returns: markSelfReturns). found = false when
-    /// fewer than 100 points lie on the best plane.
+    /// `excluded` is given (the own vehicle's returns: markSelfReturns). `stride` > 1 uses only
+    /// the points 0, stride, 2 stride, ... (a check of configured values needs less precision
+    /// than an estimate: Pipeline). found = false when fewer than 100 / stride of the used points
+    /// lie on the best plane.
     GroundPlaneEstimate estimate(const PointCloud& cloud, const Eigen::Vector3d& prior_up,
                                  double min_range, double max_range,
-                                 const uint8_t* excluded = nullptr);
+                                 const uint8_t* excluded = nullptr, std::size_t stride = 1);
+    /// Sizes (and maps) the buffers for an estimate that uses `points` points (the frame's
+    /// points / stride), so the first estimate pays no page faults for them.
+    void reserve(std::size_t points);
 
   private:
     std::vector<int32_t> bin_point_;  // lowest point of each bin, -1 = none
     std::vector<float> bin_height_;
     std::vector<Eigen::Vector3d> candidates_;
+    std::vector<double> candidate_x_, candidate_y_, candidate_z_;  // candidates_ as arrays
+    std::vector<int32_t> point_bin_;  // per used point: its bin, or kNoBin / kExactBin
+    std::vector<int32_t> selected_;   // points within a refit's band
 };
 
 /// Roll and pitch [deg] of a mount R = Rz(yaw) Ry(pitch) Rx(roll) under which the sensor-frame

@@ -50,6 +50,11 @@ class TraversableGraphSearch {
     std::vector<ReachedWhere> reached_where_;  // the same nodes' positions
     std::vector<uint8_t> node_reached_;        // per node: model.nodes[id].reached
     std::vector<Eigen::Vector2f> node_xy_;     // per node: its mean's xy (set when reached)
+    // Cells holding a reached node, as bits: row iy's cells ix at row_cells_[iy * words_ +
+    // ix / 64], column ix's cells iy at col_cells_[ix * words_ + iy / 64]. The ring scans
+    // visit only these cells, not the window's empty ones.
+    std::vector<uint64_t> row_cells_, col_cells_;
+    int words_ = 0;
     std::vector<int> candidates_;
     std::vector<Nearest> nearest_;  // per candidate
     int window_rings_ = 0;          // Chebyshev radius [cells] of the nearest-node window
