@@ -65,7 +65,7 @@ Params hdl64Params() {
 // With the face rule as the os64 preset sets it (off by default, see docs/parameters.md).
 Params faceParams() {
     Params p = hdl64Params();
-    p.vertical_face_min_rise = 0.25;
+    p.vertical_face_min_length = 0.0;  // under every ground point
     return p;
 }
 
@@ -90,7 +90,7 @@ Params os64Params() {
     p.elevation_table = "uniform";
     p.min_elevation_deg = -16.6;
     p.max_elevation_deg = 16.6;
-    p.vertical_face_min_rise = 0.25;
+    p.vertical_face_min_length = 0.0;
     p.cluster_face_feet = true;
     return p;
 }

@@ -29,6 +29,15 @@ bool hasAutoMount(const Params& p) {
     return p.sensor_height.isAuto() || p.mount_roll_deg.isAuto() || p.mount_pitch_deg.isAuto();
 }
 
+// The face rule's scopes (VerticalFaces): under every ground point, in the ground stage; or
+// under wall-like clusters only, after the object segmentation.
+bool everyGroundPointFaces(const Params& p) {
+    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length == 0.0;
+}
+bool wallFaces(const Params& p) {
+    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length > 0.0 && p.cluster_objects;
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) {
@@ -42,8 +51,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
-    if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
-        range_image_.reserve(points);
+    if (params_.cluster_objects || everyGroundPointFaces(params_)) range_image_.reserve(points);
     if (params_.cluster_objects)
         clustering_.reserve(points, points);  // the range image has beams x columns cells too
 }
@@ -141,7 +149,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     t.graph_search = msSince(clock);
     terrain_fitting_.run(field_, params_, result.terrain);
     t.ttmf = msSince(clock);
-    const bool faces = params_.vertical_face_min_rise > 0.0;
+    const bool faces = everyGroundPointFaces(params_);
     const bool foot_heights = faces && params_.vertical_face_min_foot_height > 0.0;
     result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels,
                                       foot_heights ? &foot_heights_ : nullptr);
@@ -168,7 +176,12 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     vertical_faces_.setFaceFeet(result.labels, PointClass::NonGround);
     t.horizontal = msSince(clock);
     clustering_.vertical(params_);
-    if (params_.cluster_face_feet)
+    if (wallFaces(params_)) {
+        clustering_.wallBottoms(params_, range_image_.cols(), wall_bottoms_);
+        vertical_faces_.unlabelWallFeet(aligned_, range_image_, params_, wall_bottoms_,
+                                        result.labels, result.class_counts);
+    }
+    if (params_.cluster_face_feet || wallFaces(params_))
         clustering_.attachFeet(aligned_, range_image_, vertical_faces_.feet(),
                                vertical_faces_.footFaces());
     t.vertical = msSince(clock);
