@@ -177,9 +177,9 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     t.horizontal = msSince(clock);
     clustering_.vertical(params_);
     if (wallFaces(params_)) {
-        clustering_.wallBottoms(params_, range_image_.cols(), wall_bottoms_);
+        clustering_.wallBottoms(params_, range_image_.cols(), wall_bottoms_, wall_bottom_ranges_);
         vertical_faces_.unlabelWallFeet(aligned_, range_image_, params_, wall_bottoms_,
-                                        result.labels, result.class_counts);
+                                        wall_bottom_ranges_, result.labels, result.class_counts);
     }
     if (params_.cluster_face_feet || wallFaces(params_))
         clustering_.attachFeet(aligned_, range_image_, vertical_faces_.feet(),

@@ -742,8 +742,10 @@ void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& imag
     }
 }
 
-void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row) {
+void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row,
+                                std::vector<float>& bottom_range) {
     bottom_row.assign(static_cast<std::size_t>(cols), -1);
+    bottom_range.resize(static_cast<std::size_t>(cols));
     const float min_length = static_cast<float>(params.vertical_face_min_length);
     const int num_runs = static_cast<int>(run_first_.size());
     if (num_runs == 0 || !(min_length > 0.f)) return;
@@ -772,6 +774,7 @@ void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int1
         if (bottom != -1) continue;
         const int run = point_run_[k];
         bottom = wall_root_[run_root_[run]] ? run_row_[run] : -2;
+        bottom_range[pts[k].col] = std::sqrt(pts[k].x * pts[k].x + pts[k].y * pts[k].y);
         --unclaimed;
     }
     for (int16_t& bottom : bottom_row) bottom = std::max<int16_t>(bottom, -1);

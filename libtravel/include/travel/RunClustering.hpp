@@ -56,8 +56,10 @@ class RunClustering {
     /// After vertical(), for the face rule's walls scope (VerticalFaces::unlabelWallFeet()):
     /// per range-image column, the row of its lowest clustered point when that point's cluster
     /// is wall-like (its xy box has a side of at least params.vertical_face_min_length: a wall,
-    /// fence, hedge or building, longer than any car seen from any side), else -1.
-    void wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row);
+    /// fence, hedge or building, longer than any car seen from any side), else -1; and that
+    /// point's xy range.
+    void wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row,
+                     std::vector<float>& bottom_range);
 
     /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
     /// 1, 2, ... in the order of their first point (smallest input index): the same input

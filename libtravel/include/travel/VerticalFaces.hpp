@@ -30,6 +30,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "travel/Params.hpp"
@@ -52,10 +53,12 @@ class VerticalFaces {
 
     /// The walls' scope: the same climb, from the ground points of the rows just below
     /// bottom_row[c] (the lowest clustered point of column c, when its cluster is wall-like;
-    /// -1 otherwise) up to a face at or above it. Relabels the feet NonGround and updates
-    /// `counts`; feet() / footFaces() list them for RunClustering::attachFeet().
+    /// -1 otherwise; bottom_range[c] its xy range) up to a face at or above it. Relabels the feet
+    /// NonGround and updates `counts`; feet() / footFaces() list them for
+    /// RunClustering::attachFeet().
     void unlabelWallFeet(const AlignedCloud& cloud, const RangeImage& image, const Params& params,
-                         const std::vector<int16_t>& bottom_row, std::vector<PointClass>& labels,
+                         const std::vector<int16_t>& bottom_row,
+                         const std::vector<float>& bottom_range, std::vector<PointClass>& labels,
                          std::array<std::size_t, 4>& counts);
 
     void clear() { face_feet_.clear(), foot_faces_.clear(); }
@@ -74,22 +77,30 @@ class VerticalFaces {
   private:
     struct Cell {
         float z;        // height of the cell's point, NaN if empty
+        float r2;       // its squared xy range
         int32_t point;  // the nearest (xy) point of the cell, or -1
     };
+    static constexpr Cell kEmptyCell{std::numeric_limits<float>::quiet_NaN(), 0.f, -1};
     // The climb from a ground point at height foot_z, xy range foot_range, up the cells
     // cell[0], cell[stride], ... (`steps` of them, the rings above it): the first non-ground
     // point of eq. 5 it meets, if it rises by min_rise through steps steeper than 45 degrees,
     // else -1.
     static int32_t climbToFace(const Cell* cell, std::ptrdiff_t stride, int steps, float foot_z,
-                               float foot_range, const AlignedCloud& cloud,
-                               const std::vector<PointClass>& labels, float min_rise, int max_gap);
+                               float foot_range, const std::vector<PointClass>& labels,
+                               float min_rise, int max_gap);
     void finish(std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts) const;
     std::vector<Cell> cells_;  // rows x cols (every ground point's scope)
-    // The walls' scope: a window of rows per column (column c's: rows [window_lo_[c],
-    // window_lo_[c] + window_rows_[c]) at cells_[window_begin_[c]...]) and the ground points
-    // of its rows below the wall's lowest point (the candidate feet).
-    std::vector<int16_t> window_lo_, window_rows_;
-    std::vector<uint32_t> window_begin_;
+    // The walls' scope: a window of rows per column, and the candidate feet (ground points of
+    // its rows below the wall's lowest point, within reach of it).
+    struct Window {
+        int16_t lo = 0, rows = 0;  // rows [lo, lo + rows), at cells_[begin...]
+        int16_t feet_below = 0;    // window rows below the wall's lowest point
+        uint32_t begin = 0;
+        float min_r2 = 0.f;  // a foot's squared xy range is at least this
+    };
+    std::vector<Window> windows_;
+    std::vector<uint32_t> spans_;      // per column + 1: its window's lo | rows << 16
+    std::vector<uint32_t> in_window_;  // the points in a window
     std::vector<uint32_t> candidates_;
     std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
     std::vector<uint32_t> foot_faces_;  // the face point of each
