@@ -21,11 +21,11 @@
 //   SemanticKITTI dev frames about 9 % of them are road, parking or sidewalk points of the
 //   ground truth, mostly at car sills and tyres, and joined to the cars they lower the purity
 //   0.991 -> 0.985.
-// * walls and fences (> 0, the road default): unlabelWallFeet() after the object segmentation,
-//   only in the range-image columns whose lowest clustered point belongs to a cluster whose xy
-//   box has a side at least that long (RunClustering::wallBottoms): longer than any car seen
-//   from any side, so car sills and tyres never lose their road. The same climb; each foot
-//   joins its face's cluster.
+// * walls and fences (> 0, the scope for roads, where the rule is off by default: +10 % CPU):
+//   unlabelWallFeet() after the object segmentation, only in the range-image columns whose
+//   lowest clustered point belongs to a cluster whose xy box has a side at least that long
+//   (RunClustering::wallBottoms): longer than any car seen from any side, so car sills and
+//   tyres never lose their road. The same climb; each foot joins its face's cluster.
 #pragma once
 
 #include <array>
