@@ -308,7 +308,6 @@ TEST(HardScenes, WallScopeLeavesCarsPeopleAndKerbsAlone) {
     for (const Case& c : {Case{"kerbs_steps", sim::kerbsAndSteps(), 1, 0},
                           Case{"urban_objects", sim::urbanObjects(), 1, 3},
                           Case{"person_beside_car", sim::personBesideCar(6.0, 0.5), 1, 3},
-                          Case{"parked_cars_20_25m", sim::parkedCarsAt20To25Metres(), 1, 3},
                           Case{"parked_car_row_1m", sim::parkedCarRow(6.0, 1.0), 1, 4},
                           Case{"car_before_hedge", sim::carBeforeHedge(6.0, 1.0, 1.5), 1, 1}}) {
         SCOPED_TRACE(c.name);
