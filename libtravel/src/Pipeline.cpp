@@ -39,6 +39,15 @@ std::size_t mountStride(const Params& configured) {
     return hasAutoMount(configured) ? 1 : kMountCheckStride;
 }
 
+// The face rule's scopes (VerticalFaces): under every ground point, in the ground stage; or
+// under wall-like clusters only, after the object segmentation.
+bool everyGroundPointFaces(const Params& p) {
+    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length == 0.0;
+}
+bool wallFaces(const Params& p) {
+    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length > 0.0 && p.cluster_objects;
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) {
@@ -54,8 +63,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     mount_estimator_.reserve((points + stride - 1) / stride);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
-    if (params_.cluster_objects || params_.vertical_face_min_rise > 0.0)
-        range_image_.reserve(points);
+    if (params_.cluster_objects || everyGroundPointFaces(params_)) range_image_.reserve(points);
     if (params_.cluster_objects)
         clustering_.reserve(points, points);  // the range image has beams x columns cells too
 }
@@ -153,7 +161,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     t.graph_search = msSince(clock);
     terrain_fitting_.run(field_, params_, result.terrain);
     t.ttmf = msSince(clock);
-    const bool faces = params_.vertical_face_min_rise > 0.0;
+    const bool faces = everyGroundPointFaces(params_);
     const bool foot_heights = faces && params_.vertical_face_min_foot_height > 0.0;
     result.class_counts = labelPoints(field_, aligned_, params_, result.terrain, result.labels,
                                       foot_heights ? &foot_heights_ : nullptr);
@@ -180,7 +188,12 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     vertical_faces_.setFaceFeet(result.labels, PointClass::NonGround);
     t.horizontal = msSince(clock);
     clustering_.vertical(params_);
-    if (params_.cluster_face_feet)
+    if (wallFaces(params_)) {
+        clustering_.wallBottoms(params_, range_image_.cols(), wall_bottoms_, wall_bottom_ranges_);
+        vertical_faces_.unlabelWallFeet(aligned_, range_image_, params_, wall_bottoms_,
+                                        wall_bottom_ranges_, result.labels, result.class_counts);
+    }
+    if (params_.cluster_face_feet || wallFaces(params_))
         clustering_.attachFeet(aligned_, range_image_, vertical_faces_.feet(),
                                vertical_faces_.footFaces());
     t.vertical = msSince(clock);

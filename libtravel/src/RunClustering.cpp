@@ -884,6 +884,44 @@ void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& imag
     }
 }
 
+void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row,
+                                std::vector<float>& bottom_range) {
+    bottom_row.assign(static_cast<std::size_t>(cols), -1);
+    bottom_range.resize(static_cast<std::size_t>(cols));
+    const float min_length = static_cast<float>(params.vertical_face_min_length);
+    const int num_runs = static_cast<int>(run_first_.size());
+    if (num_runs == 0 || !(min_length > 0.f)) return;
+    // Each cluster's box (the union of its runs' boxes), then whether it is wall-like.
+    run_root_.resize(static_cast<std::size_t>(num_runs));
+    const float inf = std::numeric_limits<float>::infinity();
+    root_box3_.assign(static_cast<std::size_t>(num_runs),
+                      RunBox{Eigen::Array4f::Constant(inf), Eigen::Array4f::Constant(-inf)});
+    for (int run = 0; run < num_runs; ++run) {
+        const int root = run_root_[run] = find(run);
+        root_box3_[root].lo = root_box3_[root].lo.min(run_box_[run].lo);
+        root_box3_[root].hi = root_box3_[root].hi.max(run_box_[run].hi);
+    }
+    wall_root_.assign(static_cast<std::size_t>(num_runs), 0);
+    for (int run = 0; run < num_runs; ++run) {
+        if (run_root_[run] != run) continue;
+        const Eigen::Array4f side = root_box3_[run].hi - root_box3_[run].lo;
+        wall_root_[run] = std::max(side[0], side[1]) >= min_length;
+    }
+    // Rows bottom up: the first point met in a column is its lowest.
+    const SortedPoint* pts = pts_.data();
+    const uint32_t num_sorted = row_begin_.back();
+    int unclaimed = cols;
+    for (uint32_t k = 0; k < num_sorted && unclaimed > 0; ++k) {
+        int16_t& bottom = bottom_row[pts[k].col];
+        if (bottom != -1) continue;
+        const int run = point_run_[k];
+        bottom = wall_root_[run_root_[run]] ? run_row_[run] : -2;
+        bottom_range[pts[k].col] = std::sqrt(pts[k].x * pts[k].x + pts[k].y * pts[k].y);
+        --unclaimed;
+    }
+    for (int16_t& bottom : bottom_row) bottom = std::max<int16_t>(bottom, -1);
+}
+
 void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& cluster_id) {
     const std::size_t num_runs = run_first_.size();
     // Root of every run once (not a find() per point), then sizes and first points per root

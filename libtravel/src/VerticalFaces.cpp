@@ -7,6 +7,43 @@
 
 namespace travel {
 
+int32_t VerticalFaces::climbToFace(const Cell* cell, std::ptrdiff_t stride, int steps, float foot_z,
+                                   float foot_range, const std::vector<PointClass>& labels,
+                                   float min_rise, int max_gap) {
+    float prev_z = foot_z, prev_range = foot_range;
+    bool risen = false;
+    int32_t face = -1;  // the first non-ground point of the climb
+    int missing = 0;    // consecutive rings without a return
+    for (; steps > 0; --steps, cell += stride) {
+        const int32_t j = cell->point;
+        // No return on this ring: foliage, mesh or dark paint let part of the rays pass or
+        // absorb them. The climb resumes from its last point on the next ring that returned,
+        // at most max_gap rings on (the steepness test spans the gap).
+        if (j < 0) {
+            if (++missing > max_gap) return -1;
+            continue;
+        }
+        missing = 0;
+        const float dz = cell->z - prev_z;
+        if (!(dz > 0.f)) return -1;
+        const float range = std::sqrt(cell->r2);
+        // Steeper than 45 degrees: no traversable slope climbs like this.
+        if (!(dz > std::fabs(range - prev_range))) return -1;
+        risen = risen || cell->z - foot_z >= min_rise;
+        if (face < 0 && labels[j] == PointClass::NonGround) face = j;
+        if (risen && face >= 0) return face;
+        prev_z = cell->z, prev_range = range;
+    }
+    return -1;
+}
+
+void VerticalFaces::finish(std::vector<PointClass>& labels,
+                           std::array<std::size_t, 4>& counts) const {
+    for (const uint32_t i : face_feet_) labels[i] = PointClass::NonGround;
+    counts[static_cast<int>(PointClass::Ground)] -= face_feet_.size();
+    counts[static_cast<int>(PointClass::NonGround)] += face_feet_.size();
+}
+
 void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage& image,
                                     const Params& params, std::vector<PointClass>& labels,
                                     std::array<std::size_t, 4>& counts,
@@ -17,7 +54,7 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
     const float min_foot = static_cast<float>(params.vertical_face_min_foot_height);
     const float* foot_height = min_foot > 0.f && heights ? heights->data() : nullptr;
     const int rows = image.rows(), cols = image.cols();
-    if (!(min_rise > 0.f) || rows < 2 || cols < 1) return;
+    if (!(min_rise > 0.f) || params.vertical_face_min_length > 0.0 || rows < 2 || cols < 1) return;
     const std::vector<int16_t>& row = image.row();
     const std::vector<int32_t>& col = image.col();
     const std::size_t n = labels.size();
@@ -25,7 +62,7 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
     // Each cell's point (the nearest in xy, so that the choice depends neither on the order of
     // the points nor on invalid points between them) and its height; an empty cell has a NaN
     // height, which no climb passes.
-    cells_.assign(num_cells, Cell{std::numeric_limits<float>::quiet_NaN(), -1});
+    cells_.assign(num_cells, kEmptyCell);
     Cell* cells = cells_.data();
     const float* x = cloud.x.data();
     const float* y = cloud.y.data();
@@ -33,55 +70,121 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
     for (std::size_t i = 0; i < n; ++i) {
         if (row[i] < 0) continue;
         Cell& cell = cells[static_cast<std::size_t>(row[i]) * cols + col[i]];
-        const int32_t k = cell.point;
-        if (k < 0 || x[i] * x[i] + y[i] * y[i] < x[k] * x[k] + y[k] * y[k])
-            cell.point = static_cast<int32_t>(i), cell.z = z[i];
+        const float r2 = x[i] * x[i] + y[i] * y[i];
+        if (cell.point < 0 || r2 < cell.r2)
+            cell.point = static_cast<int32_t>(i), cell.z = z[i], cell.r2 = r2;
     }
     // The labels of eq. 5 are read, not changed, in this pass: a foot's face is a non-ground
     // point of eq. 5, never another foot.
     for (std::size_t i = 0; i < n; ++i) {
         if (labels[i] != PointClass::Ground || row[i] < 0) continue;
-        const float foot_z = z[i];
-        std::size_t c = static_cast<std::size_t>(row[i] + 1) * cols + col[i];
-        if (c >= num_cells) continue;
+        const int above = row[i] + 1;
+        if (above >= rows) continue;
+        const Cell& next = cells[static_cast<std::size_t>(above) * cols + col[i]];
         // Most ground points: the next ring returned and is not higher (checked before any
         // square root).
-        if (cells[c].point >= 0 ? !(cells[c].z > foot_z) : max_gap == 0) continue;
+        if (next.point >= 0 ? !(next.z > z[i]) : max_gap == 0) continue;
         // A foot within range noise of its ground plane is on the ground as far as the scan
         // tells (the road before a car's sill or tyre): it stays ground.
         if (foot_height && foot_height[i] < min_foot) continue;
-        float prev_z = foot_z, prev_range = std::sqrt(x[i] * x[i] + y[i] * y[i]);
-        bool risen = false;
-        int32_t face = -1;  // the first non-ground point of the climb
-        int missing = 0;    // consecutive rings without a return
-        for (; c < num_cells; c += cols) {
-            const int32_t j = cells[c].point;
-            // No return on this ring: foliage, mesh or dark paint let part of the rays pass
-            // or absorb them. The climb resumes from its last point on the next ring that
-            // returned, at most max_gap rings on (the steepness test spans the gap).
-            if (j < 0) {
-                if (++missing > max_gap) break;
-                continue;
-            }
-            missing = 0;
-            const float dz = cells[c].z - prev_z;
-            if (!(dz > 0.f)) break;
-            const float range = std::sqrt(x[j] * x[j] + y[j] * y[j]);
-            // Steeper than 45 degrees: no traversable slope climbs like this.
-            if (!(dz > std::fabs(range - prev_range))) break;
-            risen = risen || cells[c].z - foot_z >= min_rise;
-            if (face < 0 && labels[j] == PointClass::NonGround) face = j;
-            if (risen && face >= 0) {
-                face_feet_.push_back(static_cast<uint32_t>(i));
-                foot_faces_.push_back(static_cast<uint32_t>(face));
-                break;
-            }
-            prev_z = cells[c].z, prev_range = range;
+        const int32_t face =
+            climbToFace(&next, cols, rows - above, z[i], std::sqrt(x[i] * x[i] + y[i] * y[i]),
+                        labels, min_rise, max_gap);
+        if (face >= 0) {
+            face_feet_.push_back(static_cast<uint32_t>(i));
+            foot_faces_.push_back(static_cast<uint32_t>(face));
         }
     }
-    for (const uint32_t i : face_feet_) labels[i] = PointClass::NonGround;
-    counts[static_cast<int>(PointClass::Ground)] -= face_feet_.size();
-    counts[static_cast<int>(PointClass::NonGround)] += face_feet_.size();
+    finish(labels, counts);
+}
+
+void VerticalFaces::unlabelWallFeet(const AlignedCloud& cloud, const RangeImage& image,
+                                    const Params& params, const std::vector<int16_t>& bottom_row,
+                                    const std::vector<float>& bottom_range,
+                                    std::vector<PointClass>& labels,
+                                    std::array<std::size_t, 4>& counts) {
+    face_feet_.clear(), foot_faces_.clear();
+    const float min_rise = static_cast<float>(params.vertical_face_min_rise);
+    const int max_gap = params.vertical_face_max_gap;
+    const int rows = image.rows(), cols = image.cols();
+    if (!(min_rise > 0.f) || rows < 2 || cols < 1) return;
+    // The rows a foot's climb can span: the feet lie in eq. 5's band (eps3 above the plane,
+    // below the wall's lowest clustered point) and climb min_rise, about 0.45 m of face: 10
+    // rings 5 m away at the HDL-64E's 0.5 deg (0.044 m per ring; 0.4 deg above -8.3 deg).
+    // Nearer walls keep their lowest feet.
+    constexpr int kRowsBelow = 10, kRowsAbove = 10;
+    // Each step of a climb rises more than its range changes, and a climb through eq. 5's band
+    // (eps3 above the plane, outlier_dist below it) up to the wall's lowest point rises less
+    // than this: a foot's xy range is at most this short of that point's.
+    const float reach = static_cast<float>(params.ground_dist + params.outlier_dist +
+                                           params.vertical_face_min_rise);
+    windows_.resize(static_cast<std::size_t>(cols));
+    uint32_t num_cells = 0;
+    for (int c = 0; c < cols; ++c) {
+        Window& w = windows_[c];
+        const int bottom = bottom_row[c];
+        w = Window{};
+        if (bottom <= 0) continue;  // no wall here, or nothing below its lowest point
+        const int lo = std::max(0, bottom - kRowsBelow), hi = std::min(rows, bottom + kRowsAbove);
+        const float min_range = std::max(0.f, bottom_range[c] - reach);
+        w.lo = static_cast<int16_t>(lo), w.rows = static_cast<int16_t>(hi - lo);
+        w.feet_below = static_cast<int16_t>(bottom - lo);
+        w.begin = num_cells, w.min_r2 = min_range * min_range;
+        num_cells += static_cast<uint32_t>(hi - lo);
+    }
+    if (num_cells == 0) return;
+    cells_.assign(num_cells, kEmptyCell);
+    Cell* cells = cells_.data();
+    candidates_.clear();
+    const std::vector<int16_t>& row = image.row();
+    const std::vector<int32_t>& col = image.col();
+    const Window* windows = windows_.data();
+    const float* x = cloud.x.data();
+    const float* y = cloud.y.data();
+    const float* z = cloud.z.data();
+    const std::size_t n = labels.size();
+    // The points in the windows, listed without a branch (a column's window is crossed by
+    // runs of points); spans_[c + 1] is column c's window, lo | rows << 16; spans_[0] is the
+    // empty window of the points without a row or column (-1).
+    spans_.resize(static_cast<std::size_t>(cols) + 1);
+    spans_[0] = 0;
+    for (int c = 0; c < cols; ++c)
+        spans_[c + 1] = static_cast<uint32_t>(static_cast<uint16_t>(windows_[c].lo)) |
+                        static_cast<uint32_t>(windows_[c].rows) << 16;
+    in_window_.resize(n);
+    uint32_t* in_window = in_window_.data();
+    const uint32_t* spans = spans_.data();
+    const int16_t* rows_of = row.data();
+    const int32_t* cols_of = col.data();
+    uint32_t num_in = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const uint32_t span = spans[cols_of[i] + 1];
+        const uint32_t r = static_cast<uint32_t>(rows_of[i] - static_cast<int16_t>(span & 0xffffu));
+        in_window[num_in] = static_cast<uint32_t>(i);
+        num_in += r < (span >> 16);
+    }
+    // Their cells (nearest point in xy, as unlabelFaceFeet()) and the candidate feet: ground
+    // points below a wall's lowest point, within reach of it.
+    for (uint32_t k = 0; k < num_in; ++k) {
+        const uint32_t i = in_window[k];
+        const Window& w = windows[col[i]];
+        const int r = row[i] - w.lo;
+        Cell& cell = cells[w.begin + r];
+        const float r2 = x[i] * x[i] + y[i] * y[i];
+        if (cell.point < 0 || r2 < cell.r2)
+            cell.point = static_cast<int32_t>(i), cell.z = z[i], cell.r2 = r2;
+        if (r < w.feet_below && r2 >= w.min_r2 && labels[i] == PointClass::Ground)
+            candidates_.push_back(i);
+    }
+    for (const uint32_t i : candidates_) {
+        const Window& w = windows[col[i]];
+        const int above = row[i] - w.lo + 1;
+        const int32_t face =
+            climbToFace(&cells[w.begin + above], 1, w.rows - above, z[i],
+                        std::sqrt(x[i] * x[i] + y[i] * y[i]), labels, min_rise, max_gap);
+        if (face >= 0) face_feet_.push_back(i), foot_faces_.push_back(static_cast<uint32_t>(face));
+    }
+    finish(labels, counts);
 }
 
 }  // namespace travel

@@ -131,7 +131,13 @@ struct AutoReal {
     X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this, up to a non-ground point, is the foot of a wall, fence, trunk or bush face: "   \
-      "NonGround (extends eq. 5). 0 = off; 0.25 (above kerbs) in the os64 preset, see docs")      \
+      "NonGround (extends eq. 5). 0 = off (roads: +10 % CPU, see docs); 0.25 (above kerbs) in "   \
+      "the os64 preset")                                                                          \
+    X(double, vertical_face_min_length, 6.0, "m", 0.0, 1000.0,                                    \
+      "Scope of the face rule when on: only under object clusters whose xy box has a side at "    \
+      "least this long (walls, fences, hedges: longer than any car, 5.6 m at most from any "      \
+      "side), after the object segmentation, each foot joining its face's cluster; 0 = under "    \
+      "every ground point, in the ground stage (the os64 preset, off-road)")                      \
     X(int, vertical_face_max_gap, 2, "rings", 0, 16,                                              \
       "The face rule's climb steps over up to this many consecutive rings without a return "      \
       "(foliage, mesh fences and dark paint return part of the rays): a porous face keeps its "   \

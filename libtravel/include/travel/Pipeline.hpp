@@ -98,6 +98,9 @@ class Pipeline {
     RangeImage range_image_;
     VerticalFaces vertical_faces_;
     std::vector<float> foot_heights_;  // labelPoints' signed distances, for the face rule
+    // Per range-image column, RunClustering::wallBottoms().
+    std::vector<int16_t> wall_bottoms_;
+    std::vector<float> wall_bottom_ranges_;
     RunClustering clustering_;
 };
 

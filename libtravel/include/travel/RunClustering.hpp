@@ -53,6 +53,14 @@ class RunClustering {
     void attachFeet(const AlignedCloud& cloud, const RangeImage& image,
                     const std::vector<uint32_t>& feet, const std::vector<uint32_t>& faces);
 
+    /// After vertical(), for the face rule's walls scope (VerticalFaces::unlabelWallFeet()):
+    /// per range-image column, the row of its lowest clustered point when that point's cluster
+    /// is wall-like (its xy box has a side of at least params.vertical_face_min_length: a wall,
+    /// fence, hedge or building, longer than any car seen from any side), else -1; and that
+    /// point's xy range.
+    void wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row,
+                     std::vector<float>& bottom_range);
+
     /// Stage 3: cluster ids. Clusters with min_cluster_size..max_cluster_size points get ids
     /// 1, 2, ... in the order of their first point (smallest input index): the same input
     /// gives the same ids. Other points keep id 0.
@@ -145,6 +153,8 @@ class RunClustering {
     // at or after each column.
     std::vector<float> box_arrays_;
     std::vector<uint32_t> first_run_;
+    std::vector<RunBox> root_box3_;   // per root: the union of its runs' boxes, wallBottoms()
+    std::vector<uint8_t> wall_root_;  // per root: wall-like, see wallBottoms()
     // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
     // distance below which its points merge with the lower row's.
     std::vector<float> merge_dist2_;

@@ -12,18 +12,25 @@
 // NonGround. Kerbs (0.10-0.20 m, ground in SemanticKITTI and in the synthetic truth) rise less
 // than the 0.25 m the os64 preset sets, and are kept. Foliage, mesh and dark paint return part
 // of the rays only: the climb steps over up to vertical_face_max_gap rings without a return
-// (the steepness is tested across the gap), so porous faces keep their feet too. Off by default on
-// roads (docs/parameters.md, "Off-road driving": unclustered feet, purity, speed). The object
-// segmentation (Sec. IV) builds its runs without the feet, so that feet of neighbouring objects
-// never link at ground level. With cluster_face_feet each foot then joins the cluster of its own
-// face (RunClustering::attachFeet); without it (the default) the feet stay unclustered: on the
-// SemanticKITTI dev frames about 9 % of the feet are road, parking or sidewalk points of the ground
-// truth, mostly at car sills and tyres, and joined to the cars they lower the purity 0.991 -> 0.985
-// (docs/parameters.md, "Off-road driving").
+// (the steepness is tested across the gap), so porous faces keep their feet too. Two scopes
+// (vertical_face_min_length; docs/parameters.md, "Off-road driving"):
+// * every ground point (0, the os64 preset): unlabelFaceFeet() in the ground stage. The object
+//   segmentation (Sec. IV) builds its runs without the feet, so that feet of neighbouring
+//   objects never link at ground level. With cluster_face_feet each foot then joins the cluster
+//   of its own face (RunClustering::attachFeet); without it the feet stay unclustered: on the
+//   SemanticKITTI dev frames about 9 % of them are road, parking or sidewalk points of the
+//   ground truth, mostly at car sills and tyres, and joined to the cars they lower the purity
+//   0.991 -> 0.985.
+// * walls and fences (> 0, the scope for roads, where the rule is off by default: +10 % CPU):
+//   unlabelWallFeet() after the object segmentation, only in the range-image columns whose
+//   lowest clustered point belongs to a cluster whose xy box has a side at least that long
+//   (RunClustering::wallBottoms): longer than any car seen from any side, so car sills and
+//   tyres never lose their road. The same climb; each foot joins its face's cluster.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "travel/Params.hpp"
@@ -36,12 +43,23 @@ namespace travel {
 class VerticalFaces {
   public:
     /// Relabels Ground points at the foot of vertical faces NonGround and updates `counts`
-    /// (indexed by PointClass). Does nothing when params.vertical_face_min_rise is 0.
+    /// (indexed by PointClass). Does nothing when params.vertical_face_min_rise is 0 or
+    /// params.vertical_face_min_length is not (the walls' scope, unlabelWallFeet()).
     /// `heights` (labelPoints' signed distances, needed when
     /// params.vertical_face_min_foot_height > 0): a point lower than that is never a foot.
     void unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage& image, const Params& params,
                          std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts,
                          const std::vector<float>* heights = nullptr);
+
+    /// The walls' scope: the same climb, from the ground points of the rows just below
+    /// bottom_row[c] (the lowest clustered point of column c, when its cluster is wall-like;
+    /// -1 otherwise; bottom_range[c] its xy range) up to a face at or above it. Relabels the feet
+    /// NonGround and updates `counts`; feet() / footFaces() list them for
+    /// RunClustering::attachFeet().
+    void unlabelWallFeet(const AlignedCloud& cloud, const RangeImage& image, const Params& params,
+                         const std::vector<int16_t>& bottom_row,
+                         const std::vector<float>& bottom_range, std::vector<PointClass>& labels,
+                         std::array<std::size_t, 4>& counts);
 
     void clear() { face_feet_.clear(), foot_faces_.clear(); }
 
@@ -59,9 +77,31 @@ class VerticalFaces {
   private:
     struct Cell {
         float z;        // height of the cell's point, NaN if empty
+        float r2;       // its squared xy range
         int32_t point;  // the nearest (xy) point of the cell, or -1
     };
-    std::vector<Cell> cells_;           // rows x cols
+    static constexpr Cell kEmptyCell{std::numeric_limits<float>::quiet_NaN(), 0.f, -1};
+    // The climb from a ground point at height foot_z, xy range foot_range, up the cells
+    // cell[0], cell[stride], ... (`steps` of them, the rings above it): the first non-ground
+    // point of eq. 5 it meets, if it rises by min_rise through steps steeper than 45 degrees,
+    // else -1.
+    static int32_t climbToFace(const Cell* cell, std::ptrdiff_t stride, int steps, float foot_z,
+                               float foot_range, const std::vector<PointClass>& labels,
+                               float min_rise, int max_gap);
+    void finish(std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts) const;
+    std::vector<Cell> cells_;  // rows x cols (every ground point's scope)
+    // The walls' scope: a window of rows per column, and the candidate feet (ground points of
+    // its rows below the wall's lowest point, within reach of it).
+    struct Window {
+        int16_t lo = 0, rows = 0;  // rows [lo, lo + rows), at cells_[begin...]
+        int16_t feet_below = 0;    // window rows below the wall's lowest point
+        uint32_t begin = 0;
+        float min_r2 = 0.f;  // a foot's squared xy range is at least this
+    };
+    std::vector<Window> windows_;
+    std::vector<uint32_t> spans_;      // per column + 1: its window's lo | rows << 16
+    std::vector<uint32_t> in_window_;  // the points in a window
+    std::vector<uint32_t> candidates_;
     std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
     std::vector<uint32_t> foot_faces_;  // the face point of each
 };
