@@ -180,6 +180,11 @@ struct AutoReal {
       "joins it: a vehicle's seats and far side (2.5 m = the widest road vehicles); a cluster "   \
       "with a run seen through a gap farther behind it than this never joins (an object "         \
       "beyond, e.g. a car parked behind a car). 0 = off")                                         \
+    X(double, see_through_width, 1.8, "m", 0.0, 100.0,                                            \
+      "Windows: a cluster with a run seen through a gap whose deepest point lies farther than "   \
+      "this behind the gap's frame (measured across it, in xy) never joins the enclosing "        \
+      "cluster: it is beyond that vehicle's far side (a child or a car right behind a car). "     \
+      "0 = off")                                                                                  \
     X(double, set_back_depth, 1.7, "m", 0.0, 100.0,                                               \
       "Set-back tops: a cluster standing on a nearer one (each run of its lowest row has that "   \
       "cluster's points in front in the row below), within its columns and at least half as "     \
