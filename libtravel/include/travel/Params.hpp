@@ -191,10 +191,11 @@ struct AutoReal {
       "wide, whose nearest point is at most this behind that cluster's, joins it: a car's cabin " \
       "behind its boot or bonnet, seen end on (1.7 m: passenger-car bonnets reach 1.0-1.6 m, "    \
       "a car parked behind another side on is 1.8 m or more behind it). 0 = off")                 \
-    X(double, seam_max_shift, 2.0, "m", 0.0, 100.0,                                               \
+    X(double, seam_max_shift, 3.0, "m", 0.0, 100.0,                                               \
       "Runs of a ring facing each other across the column where the sweep started (0.1 s "        \
       "apart in time) merge when their facing ends are closer than this: a car moving at up to "  \
-      "20 m/s relative to the sensor shifts 2 m in a 10 Hz sweep. 0 = off")                       \
+      "30 m/s relative to the sensor (oncoming urban traffic, 2 x 54 km/h) shifts 3 m in a "      \
+      "10 Hz sweep. 0 = off")                                                                     \
     X(int, vertical_ring_span, 3, "", 1, 1024,                                                    \
       "T_ring: a run is compared with the runs of this many rings below it")                      \
     X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \
