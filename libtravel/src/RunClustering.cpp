@@ -652,16 +652,16 @@ void RunClustering::linkSeenThrough(const Params& params) {
                 enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than, root);
             if (enclosing < 0 || enclosing == root) continue;
             const uint32_t left = enclosure_left_, right = enclosure_right_;
+            if (dist2(left, right) > max_gap2) continue;
             // Deeper behind a car-high enclosing cluster's near face than a car is wide (in xy,
-            // across the face, whatever the gap's width): beyond its far side (a child or a car
-            // right behind a car). Taller clusters (vans, trucks, buses up to 2.55 m wide;
-            // trees) keep the depth bound only.
+            // across the face): beyond its far side (a child or a car right behind a car).
+            // Taller clusters (vans, trucks, buses up to 2.55 m wide; trees) keep the depth
+            // bound only.
             if (width > 0.f && root_z_hi_[enclosing] - root_z_lo_[enclosing] <= kCarMaxHeight &&
                 depthBehindFrame(b, enclosing, max_gap) > width) {
                 state = kConflict;
                 continue;
             }
-            if (dist2(left, right) > max_gap2) continue;
             // Seen through the gap but deeper behind it than any vehicle is wide: the cluster
             // is beyond the nearer one (a car parked behind a car), not its far side.
             if (run_far_range_[b] > std::max(range_[left], range_[right]) + depth) {
