@@ -44,7 +44,14 @@
 //   T_horz, belong to one cluster, are at most occlusion_max_gap apart, and its farthest point
 //   is at most see_through_depth behind them (a run seen through a gap but farther behind it
 //   is an object beyond the enclosing one, e.g. a car parked behind a car, and keeps its
-//   cluster apart). A cluster joins the enclosing one when all its
+//   cluster apart). Nor does a cluster with a run lying more than see_through_width behind the
+//   near face of a car-high enclosing cluster (z extent <= 2 m), measured in xy across the face
+//   (the line through that cluster's nearest points on either side of the run, within
+//   occlusion_max_gap): a car's far side is at most its width behind the near window frame
+//   whatever the viewing angle, while the depth along the ray grows to 2.5 m at 45 degrees; a
+//   child or a car 0.2-0.6 m behind a car's far side is deeper. Taller clusters (vans, trucks
+//   and buses up to 2.55 m wide; trees) keep the depth bound only. A cluster joins the
+//   enclosing one when all its
 //   runs seen through gaps are seen through that one cluster's, it lies inside that cluster's
 //   range-image box, behind its nearest point, is smaller, and at least one of its runs has
 //   the enclosing cluster's points in front of it within two rows above or below (a window is
@@ -659,7 +666,7 @@ void RunClustering::vertical(const Params& params) {
 }
 
 int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo, uint32_t row_hi,
-                                 float nearer_than) {
+                                 float nearer_than, int own_root) {
     // The points in front of the run before and after it on its ring, nearest first, skipping
     // background seen through the far window as well and occluders in front of the object.
     // Roots from run_root_ (no merge happens while runs are looked at).
@@ -683,6 +690,7 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     for (uint32_t j = 0; j < num_after; ++j) {
         const uint32_t k = after[j];
         const int root = run_root_[point_run_[k]];
+        if (root == own_root) continue;  // its own part in front (the far side before a child)
         for (uint32_t i = 0; i < num_before; ++i)
             if (before_root[i] == root) {
                 enclosure_left_ = before[i], enclosure_right_ = k;
@@ -690,6 +698,46 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
             }
     }
     return -1;
+}
+
+float RunClustering::depthBehindFrame(uint32_t run, int enclosing, float max_lateral) const {
+    // The frame: on each side of the run on its ring, the nearest point of the enclosing cluster
+    // within max_lateral of the run's end, across its ray (the adjacent points may be seats or
+    // the far side, already joined to it).
+    const int row = run_row_[run];
+    const uint32_t row_lo = row_begin_[row], row_hi = row_begin_[row + 1];
+    constexpr uint32_t kMaxWalk = 256;
+    const auto nearestOfEnclosing = [&](uint32_t end, int step) {
+        const SortedPoint& e = pts_[end];
+        const float inv = 1.f / std::max(std::hypot(e.x, e.y), 1e-3f);
+        const float ux = e.x * inv, uy = e.y * inv;
+        uint32_t best = kEndOfRun;
+        float best_range = std::numeric_limits<float>::infinity();
+        uint32_t k = end;
+        for (uint32_t walked = 0; walked < kMaxWalk; ++walked) {
+            if (step < 0 ? k == row_lo : k + 1 >= row_hi) break;
+            k += step;
+            if (std::fabs(ux * pts_[k].y - uy * pts_[k].x) > max_lateral) break;
+            if (range_[k] < best_range && run_root_[point_run_[k]] == enclosing)
+                best = k, best_range = range_[k];
+        }
+        return best;
+    };
+    const uint32_t left = nearestOfEnclosing(run_first_[run], -1);
+    const uint32_t right = nearestOfEnclosing(run_last_[run], +1);
+    if (left == kEndOfRun || right == kEndOfRun) return 0.f;
+    // The frame's line in xy through those two points; its normal n points away from the sensor
+    // (at the origin).
+    const SortedPoint &l = pts_[left], &r = pts_[right];
+    float nx = l.y - r.y, ny = r.x - l.x;
+    const float length = std::sqrt(nx * nx + ny * ny);
+    if (!(length > 1e-3f)) return 0.f;  // one point: no line (cannot happen: two columns)
+    nx /= length, ny /= length;
+    if (nx * l.x + ny * l.y < 0.f) nx = -nx, ny = -ny;
+    float deepest = 0.f;
+    for (uint32_t k = run_first_[run]; k != kEndOfRun; k = next_in_run_[k])
+        deepest = std::max(deepest, nx * (pts_[k].x - l.x) + ny * (pts_[k].y - l.y));
+    return deepest;
 }
 
 bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, float nearer_than) {
@@ -734,8 +782,10 @@ void RunClustering::boxInvolvedRoots(bool closed_only) {
 void RunClustering::linkSeenThrough(const Params& params) {
     const float depth = static_cast<float>(params.see_through_depth);
     if (depth <= 0.f) return;
+    const float width = static_cast<float>(params.see_through_width);
     const float t_horz = static_cast<float>(params.horizontal_merge_dist);
-    const float max_gap2 = static_cast<float>(params.occlusion_max_gap * params.occlusion_max_gap);
+    const float max_gap = static_cast<float>(params.occlusion_max_gap),
+                max_gap2 = max_gap * max_gap;
     const int num_runs = static_cast<int>(run_first_.size());
     const int rows = static_cast<int>(row_runs_begin_.size()) - 1;
     // Per root: the cluster its runs are seen through (kNone: none; kConflict: more than one)
@@ -745,6 +795,15 @@ void RunClustering::linkSeenThrough(const Params& params) {
     closed_.assign(static_cast<std::size_t>(num_runs), 0);
     run_root_.resize(static_cast<std::size_t>(num_runs));
     for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
+    if (width > 0.f) {  // each cluster's height (z extent)
+        root_z_lo_.assign(static_cast<std::size_t>(num_runs), std::numeric_limits<float>::max());
+        root_z_hi_.assign(static_cast<std::size_t>(num_runs), std::numeric_limits<float>::lowest());
+        for (int run = 0; run < num_runs; ++run) {
+            const int root = run_root_[run];
+            root_z_lo_[root] = std::min(root_z_lo_[root], run_box_[run].lo[2]);
+            root_z_hi_[root] = std::max(root_z_hi_[root], run_box_[run].hi[2]);
+        }
+    }
     bool any = false;
     for (int r = 0; r < rows; ++r) {
         const uint32_t row_lo = row_begin_[r], row_hi = row_begin_[r + 1];
@@ -754,10 +813,19 @@ void RunClustering::linkSeenThrough(const Params& params) {
             if (state == kConflict) continue;
             const float nearer_than = run_near_range_[b] - t_horz;
             const int enclosing =
-                enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than);
+                enclosingRoot(run_first_[b], run_last_[b], row_lo, row_hi, nearer_than, root);
             if (enclosing < 0 || enclosing == root) continue;
             const uint32_t left = enclosure_left_, right = enclosure_right_;
             if (dist2(left, right) > max_gap2) continue;
+            // Deeper behind a car-high enclosing cluster's near face than a car is wide (in xy,
+            // across the face): beyond its far side (a child or a car right behind a car).
+            // Taller clusters (vans, trucks, buses up to 2.55 m wide; trees) keep the depth
+            // bound only.
+            if (width > 0.f && root_z_hi_[enclosing] - root_z_lo_[enclosing] <= kCarMaxHeight &&
+                depthBehindFrame(b, enclosing, max_gap) > width) {
+                state = kConflict;
+                continue;
+            }
             // Seen through the gap but deeper behind it than any vehicle is wide: the cluster
             // is beyond the nearer one (a car parked behind a car), not its far side.
             if (run_far_range_[b] > std::max(range_[left], range_[right]) + depth) {

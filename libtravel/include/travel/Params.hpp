@@ -186,16 +186,22 @@ struct AutoReal {
       "joins it: a vehicle's seats and far side (2.5 m = the widest road vehicles); a cluster "   \
       "with a run seen through a gap farther behind it than this never joins (an object "         \
       "beyond, e.g. a car parked behind a car). 0 = off")                                         \
+    X(double, see_through_width, 1.8, "m", 0.0, 100.0,                                            \
+      "Windows: a cluster with a run seen through a gap whose deepest point lies farther than "   \
+      "this behind the gap's frame (measured across it, in xy) never joins the enclosing "        \
+      "cluster: it is beyond that vehicle's far side (a child or a car right behind a car). "     \
+      "0 = off")                                                                                  \
     X(double, set_back_depth, 1.7, "m", 0.0, 100.0,                                               \
       "Set-back tops: a cluster standing on a nearer one (each run of its lowest row has that "   \
       "cluster's points in front in the row below), within its columns and at least half as "     \
       "wide, whose nearest point is at most this behind that cluster's, joins it: a car's cabin " \
       "behind its boot or bonnet, seen end on (1.7 m: passenger-car bonnets reach 1.0-1.6 m, "    \
       "a car parked behind another side on is 1.8 m or more behind it). 0 = off")                 \
-    X(double, seam_max_shift, 2.0, "m", 0.0, 100.0,                                               \
+    X(double, seam_max_shift, 3.0, "m", 0.0, 100.0,                                               \
       "Runs of a ring facing each other across the column where the sweep started (0.1 s "        \
       "apart in time) merge when their facing ends are closer than this: a car moving at up to "  \
-      "20 m/s relative to the sensor shifts 2 m in a 10 Hz sweep. 0 = off")                       \
+      "30 m/s relative to the sensor (oncoming urban traffic, 2 x 54 km/h) shifts 3 m in a "      \
+      "10 Hz sweep. 0 = off")                                                                     \
     X(int, vertical_ring_span, 3, "", 1, 1024,                                                    \
       "T_ring: a run is compared with the runs of this many rings below it")                      \
     X(double, vertical_merge_dist, 0.5, "m", 0.0, 100.0,                                          \

@@ -91,8 +91,15 @@ class RunClustering {
     // after the run [first, last] on its row [row_lo, row_hi), within a few points, -1 if
     // none; the pair in enclosure_left_ / enclosure_right_.
     int enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo, uint32_t row_hi,
-                      float nearer_than);
+                      float nearer_than, int own_root);
     uint32_t enclosure_left_ = 0, enclosure_right_ = 0;
+    // How far the run's deepest point lies behind the frame of the gap it is seen through in
+    // cluster `enclosing` (the line through that cluster's nearest points left and right of the
+    // run within max_lateral), measured in xy along the line's normal.
+    float depthBehindFrame(uint32_t run, int enclosing, float max_lateral) const;
+    // Passenger cars (SUVs, pick-ups) are at most 2.0 m tall; taller vehicles may be 2.55 m wide.
+    static constexpr float kCarMaxHeight = 2.0f;
+    std::vector<float> root_z_lo_, root_z_hi_;  // per root, see linkSeenThrough()
     // Row r's run b has a point of cluster `root` nearer than `nearer_than` in its columns on
     // one of the two rows above or below.
     bool closedAboveOrBelow(int r, int rows, uint32_t b, int root, float nearer_than);
