@@ -121,7 +121,8 @@ void computeRanges(const Point* p, float* out, uint32_t n) {
 }
 
 // c[k] += c[k - 1] for k = 1..n-1 (the same integers as the scalar loop), 4 at a time: the
-// counting sort's offsets over every range-image cell, most of them empty on sparse scans.
+// counting sort's offsets over every range-image cell, most of them empty on sparse scans, and
+// the vertical update's per-column tables.
 void inclusivePrefixSum(uint32_t* c, std::size_t n) {
     std::size_t k = 0;
 #ifdef __SSE2__
@@ -527,24 +528,6 @@ inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, 
 #endif
 }
 
-// values[k] = values[0] + ... + values[k], 4 at a time on SSE2 (a loop of scalar sums is a chain
-// of one add per value).
-inline void prefixSums(uint32_t* values, std::size_t n) {
-    std::size_t k = 0;
-#ifdef __SSE2__
-    __m128i carry = _mm_setzero_si128();  // the sum so far, in every lane
-    for (; k + 4 <= n; k += 4) {
-        __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + k));
-        x = _mm_add_epi32(x, _mm_slli_si128(x, 4));
-        x = _mm_add_epi32(x, _mm_slli_si128(x, 8));
-        x = _mm_add_epi32(x, carry);
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(values + k), x);
-        carry = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 3, 3));
-    }
-#endif
-    for (uint32_t sum = k > 0 ? values[k - 1] : 0; k < n; ++k) sum += values[k], values[k] = sum;
-}
-
 }  // namespace
 
 void RunClustering::vertical(const Params& params) {
@@ -595,7 +578,7 @@ void RunClustering::vertical(const Params& params) {
         for (uint32_t run = row_runs_begin_[q]; run < row_runs_begin_[q + 1]; ++run)
             ++first[col_begin[run] + 1];
         first[0] = row_runs_begin_[q];
-        prefixSums(first, table_size);
+        inclusivePrefixSum(first, table_size);
     };
     float ring_step2 = 0.f;  // (one ring's spacing of the pair of rows being swept [rad])^2
     auto merge = [&](uint32_t a, uint32_t b) {
