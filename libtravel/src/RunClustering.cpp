@@ -778,15 +778,7 @@ void RunClustering::linkSeenThrough(const Params& params) {
     closed_.assign(static_cast<std::size_t>(num_runs), 0);
     run_root_.resize(static_cast<std::size_t>(num_runs));
     for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
-    if (width > 0.f) {  // each cluster's height (z extent)
-        root_z_lo_.assign(static_cast<std::size_t>(num_runs), std::numeric_limits<float>::max());
-        root_z_hi_.assign(static_cast<std::size_t>(num_runs), std::numeric_limits<float>::lowest());
-        for (int run = 0; run < num_runs; ++run) {
-            const int root = run_root_[run];
-            root_z_lo_[root] = std::min(root_z_lo_[root], run_box_[run].lo[2]);
-            root_z_hi_[root] = std::max(root_z_hi_[root], run_box_[run].hi[2]);
-        }
-    }
+    if (width > 0.f) unionRootBoxes();  // each cluster's height
     bool any = false;
     for (int r = 0; r < rows; ++r) {
         const uint32_t row_lo = row_begin_[r], row_hi = row_begin_[r + 1];
@@ -804,7 +796,8 @@ void RunClustering::linkSeenThrough(const Params& params) {
             // across the face): beyond its far side (a child or a car right behind a car).
             // Taller clusters (vans, trucks, buses up to 2.55 m wide; trees) keep the depth
             // bound only.
-            if (width > 0.f && root_z_hi_[enclosing] - root_z_lo_[enclosing] <= kCarMaxHeight &&
+            if (width > 0.f &&
+                root_box3_[enclosing].hi[2] - root_box3_[enclosing].lo[2] <= kCarMaxHeight &&
                 depthBehindFrame(b, enclosing, max_gap) > width) {
                 state = kConflict;
                 continue;
@@ -935,6 +928,17 @@ void RunClustering::attachFeet(const AlignedCloud& cloud, const RangeImage& imag
     }
 }
 
+void RunClustering::unionRootBoxes() {
+    const std::size_t num_runs = run_first_.size();
+    const float inf = std::numeric_limits<float>::infinity();
+    root_box3_.assign(num_runs,
+                      RunBox{Eigen::Array4f::Constant(inf), Eigen::Array4f::Constant(-inf)});
+    for (std::size_t run = 0; run < num_runs; ++run) {
+        RunBox& box = root_box3_[run_root_[run]];
+        box.lo = box.lo.min(run_box_[run].lo), box.hi = box.hi.max(run_box_[run].hi);
+    }
+}
+
 void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int16_t>& bottom_row,
                                 std::vector<float>& bottom_range) {
     bottom_row.assign(static_cast<std::size_t>(cols), -1);
@@ -942,16 +946,10 @@ void RunClustering::wallBottoms(const Params& params, int cols, std::vector<int1
     const float min_length = static_cast<float>(params.vertical_face_min_length);
     const int num_runs = static_cast<int>(run_first_.size());
     if (num_runs == 0 || !(min_length > 0.f)) return;
-    // Each cluster's box (the union of its runs' boxes), then whether it is wall-like.
+    // Each cluster's box, then whether it is wall-like.
     run_root_.resize(static_cast<std::size_t>(num_runs));
-    const float inf = std::numeric_limits<float>::infinity();
-    root_box3_.assign(static_cast<std::size_t>(num_runs),
-                      RunBox{Eigen::Array4f::Constant(inf), Eigen::Array4f::Constant(-inf)});
-    for (int run = 0; run < num_runs; ++run) {
-        const int root = run_root_[run] = find(run);
-        root_box3_[root].lo = root_box3_[root].lo.min(run_box_[run].lo);
-        root_box3_[root].hi = root_box3_[root].hi.max(run_box_[run].hi);
-    }
+    for (int run = 0; run < num_runs; ++run) run_root_[run] = find(run);
+    unionRootBoxes();
     wall_root_.assign(static_cast<std::size_t>(num_runs), 0);
     for (int run = 0; run < num_runs; ++run) {
         if (run_root_[run] != run) continue;

@@ -99,7 +99,6 @@ class RunClustering {
     float depthBehindFrame(uint32_t run, int enclosing, float max_lateral) const;
     // Passenger cars (SUVs, pick-ups) are at most 2.0 m tall; taller vehicles may be 2.55 m wide.
     static constexpr float kCarMaxHeight = 2.0f;
-    std::vector<float> root_z_lo_, root_z_hi_;  // per root, see linkSeenThrough()
     // Row r's run b has a point of cluster `root` nearer than `nearer_than` in its columns on
     // one of the two rows above or below.
     bool closedAboveOrBelow(int r, int rows, uint32_t b, int root, float nearer_than);
@@ -160,7 +159,10 @@ class RunClustering {
     // at or after each column.
     std::vector<float> box_arrays_;
     std::vector<uint32_t> first_run_;
-    std::vector<RunBox> root_box3_;   // per root: the union of its runs' boxes, wallBottoms()
+    // Per root: the union of its runs' boxes (unionRootBoxes(), from run_root_): the cluster's
+    // height in linkSeenThrough(), its length in wallBottoms().
+    std::vector<RunBox> root_box3_;
+    void unionRootBoxes();
     std::vector<uint8_t> wall_root_;  // per root: wall-like, see wallBottoms()
     // Per run of the upper row, while a pair of rows is compared in vertical(): the squared
     // distance below which its points merge with the lower row's.
