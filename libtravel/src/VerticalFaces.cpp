@@ -71,8 +71,7 @@ void VerticalFaces::unlabelFaceFeet(const AlignedCloud& cloud, const RangeImage&
         if (row[i] < 0) continue;
         Cell& cell = cells[static_cast<std::size_t>(row[i]) * cols + col[i]];
         const float r2 = x[i] * x[i] + y[i] * y[i];
-        if (cell.point < 0 || r2 < cell.r2)
-            cell.point = static_cast<int32_t>(i), cell.z = z[i], cell.r2 = r2;
+        cell.keepNearest(static_cast<int32_t>(i), z[i], r2);
     }
     // The labels of eq. 5 are read, not changed, in this pass: a foot's face is a non-ground
     // point of eq. 5, never another foot.
@@ -171,8 +170,7 @@ void VerticalFaces::unlabelWallFeet(const AlignedCloud& cloud, const RangeImage&
         const int r = row[i] - w.lo;
         Cell& cell = cells[w.begin + r];
         const float r2 = x[i] * x[i] + y[i] * y[i];
-        if (cell.point < 0 || r2 < cell.r2)
-            cell.point = static_cast<int32_t>(i), cell.z = z[i], cell.r2 = r2;
+        cell.keepNearest(static_cast<int32_t>(i), z[i], r2);
         if (r < w.feet_below && r2 >= w.min_r2 && labels[i] == PointClass::Ground)
             candidates_.push_back(i);
     }

@@ -79,6 +79,11 @@ class VerticalFaces {
         float z;        // height of the cell's point, NaN if empty
         float r2;       // its squared xy range
         int32_t point;  // the nearest (xy) point of the cell, or -1
+        // A cell keeps its nearest point in xy: the choice depends neither on the order of the
+        // points nor on invalid points between them.
+        void keepNearest(int32_t i, float z_i, float r2_i) {
+            if (point < 0 || r2_i < r2) point = i, z = z_i, r2 = r2_i;
+        }
     };
     static constexpr Cell kEmptyCell{std::numeric_limits<float>::quiet_NaN(), 0.f, -1};
     // The climb from a ground point at height foot_z, xy range foot_range, up the cells
