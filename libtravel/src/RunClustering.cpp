@@ -72,6 +72,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -86,6 +87,7 @@
 #include <array>
 #endif
 
+#include "CpuDispatch.hpp"
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
 #include "travel/TriGridField.hpp"
@@ -1013,6 +1015,8 @@ void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& clust
     }
 }
 
+// With AVX2 (CpuDispatch.hpp) a point's three coordinates are one vector in both passes.
+TRAVEL_AVX2_CLONES
 void RunClustering::summarize(const TriGridField& field, const TerrainModel& terrain,
                               std::vector<ClusterSummary>& clusters) {
     const uint32_t num = static_cast<uint32_t>(root_order_.size());
@@ -1027,12 +1031,27 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         clusters[k].num_points = 0;
     }
     // Pass 1 over the clustered points (sorted order, contiguous): counts, boxes, moments.
-    // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
-    // locals (registers) and add it to the cluster once, instead of chaining every += through
-    // the cluster's memory.
+    // Consecutive points mostly share a cluster: accumulate each stretch of one id in registers
+    // and add it to the cluster once, instead of chaining every += through the cluster's
+    // memory. A point is one vector (x, y, z, 0): its box as lane-wise selects (the same as
+    // std::min / std::max one coordinate at a time), its sums and products as double lanes
+    // (each lane the same adds in the same order as one scalar per sum: the same bits).
+    typedef float Float4 __attribute__((vector_size(16)));
+    typedef int32_t Int4 __attribute__((vector_size(16)));
+    typedef double Double4 __attribute__((vector_size(32)));
+    typedef int64_t Long4 __attribute__((vector_size(32)));
+    const Int4 xyz_only = {-1, -1, -1, 0};  // the column's lane -> +0
     const SortedPoint* pts = pts_.data();
     const uint32_t* ids = point_id_.data();
     const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
+    const auto load = [&](uint32_t k) {
+        Int4 bits;
+        std::memcpy(&bits, &pts[k], sizeof bits);
+        bits &= xyz_only;
+        Float4 p;
+        std::memcpy(&p, &bits, sizeof p);
+        return p;
+    };
     for (uint32_t k = 0; k < num_points;) {
         const uint32_t id = ids[k];
         if (id == 0) {
@@ -1040,22 +1059,23 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             continue;
         }
         const uint32_t begin = k;
-        float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
-        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
+        Float4 lo = Float4{} + inf, hi = Float4{} - inf;
+        Double4 sum = {0, 0, 0, 0}, products = {0, 0, 0, 0};  // x, y, z; xx, xy, yy
         for (; k < num_points && ids[k] == id; ++k) {
-            const float x = pts[k].x, y = pts[k].y, z = pts[k].z;
-            lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
-            hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
-            sx += x, sy += y, sz += z;
-            sxx += double(x) * x, sxy += double(x) * y, syy += double(y) * y;
+            const Float4 p = load(k);
+            lo = p < lo ? p : lo, hi = hi < p ? p : hi;
+            const Double4 v = __builtin_convertvector(p, Double4);
+            sum += v;
+            products +=
+                __builtin_shuffle(v, Long4{0, 0, 1, 3}) * __builtin_shuffle(v, Long4{0, 1, 1, 3});
         }
         ClusterSummary& c = clusters[id - 1];
-        Sums& sum = sums_[id - 1];
+        Sums& s = sums_[id - 1];
         c.num_points += k - begin;
-        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo_x, lo_y, lo_z));
-        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi_x, hi_y, hi_z));
-        sum.sx += sx, sum.sy += sy, sum.sz += sz;
-        sum.sxx += sxx, sum.sxy += sxy, sum.syy += syy;
+        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo[0], lo[1], lo[2]));
+        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi[0], hi[1], hi[2]));
+        s.sx += sum[0], s.sy += sum[1], s.sz += sum[2];
+        s.sxx += products[0], s.sxy += products[1], s.syy += products[2];
     }
     // Oriented box axes from the 2-D covariance of xy.
     for (uint32_t k = 0; k < num; ++k) {
@@ -1070,7 +1090,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         s.cos_yaw = std::cos(c.obb_yaw), s.sin_yaw = std::sin(c.obb_yaw);
         s.extent = Eigen::Vector4f(inf, -inf, inf, -inf);  // umin, umax, vmin, vmax
     }
-    // Pass 2: extents along the box axes (same stretch accumulation).
+    // Pass 2: extents along the box axes (same stretch accumulation), (u, v) as two lanes:
+    // u = cos x + sin y, v = -sin x + cos y, each product and sum as in scalar code.
     for (uint32_t k = 0; k < num_points;) {
         const uint32_t id = ids[k];
         if (id == 0) {
@@ -1078,17 +1099,18 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             continue;
         }
         Sums& sum = sums_[id - 1];
-        const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
-        float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
+        const Float4 along_x = {sum.cos_yaw, -sum.sin_yaw, 0.f, 0.f};
+        const Float4 along_y = {sum.sin_yaw, sum.cos_yaw, 0.f, 0.f};
+        Float4 lo = Float4{} + inf, hi = Float4{} - inf;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float u = cos_yaw * pts[k].x + sin_yaw * pts[k].y;
-            const float v = -sin_yaw * pts[k].x + cos_yaw * pts[k].y;
-            u_min = std::min(u_min, u), u_max = std::max(u_max, u);
-            v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+            const Float4 p = load(k);
+            const Float4 uv = along_x * __builtin_shuffle(p, Int4{0, 0, 3, 3}) +
+                              along_y * __builtin_shuffle(p, Int4{1, 1, 3, 3});
+            lo = uv < lo ? uv : lo, hi = hi < uv ? uv : hi;
         }
         Eigen::Vector4f& e = sum.extent;
-        e[0] = std::min(e[0], u_min), e[1] = std::max(e[1], u_max);
-        e[2] = std::min(e[2], v_min), e[3] = std::max(e[3], v_max);
+        e[0] = std::min(e[0], lo[0]), e[1] = std::max(e[1], hi[0]);
+        e[2] = std::min(e[2], lo[1]), e[3] = std::max(e[3], hi[1]);
     }
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];
