@@ -1039,7 +1039,6 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
     typedef float Float4 __attribute__((vector_size(16)));
     typedef int32_t Int4 __attribute__((vector_size(16)));
     typedef double Double4 __attribute__((vector_size(32)));
-    typedef int64_t Long4 __attribute__((vector_size(32)));
     const Int4 xyz_only = {-1, -1, -1, 0};  // the column's lane -> +0
     const SortedPoint* pts = pts_.data();
     const uint32_t* ids = point_id_.data();
@@ -1066,8 +1065,7 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             lo = p < lo ? p : lo, hi = hi < p ? p : hi;
             const Double4 v = __builtin_convertvector(p, Double4);
             sum += v;
-            products +=
-                __builtin_shuffle(v, Long4{0, 0, 1, 3}) * __builtin_shuffle(v, Long4{0, 1, 1, 3});
+            products += Double4{v[0], v[0], v[1], 0} * Double4{v[0], v[1], v[1], 0};
         }
         ClusterSummary& c = clusters[id - 1];
         Sums& s = sums_[id - 1];
@@ -1104,8 +1102,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         Float4 lo = Float4{} + inf, hi = Float4{} - inf;
         for (; k < num_points && ids[k] == id; ++k) {
             const Float4 p = load(k);
-            const Float4 uv = along_x * __builtin_shuffle(p, Int4{0, 0, 3, 3}) +
-                              along_y * __builtin_shuffle(p, Int4{1, 1, 3, 3});
+            const Float4 uv =
+                along_x * Float4{p[0], p[0], 0.f, 0.f} + along_y * Float4{p[1], p[1], 0.f, 0.f};
             lo = uv < lo ? uv : lo, hi = hi < uv ? uv : hi;
         }
         Eigen::Vector4f& e = sum.extent;
