@@ -212,6 +212,55 @@ uint32_t compact(const int16_t* row, const int32_t* col, const PointClass* label
     return compactScalar(row, col, labels, 0, n, cols, 0, input, key);
 }
 
+// A run's bounding box while the horizontal sweep grows it: the same floats as per-axis
+// std::min / std::max of x, y, z; stored into a RunBox with its fourth lane 0.
+struct GrowBox {
+#ifdef __SSE2__
+    __m128 lo = _mm_setzero_ps(), hi = _mm_setzero_ps();  // 4th lane: column bits, ignored
+    template <class Point>
+    void start(const Point& p) {
+        lo = hi = _mm_loadu_ps(&p.x);
+    }
+    template <class Point>
+    void add(const Point& p) {
+        // min(p, lo) is (p < lo ? p : lo), as std::min(lo, p); max likewise.
+        const __m128 v = _mm_loadu_ps(&p.x);
+        lo = _mm_min_ps(v, lo), hi = _mm_max_ps(v, hi);
+    }
+    template <class Box>
+    void load(const Box& box) {
+        lo = _mm_loadu_ps(box.lo.data()), hi = _mm_loadu_ps(box.hi.data());
+    }
+    template <class Box>
+    void store(Box& box) const {
+        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+        _mm_storeu_ps(box.lo.data(), _mm_and_ps(lo, xyz));
+        _mm_storeu_ps(box.hi.data(), _mm_and_ps(hi, xyz));
+    }
+#else
+    float lo[3] = {}, hi[3] = {};
+    template <class Point>
+    void start(const Point& p) {
+        lo[0] = hi[0] = p.x, lo[1] = hi[1] = p.y, lo[2] = hi[2] = p.z;
+    }
+    template <class Point>
+    void add(const Point& p) {
+        const float v[3] = {p.x, p.y, p.z};
+        for (int axis = 0; axis < 3; ++axis)
+            lo[axis] = std::min(lo[axis], v[axis]), hi[axis] = std::max(hi[axis], v[axis]);
+    }
+    template <class Box>
+    void load(const Box& box) {
+        for (int axis = 0; axis < 3; ++axis) lo[axis] = box.lo[axis], hi[axis] = box.hi[axis];
+    }
+    template <class Box>
+    void store(Box& box) const {
+        for (int axis = 0; axis < 3; ++axis) box.lo[axis] = lo[axis], box.hi[axis] = hi[axis];
+        box.lo[3] = box.hi[3] = 0.f;
+    }
+#endif
+};
+
 }  // namespace
 
 inline int RunClustering::find(int run) {
@@ -299,6 +348,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
     const SortedPoint* pts = pts_.data();
     const float* ranges = range_.data();
+    const uint32_t* sorted = sorted_.data();
+    uint32_t* next_in_run = next_in_run_.data();
+    int32_t* point_run = point_run_.data();
     open_runs_.resize(max_open);
     int32_t* const open_runs = open_runs_.data();
     for (int r = 0; r < rows; ++r) {
@@ -311,34 +363,30 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         };
         // The most recent open run, whose points mostly follow one another: its box, ranges,
         // size and first input point are kept here (registers) and written back when another
-        // run takes a point (one store per point instead of a dozen read-modify-writes).
+        // run takes a point (one store per point instead of a dozen read-modify-writes). The
+        // box is two 4-lane registers (x, y, z and the column's bits, ignored): fewer
+        // registers than six floats, so the sweep's state does not spill to the stack.
         int current = -1;
-        float lo_x = 0, lo_y = 0, lo_z = 0, hi_x = 0, hi_y = 0, hi_z = 0, far = 0, near = 0;
+        GrowBox box;
+        float far = 0, near = 0;
         uint32_t size = 0, first_input = 0;
         auto store = [&] {
-            RunBox& box = run_box_[current];
-            box.lo[0] = lo_x, box.lo[1] = lo_y, box.lo[2] = lo_z, box.lo[3] = 0.f;
-            box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
+            box.store(run_box_[current]);
             run_far_range_[current] = far, run_near_range_[current] = near;
             run_size_[current] = size, run_first_input_[current] = first_input;
             run_col_end_[current] = pts[run_last_[current]].col;
         };
         auto load = [&](int run) {
-            const RunBox& box = run_box_[run];
-            lo_x = box.lo[0], lo_y = box.lo[1], lo_z = box.lo[2];
-            hi_x = box.hi[0], hi_y = box.hi[1], hi_z = box.hi[2];
+            box.load(run_box_[run]);
             far = run_far_range_[run], near = run_near_range_[run];
             size = run_size_[run], first_input = run_first_input_[run];
             current = run;
         };
         auto extend = [&](uint32_t k, float range) {  // current takes sorted point k
-            const SortedPoint& p = pts[k];
-            lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y);
-            lo_z = std::min(lo_z, p.z), hi_x = std::max(hi_x, p.x);
-            hi_y = std::max(hi_y, p.y), hi_z = std::max(hi_z, p.z);
+            box.add(pts[k]);
             far = std::max(far, range), near = std::min(near, range);
             ++size;
-            first_input = std::min(first_input, sorted_[k]);
+            first_input = std::min(first_input, sorted[k]);
         };
         // Each row's elevation: the range-weighted mean sine of its points' elevations.
         float sum_z = 0.f, sum_range = 0.f;
@@ -351,8 +399,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             // consecutive points, without looking up the open runs. Its last point and box
             // stay in registers.
             if (current >= 0 && dist2(k, k - 1) < merge2) {
-                next_in_run_[k - 1] = k;
-                point_run_[k] = current;
+                next_in_run[k - 1] = k;
+                point_run[k] = current;
                 extend(k, range);
                 continue;
             }
@@ -385,9 +433,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 }
             }
             if (joined >= 0) {
-                next_in_run_[run_last_[joined]] = k;
+                next_in_run[run_last_[joined]] = k;
                 run_last_[joined] = k;
-                point_run_[k] = joined;
+                point_run[k] = joined;
                 if (joined != current) store(), load(joined);
                 extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
@@ -404,9 +452,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_far_range_.emplace_back(), run_near_range_.emplace_back();
             run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
             current = run;
-            lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
-            far = near = range, size = 1, first_input = sorted_[k];
-            point_run_[k] = run;
+            box.start(pts[k]);
+            far = near = range, size = 1, first_input = sorted[k];
+            point_run[k] = run;
             if (open == max_open)
                 pushOpen(0, run);  // the oldest closes
             else
