@@ -293,6 +293,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(merge_dist2_, runs + 4), prefault(near_, runs);
+    prefault(blocks_, 4 * 4096);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
     prefault(run_box_, runs), prefault(box_arrays_, 6 * (runs + 4));
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
@@ -576,6 +577,66 @@ inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, 
 #endif
 }
 
+// For each mask of kBoxLanes bits: the lanes set, in order (then 0), and their number.
+struct LaneList {
+    alignas(16) uint32_t lane[1u << kBoxLanes][kBoxLanes];
+    uint8_t count[1u << kBoxLanes];
+};
+constexpr LaneList kLaneList = [] {
+    LaneList list{};
+    for (unsigned mask = 0; mask < (1u << kBoxLanes); ++mask)
+        for (uint32_t l = 0; l < kBoxLanes; ++l)
+            if (mask >> l & 1u) list.lane[mask][list.count[mask]++] = l;
+    return list;
+}();
+
+// Writes the pairs {fixed, first + l} (fixed_first) or {first + l, fixed} of the lanes l set in
+// mask, in lane order, at out[0..]; kBoxLanes pairs are written whatever their number. Returns
+// their number.
+template <class Pair>
+inline uint32_t listPairs(Pair* out, uint32_t fixed, uint32_t first, unsigned mask,
+                          bool fixed_first) {
+    static_assert(sizeof(Pair) == 2 * sizeof(uint32_t));
+#ifdef __SSE2__
+    const __m128i lanes =
+        _mm_add_epi32(_mm_set1_epi32(static_cast<int>(first)),
+                      _mm_load_si128(reinterpret_cast<const __m128i*>(kLaneList.lane[mask])));
+    const __m128i same = _mm_set1_epi32(static_cast<int>(fixed));
+    const __m128i lo =
+        fixed_first ? _mm_unpacklo_epi32(same, lanes) : _mm_unpacklo_epi32(lanes, same);
+    const __m128i hi =
+        fixed_first ? _mm_unpackhi_epi32(same, lanes) : _mm_unpackhi_epi32(lanes, same);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), lo);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 2), hi);
+#else
+    for (uint32_t j = 0; j < kBoxLanes; ++j) {
+        const uint32_t other = first + kLaneList.lane[mask][j];
+        out[j] = fixed_first ? Pair{fixed, other} : Pair{other, fixed};
+    }
+#endif
+    return kLaneList.count[mask];
+}
+
+// Bit i set when range[begin + i] < nearer_than, i < n <= 12 (the same compares as one at a
+// time).
+inline unsigned nearerBits(const std::vector<float>& range, uint32_t begin, uint32_t n,
+                           float nearer_than) {
+    unsigned bits = 0;
+#ifdef __SSE2__
+    if (begin + 12 <= range.size()) {
+        const float* r = range.data() + begin;
+        const __m128 limit = _mm_set1_ps(nearer_than);
+        for (int block = 0; block < 3; ++block)
+            bits |= static_cast<unsigned>(
+                        _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(r + 4 * block), limit)))
+                    << (4 * block);
+        return bits & ((1u << n) - 1);
+    }
+#endif
+    for (uint32_t i = 0; i < n; ++i) bits |= unsigned(range[begin + i] < nearer_than) << i;
+    return bits;
+}
+
 }  // namespace
 
 void RunClustering::vertical(const Params& params) {
@@ -637,10 +698,26 @@ void RunClustering::vertical(const Params& params) {
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
     // The pairs whose boxes are near are listed without a branch (one in five is, at random),
-    // then merged, once per pair of rows.
+    // then merged, once per pair of rows. Each run's candidates are first cut into blocks of
+    // kBoxLanes, kListedBlocks of them written whatever their number (most runs have fewer; the
+    // count advances by the number needed), so that the box test is one loop over the blocks
+    // of all runs: a loop per run would end on a mispredicted branch per run.
+    constexpr uint32_t kListedBlocks = 4;
+    uint32_t num_blocks = 0;
+    auto blockRoom = [&](std::size_t more) {
+        if (blocks_.size() < num_blocks + more) blocks_.resize(2 * (num_blocks + more));
+    };
+    auto listBlocks = [&](uint32_t fixed, uint32_t first, uint32_t last, std::size_t runs_left) {
+        const uint32_t count = (last - first + kBoxLanes - 1) / kBoxLanes;
+        if (count > kListedBlocks) blockRoom(count + kListedBlocks * runs_left);  // rare
+        CandidateBlock* out = blocks_.data() + num_blocks;
+        for (uint32_t j = 0; j < kListedBlocks; ++j) out[j] = {fixed, first + j * kBoxLanes, last};
+        for (uint32_t j = kListedBlocks; j < count; ++j)
+            out[j] = {fixed, first + j * kBoxLanes, last};
+        num_blocks += count;
+    };
     uint32_t num_near = 0;
     auto room = [&](uint32_t more) {
-        more += kBoxLanes;
         if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
         return near_.data();
     };
@@ -667,27 +744,32 @@ void RunClustering::vertical(const Params& params) {
             }
             num_near = 0;
             // b starts within [lo, hi].
+            num_blocks = 0;
+            blockRoom(kListedBlocks * (a_end - a_begin + 1));
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
-                const uint32_t first = below[std::max(lo, 0)], last = below[std::min(hi + 1, cols)];
-                NearPair* near = room(last - first);
-                for (uint32_t b = first; b < last; b += kBoxLanes) {
-                    const unsigned lanes = nearLanes(arrays, a, b, last, &merge_dist2_[a], true);
-                    for (uint32_t l = 0; l < kBoxLanes; ++l)
-                        near[num_near] = {a, b + l}, num_near += lanes >> l & 1u;
-                }
+                listBlocks(a, below[std::max(lo, 0)], below[std::min(hi + 1, cols)], a_end - a);
+            }
+            NearPair* near = room(kBoxLanes * (num_blocks + 1));
+            for (uint32_t i = 0; i < num_blocks; ++i) {
+                const CandidateBlock block = blocks_[i];
+                const uint32_t a = block.fixed, b = block.first;
+                const unsigned lanes = nearLanes(arrays, a, b, block.end, &merge_dist2_[a], true);
+                num_near += listPairs(near + num_near, a, b, lanes, true);
             }
             // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b], i.e.
             // col_begin[b] + ext < col_begin[a] <= col_end[b] + ext.
-            for (uint32_t b = b_begin; b < b_end; ++b) {
-                const uint32_t first = above[std::min(col_begin[b] + ext + 1, cols)],
-                               last = above[std::min(col_end[b] + ext + 1, cols)];
-                NearPair* near = room(last - first);
-                for (uint32_t a = first; a < last; a += kBoxLanes) {
-                    const unsigned lanes = nearLanes(arrays, b, a, last, &merge_dist2_[a], false);
-                    for (uint32_t l = 0; l < kBoxLanes; ++l)
-                        near[num_near] = {a + l, b}, num_near += lanes >> l & 1u;
-                }
+            num_blocks = 0;
+            blockRoom(kListedBlocks * (b_end - b_begin + 1));
+            for (uint32_t b = b_begin; b < b_end; ++b)
+                listBlocks(b, above[std::min(col_begin[b] + ext + 1, cols)],
+                           above[std::min(col_end[b] + ext + 1, cols)], b_end - b);
+            near = room(kBoxLanes * (num_blocks + 1));
+            for (uint32_t i = 0; i < num_blocks; ++i) {
+                const CandidateBlock block = blocks_[i];
+                const uint32_t b = block.fixed, a = block.first;
+                const unsigned lanes = nearLanes(arrays, b, a, block.end, &merge_dist2_[a], false);
+                num_near += listPairs(near + num_near, b, a, lanes, false);
             }
             for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
@@ -704,19 +786,21 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     constexpr uint32_t kEnclosureWalk = 10;
     uint32_t before[kEnclosureWalk];
     int32_t before_root[kEnclosureWalk];
-    uint32_t num_before = 0;
-    // Listed without a branch (in front or not is as likely); their roots looked up once.
-    const uint32_t walk_end = first - std::min(first - row_lo, kEnclosureWalk);
-    for (uint32_t k = first; k-- > walk_end;)
-        before[num_before] = k, num_before += range_[k] < nearer_than;
-    if (num_before == 0) return -1;
-    // The same after it, before any root is looked up: none on one side needs no root.
+    // Which points are in front, as bits (k = begin + bit), before any root is looked up: none
+    // on one side needs no root (one branch for both sides).
+    const uint32_t num_walk_before = std::min(first - row_lo, kEnclosureWalk);
+    const unsigned in_front_before =
+        nearerBits(range_, first - num_walk_before, num_walk_before, nearer_than);
+    const unsigned in_front_after =
+        nearerBits(range_, last + 1, std::min(row_hi - (last + 1), kEnclosureWalk), nearer_than);
+    if ((in_front_before == 0) | (in_front_after == 0)) return -1;
+    uint32_t num_before = 0;  // nearest to the run first
+    for (unsigned bits = in_front_before; bits != 0; bits &= ~(1u << (31 - __builtin_clz(bits))))
+        before[num_before++] = first - num_walk_before + (31 - __builtin_clz(bits));
     uint32_t after[kEnclosureWalk];
     uint32_t num_after = 0;
-    const uint32_t after_end = last + 1 + std::min(row_hi - (last + 1), kEnclosureWalk);
-    for (uint32_t k = last + 1; k < after_end; ++k)
-        after[num_after] = k, num_after += range_[k] < nearer_than;
-    if (num_after == 0) return -1;
+    for (unsigned bits = in_front_after; bits != 0; bits &= bits - 1)
+        after[num_after++] = last + 1 + __builtin_ctz(bits);
     for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
     for (uint32_t j = 0; j < num_after; ++j) {
         const uint32_t k = after[j];

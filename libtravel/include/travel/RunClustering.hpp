@@ -170,7 +170,13 @@ class RunClustering {
     struct NearPair {
         uint32_t a, b;  // runs of the upper and the lower row whose boxes are near
     };
-    std::vector<NearPair> near_;      // see vertical()
+    std::vector<NearPair> near_;  // see vertical()
+    // vertical(): blocks of up to 4 candidate runs (the box test's lanes) of one run `fixed`:
+    // candidates first .. min(first + 4, end) - 1.
+    struct CandidateBlock {
+        uint32_t fixed, first, end;
+    };
+    std::vector<CandidateBlock> blocks_;
     std::vector<int32_t> point_run_;  // run of each sorted point
     // The points of a run, in column order: from run_first_, each point's successor, up to
     // kEndOfRun.
