@@ -307,6 +307,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
 void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& image,
                                const std::vector<PointClass>& labels, const Params& params) {
     const int rows = image.rows(), cols = image.cols();
+    cols_ = cols;
     const std::vector<int16_t>& row = image.row();
     const std::vector<int32_t>& col = image.col();
     const std::size_t n = labels.size();
@@ -864,10 +865,7 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
         const int rr = r + dr;
         if (dr == 0 || rr < 0 || rr >= rows) continue;
         const SortedPoint* pts = pts_.data();
-        uint32_t k = static_cast<uint32_t>(
-            std::lower_bound(pts + row_begin_[rr], pts + row_begin_[rr + 1], run_col_begin_[b],
-                             [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
-            pts);
+        uint32_t k = firstPointFrom(rr, run_col_begin_[b]);
         for (; k < row_begin_[rr + 1] && pts[k].col <= run_col_end_[b]; ++k)
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
@@ -962,16 +960,21 @@ void RunClustering::linkSeenThrough(const Params& params) {
     }
 }
 
+uint32_t RunClustering::firstPointFrom(int row, int col) const {
+    // After the counting sort's scatter in horizontal(), key_count_[key] is the end of cell
+    // `key`'s slots, so key_count_[key - 1] is its start: the first point of key or after.
+    const std::size_t key =
+        static_cast<std::size_t>(row) * cols_ + static_cast<std::size_t>(std::clamp(col, 0, cols_));
+    return key == 0 ? 0u : key_count_[key - 1];
+}
+
 int RunClustering::rootInFrontBelow(uint32_t run, float t_horz, float depth) const {
     // The row below the run, swept with it in column order: in each of the run's columns (+-1,
     // the rings' azimuths differ) its nearest point there.
     const int r = run_row_[run];
     const uint32_t below_hi = row_begin_[r];
     const SortedPoint* pts = pts_.data();
-    uint32_t j = static_cast<uint32_t>(
-        std::lower_bound(pts + row_begin_[r - 1], pts + below_hi, run_col_begin_[run] - 1,
-                         [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
-        pts);
+    uint32_t j = firstPointFrom(r - 1, run_col_begin_[run] - 1);
     int found = kNoRoot;
     float least_depth = std::numeric_limits<float>::infinity();
     for (uint32_t k = run_first_[run]; k != kEndOfRun; k = next_in_run_[k]) {

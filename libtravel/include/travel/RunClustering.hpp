@@ -136,6 +136,10 @@ class RunClustering {
     std::vector<SortedPoint> pts_;
     std::vector<uint32_t> row_begin_;
     std::vector<uint32_t> key_count_;
+    int cols_ = 0;  // of the range image of the last horizontal()
+    // The first sorted point of `row` in column `col` or after, the row's end if none: one
+    // lookup in the counting sort's cell offsets (no search).
+    uint32_t firstPointFrom(int row, int col) const;
     std::vector<uint32_t> input_, key_;  // the points to sort and their keys, in input order
     std::vector<float> range_;           // of each sorted point
 
