@@ -50,7 +50,9 @@ void TriGridField::configure(const Params& params) {
 }
 
 void TriGridField::reserve(std::size_t points) {
-    detail::prefault(rank_, points);  // (point_node_: only for clouds without nodes)
+    detail::prefault(rank_, points);
+    detail::prefault(occupied_, static_cast<std::size_t>(
+                                    numNodes()));  // (point_node_: only for clouds without nodes)
     // One spare slot for the dropped points (embed's pass 2).
     detail::prefault(sx_, points + 1), detail::prefault(sy_, points + 1);
     detail::prefault(sz_, points + 1), detail::prefault(order_, points + 1);
@@ -115,10 +117,19 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     }
     start[outside] = sum;
     const uint32_t total = start[outside];
+    // The nodes with points, in ascending order, listed without a branch (83 % of KITTI's nodes
+    // are empty: the later stages then read no empty node's cache line).
+    occupied_.resize(num_nodes);
+    uint32_t* occupied = occupied_.data();
+    uint32_t num_occupied = 0;
     for (int k = 0; k < num_nodes; ++k) {
+        const uint32_t count = start[k + 1] - start[k];
         model.nodes[k].begin = start[k];
-        model.nodes[k].count = start[k + 1] - start[k];
+        model.nodes[k].count = count;
+        occupied[num_occupied] = static_cast<uint32_t>(k);
+        num_occupied += count != 0 ? 1 : 0;
     }
+    occupied_.resize(num_occupied);
     // Pass 2: every dropped point goes to the one spare slot after the embedded ones. The
     // scatter writes each node's slots a run at a time, one ring after the other: the line a
     // node's next run starts is often not in the cache, and a store that misses holds up the

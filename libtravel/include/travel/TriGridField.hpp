@@ -64,6 +64,8 @@ class TriGridField {
     const std::vector<float>& sy() const { return sy_; }
     const std::vector<float>& sz() const { return sz_; }
     const std::vector<uint32_t>& order() const { return order_; }
+    /// The nodes that embed() gave points (count > 0), ascending.
+    const std::vector<uint32_t>& occupiedNodes() const { return occupied_; }
 
   private:
     TriGridGeometry geometry_;
@@ -75,6 +77,7 @@ class TriGridField {
     std::vector<uint32_t> node_start_;
     std::vector<float> sx_, sy_, sz_;
     std::vector<uint32_t> order_;
+    std::vector<uint32_t> occupied_;
 };
 
 }  // namespace travel
