@@ -192,7 +192,8 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     const Eigen::Matrix3f to_vehicle = R_mount.cast<float>();
     const bool rotate = !R.isIdentity(0.f);
     if (!deskew && (self_box.empty() || !levelled)) {
-        const NodeLocator locator(grid ? *grid : TriGridGeometry{});
+        // Without a grid the loop finds no nodes; a one-cell stand-in keeps 1 / resolution finite.
+        const NodeLocator locator(grid ? *grid : TriGridGeometry{1.f, 1, 0.f});
         out.num_valid = alignDispatch(rotate, !self_box.empty(), grid != nullptr, cloud, R, min_r2,
                                       max_r2, self_box, locator, out);
         return;
