@@ -58,6 +58,7 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     const std::size_t points = expectedPoints();
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
+    detail::prefault(aligned_.node, points);
     if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
     const std::size_t stride = mountStride(configured_);
     mount_estimator_.reserve((points + stride - 1) / stride);
@@ -151,7 +152,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     result.mount.message.clear();
     updateMount(cloud, input, result.mount);
     result.sensor_height = params_.sensor_height;
-    preprocess(cloud, params_, input, aligned_);
+    preprocess(cloud, params_, input, aligned_, &field_.geometry());
     t.preprocess = msSince(clock);
     field_.embed(aligned_, result.terrain);
     t.embedding = msSince(clock);
