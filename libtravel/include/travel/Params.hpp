@@ -170,7 +170,9 @@ struct AutoReal {
     X(double, max_elevation_deg, 2.0, "deg", -90.0, 90.0,                                         \
       "Highest beam elevation, for elevation_table: uniform")                                     \
     /* ---- Above-ground object segmentation (Sec. IV) ---- */                                    \
-    X(bool, cluster_objects, true, "", 0, 1, "Run the above-ground object segmentation")          \
+    X(bool, cluster_objects, true, "", 0, 1,                                                      \
+      "Run the above-ground object segmentation (the face rule's walls scope builds its runs "    \
+      "either way, and then reports no cluster)")                                                 \
     X(double, horizontal_merge_dist, 0.4, "m", 0.0, 100.0,                                        \
       "T_horz: neighbouring points of a ring closer than this (3-D) form one run")                \
     X(int, horizontal_skip_runs, 5, "", 0, 10000,                                                 \
