@@ -104,8 +104,9 @@ class VerticalFaces {
         float min_r2 = 0.f;  // a foot's squared xy range is at least this
     };
     std::vector<Window> windows_;
-    std::vector<uint32_t> spans_;      // per column + 1: its window's lo | rows << 16
-    std::vector<uint32_t> in_window_;  // the points in a window
+    std::vector<uint32_t> spans_;        // per column + 1: its window's lo | rows << 16
+    std::vector<uint8_t> window_flags_;  // per point (padded to 8): in a window
+    std::vector<uint32_t> in_window_;    // the points in a window
     std::vector<uint32_t> candidates_;
     std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
     std::vector<uint32_t> foot_faces_;  // the face point of each
