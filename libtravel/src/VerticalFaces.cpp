@@ -11,6 +11,9 @@
 namespace travel {
 namespace {
 
+// The rings of a face read for its thickness, from its point up.
+constexpr int kFaceRings = 8;
+
 // flag[i] = 1 when point i's cell lies in its column's window (spans[col + 1]: lo | rows << 16;
 // spans[0] the empty window of the points without a cell), else 0.
 TRAVEL_AVX2_CLONES void markInWindows(const int16_t* __restrict row, const int32_t* __restrict col,
@@ -53,6 +56,25 @@ int32_t VerticalFaces::climbToFace(const Cell* cell, std::ptrdiff_t stride, int 
         prev_z = cell->z, prev_range = range;
     }
     return -1;
+}
+
+float VerticalFaces::faceThickness(const Cell* cell, int rings, float face_range) {
+    // Returns 0.5 m or more behind the face went through it (mesh, a window, a gap): not the
+    // face. The median absolute deviation from the median: half of the returns lie on one
+    // plane at most this thick, whatever a footing's front or a ledge adds to the rest.
+    const float behind = face_range + 0.5f;
+    float range[kFaceRings];
+    int count = 0;
+    for (int k = 0; k < rings && k < kFaceRings; ++k) {
+        const float r = std::sqrt(cell[k].r2);
+        if (cell[k].point >= 0 && r < behind) range[count++] = r;
+    }
+    if (count < 2) return 0.f;
+    std::sort(range, range + count);
+    const float median = range[(count - 1) / 2];
+    for (int k = 0; k < count; ++k) range[k] = std::fabs(range[k] - median);
+    std::sort(range, range + count);
+    return range[(count - 1) / 2];
 }
 
 void VerticalFaces::finish(std::vector<PointClass>& labels,
@@ -207,13 +229,25 @@ void VerticalFaces::unlabelWallFeet(const AlignedCloud& cloud, const RangeImage&
         num_candidates += (r < w.feet_below) & (r2 >= w.min_r2) & (label[i] == PointClass::Ground);
     }
     candidates_.resize(num_candidates);
+    // A wall or fence is one vertical plane: along one azimuth its returns lie at one xy range
+    // (within the range noise, about 0.02 m); a hedge scatters them through its depth. The
+    // face is read over 8 rings from its point up (0.35-0.7 m of face 5-10 m from an HDL-64E).
+    const float max_thickness = static_cast<float>(params.vertical_face_max_thickness);
     for (const uint32_t i : candidates_) {
         const Window& w = windows[col[i]];
         const int above = row[i] - w.lo + 1;
         const int32_t face =
             climbToFace(&cells[w.begin + above], 1, w.rows - above, z[i],
                         std::sqrt(x[i] * x[i] + y[i] * y[i]), labels, min_rise, max_gap);
-        if (face >= 0) face_feet_.push_back(i), foot_faces_.push_back(static_cast<uint32_t>(face));
+        if (face < 0) continue;
+        if (max_thickness > 0.f) {
+            const int face_row = row[face] - w.lo;
+            const float face_range = std::sqrt(x[face] * x[face] + y[face] * y[face]);
+            const int rings = std::min(kFaceRings, w.rows - face_row);
+            if (faceThickness(&cells[w.begin + face_row], rings, face_range) > max_thickness)
+                continue;
+        }
+        face_feet_.push_back(i), foot_faces_.push_back(static_cast<uint32_t>(face));
     }
     finish(labels, counts);
 }

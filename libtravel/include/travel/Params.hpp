@@ -142,6 +142,11 @@ struct AutoReal {
       "The face rule's climb steps over up to this many consecutive rings without a return "      \
       "(foliage, mesh fences and dark paint return part of the rays): a porous face keeps its "   \
       "foot. 0 = an empty ring ends the climb")                                                   \
+    X(double, vertical_face_max_thickness, 0.03, "m", 0.0, 100.0,                                 \
+      "Walls scope only: a foot is taken only under a thin face, half of the returns of its "     \
+      "column from the face up (8 rings) within this of their median xy range: a wall or fence "  \
+      "is one vertical plane (range noise), a hedge scatters its returns through its depth "      \
+      "(SemanticKITTI: vegetation). 0 = no test")                                                 \
     X(double, vertical_face_min_foot_height, 0.0, "m", 0.0, 100.0,                                \
       "A face foot stands at least this high above its ground plane (eq. 5's signed "             \
       "distance): lower points are on the ground as far as range noise tells (SemanticKITTI's "   \
