@@ -91,14 +91,15 @@ void TraversableGraphSearch::reserve(const TriGridField& field) {
     detail::prefault(row_cells_, bit_words), detail::prefault(col_cells_, bit_words);
 }
 
-void TraversableGraphSearch::markReached(int node, int16_t component, TerrainModel& model) {
+void TraversableGraphSearch::markReached(int node, int16_t component, const TriGridField& field,
+                                         TerrainModel& model) {
     TriNode& reached = model.nodes[node];
     reached.reached = true;
     reached.component = component;
     node_reached_[node] = 1;
     const Eigen::Vector2f xy = hot_[terrain_slot_[node]].mean.head<2>();
     node_xy_[node] = xy;
-    const int cell = node / 4, n = field_->cellsPerSide();
+    const int cell = node / 4, n = field.cellsPerSide();
     const int ix = cell % n, iy = cell / n;
     row_cells_[static_cast<std::size_t>(iy) * words_ + ix / 64] |= uint64_t{1} << (ix % 64);
     col_cells_[static_cast<std::size_t>(ix) * words_ + iy / 64] |= uint64_t{1} << (iy % 64);
@@ -106,22 +107,22 @@ void TraversableGraphSearch::markReached(int node, int16_t component, TerrainMod
     reached_where_.push_back({xy, ix, iy});
 }
 
-void TraversableGraphSearch::searchFrom(int root, int16_t component, const Params& params,
-                                        TerrainModel& model) {
+void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGridField& field,
+                                        const Params& params, TerrainModel& model) {
     // reached_ is the queue of every search of the frame: this one's nodes are appended.
     std::size_t head = reached_.size();
     const EdgeTest traversable(params);
-    markReached(root, component, model);
+    markReached(root, component, field, model);
     for (; head < reached_.size(); ++head) {
         const int i = reached_[head];
         const HotNode& from = hot_[terrain_slot_[i]];
-        const TriGridField::Neighbours& nb = field_->neighbours(i);
+        const TriGridField::Neighbours& nb = field.neighbours(i);
         for (int k = 0; k < nb.count; ++k) {
             const int j = nb.ids[k];
             const int32_t slot = terrain_slot_[j];
             if (slot < 0 || node_reached_[j]) continue;  // not terrain, or reached
             if (!traversable(from, hot_[slot])) continue;
-            markReached(j, component, model);
+            markReached(j, component, field, model);
         }
     }
 }
@@ -211,7 +212,6 @@ uint32_t orderedBits(float value) {
 
 void TraversableGraphSearch::run(const TriGridField& field, const Params& params,
                                  TerrainModel& model) {
-    field_ = &field;
     model.seed_node = -1;
     model.num_components = 0;
     // One pass over all nodes (most of them empty: OS128 has 3.4k of 14.4k nodes with points):
@@ -253,7 +253,7 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     if (seed < 0) return;
     model.seed_node = seed;
     reached_.clear(), reached_where_.clear();
-    searchFrom(seed, 0, params, model);
+    searchFrom(seed, 0, field, params, model);
     int16_t component = 1;
 
     // Re-seeding from plausible ground only: the unreached terrain nodes at least min_weight
@@ -304,7 +304,7 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
                               planeHeightAt(cand.normal, cand.d, mid.x(), mid.y());
             if (std::fabs(gap) > params.reseed_max_height_diff) continue;
             if (component == std::numeric_limits<int16_t>::max()) break;  // ids are int16
-            searchFrom(id, component++, params, model);
+            searchFrom(id, component++, field, params, model);
             accepted_any = true;
         }
     }

@@ -31,7 +31,8 @@ class TraversableGraphSearch {
         Eigen::Vector3f mean, normal;
         float d, weight;
     };
-    void searchFrom(int root, int16_t component, const Params& params, TerrainModel& model);
+    void searchFrom(int root, int16_t component, const TriGridField& field, const Params& params,
+                    TerrainModel& model);
     // The nearest reached node of a re-seeding candidate, as last computed: `seen` = how many
     // nodes of reached_ it accounts for (0: none yet); cx, cy = the candidate's cell (-1:
     // outside the grid).
@@ -44,13 +45,12 @@ class TraversableGraphSearch {
     void nearestReached(const Eigen::Vector2f& xy, const TriGridField& field, float max_dist2,
                         Nearest& near) const;
     int nearestReachedNow(std::size_t c, const TriGridField& field, float max_dist2);
-    void markReached(int node, int16_t component, TerrainModel& model);
+    void markReached(int node, int16_t component, const TriGridField& field, TerrainModel& model);
     // Where a reached node is: its mean (xy) and its cell.
     struct ReachedWhere {
         Eigen::Vector2f xy;
         int cx, cy;
     };
-    const TriGridField* field_ = nullptr;  // of the current run()
     std::vector<int> reached_;  // every reached node, in the order the searches reached them
     std::vector<ReachedWhere> reached_where_;  // the same nodes' positions
     std::vector<uint8_t> node_reached_;        // per node: model.nodes[id].reached
