@@ -50,9 +50,9 @@ void TriGridField::configure(const Params& params) {
 }
 
 void TriGridField::reserve(std::size_t points) {
+    // point_node_ is filled only for clouds without nodes (embed()): not prefaulted.
     detail::prefault(rank_, points);
-    detail::prefault(occupied_, static_cast<std::size_t>(
-                                    numNodes()));  // (point_node_: only for clouds without nodes)
+    detail::prefault(occupied_, static_cast<std::size_t>(numNodes()));
     // One spare slot for the dropped points (embed's pass 2).
     detail::prefault(sx_, points + 1), detail::prefault(sy_, points + 1);
     detail::prefault(sz_, points + 1), detail::prefault(order_, points + 1);
