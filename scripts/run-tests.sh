@@ -14,8 +14,18 @@ set -euo pipefail
 
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT_DIR"
-log() { printf '[run-tests] %s\n' "$*"; }
+TIMES_FILE=$(mktemp)
+trap 'rm -f "$TIMES_FILE"' EXIT
+# Each line says the wall time so far and the CPU time (user + sys) its child processes have used,
+# so that a slow phase shows in CI's log.
+log() {
+  local cpu
+  times >"$TIMES_FILE" # the builtin in this shell: a $(times) subshell reports its own children
+  cpu=$(awk 'NR == 2 { for (i = 1; i <= 2; ++i) { split($i, t, /[ms]/); s += t[1] * 60 + t[2] } printf "%.0f", s }' "$TIMES_FILE")
+  printf '[run-tests %4d s, cpu %5d s] %s\n' "$SECONDS" "$cpu" "$*"
+}
 
+log "setup: packages, then the Release build (build/)"
 "$ROOT_DIR/scripts/setup.sh"
 
 log "test suite (build/)"
