@@ -26,6 +26,17 @@ TRAVEL_AVX2_CLONES void markInWindows(const int16_t* __restrict row, const int32
     }
 }
 
+// Insertion sort of at most kFaceRings values: std::sort on a small local array makes GCC 12
+// warn (-Warray-bounds, a false positive in its unrolled insertion sort) and is no faster here.
+void sortFew(float* v, int n) {
+    for (int i = 1; i < n; ++i) {
+        const float x = v[i];
+        int j = i;
+        for (; j > 0 && v[j - 1] > x; --j) v[j] = v[j - 1];
+        v[j] = x;
+    }
+}
+
 }  // namespace
 
 int32_t VerticalFaces::climbToFace(const Cell* cell, std::ptrdiff_t stride, int steps, float foot_z,
@@ -70,10 +81,10 @@ float VerticalFaces::faceThickness(const Cell* cell, int rings, float face_range
         if (cell[k].point >= 0 && r < behind) range[count++] = r;
     }
     if (count < 2) return 0.f;
-    std::sort(range, range + count);
+    sortFew(range, count);
     const float median = range[(count - 1) / 2];
     for (int k = 0; k < count; ++k) range[k] = std::fabs(range[k] - median);
-    std::sort(range, range + count);
+    sortFew(range, count);
     return range[(count - 1) / 2];
 }
 
