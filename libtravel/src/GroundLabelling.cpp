@@ -171,21 +171,21 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float ground_dist = static_cast<float>(params.ground_dist);
     const float outlier_dist = static_cast<float>(params.outlier_dist);
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
-    const int num_nodes = static_cast<int>(model.nodes.size());
     // classifyByPlaneDistance's classes as lane values.
     const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
     const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
     const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     // Reached nodes whose own plane may label points (see the header comment), and the nodes
-    // whose points the loop below labels (one pass over all nodes; most are empty).
+    // whose points the loop below labels (one pass over the nodes with points, embed()'s list,
+    // ascending: most nodes are empty, and their cache lines are not read).
     std::vector<uint8_t>& clear = clear_scratch;
     clear.assign(model.nodes.size(), 0);
     std::vector<int32_t>& labelled = labelled_scratch;
     labelled.clear();
     const bool with_node_plane = params.label_with_node_plane;
-    for (int k = 0; k < num_nodes; ++k) {
+    for (const uint32_t occupied : field.occupiedNodes()) {
+        const int k = static_cast<int>(occupied);
         const TriNode& node = model.nodes[k];
-        if (node.count == 0) continue;
         if (with_node_plane && node.reached)
             clear[k] =
                 clearAbovePlane(sx, sy, sz, node.begin, node.begin + node.count, node.normal.x(),

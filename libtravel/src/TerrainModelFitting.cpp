@@ -39,7 +39,10 @@ void TerrainModelFitting::run(const TriGridField& field, const Params& params,
     }
     vote_weight_.assign(field.numVertices(), 0.0);
     vote_weighted_z_.assign(field.numVertices(), 0.0);
-    for (int id = 0; id < num_nodes; ++id) {
+    // Votes of the reached nodes, in ascending order (the order of the sums): only nodes with
+    // points (embed()'s list) can be reached, so the empty ones' cache lines are not read.
+    for (const uint32_t occupied : field.occupiedNodes()) {
+        const int id = static_cast<int>(occupied);
         const TriNode& node = model.nodes[id];
         if (!node.reached) continue;
         for (int k = 0; k < 3; ++k) {

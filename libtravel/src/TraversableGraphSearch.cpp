@@ -214,20 +214,17 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
                                  TerrainModel& model) {
     model.seed_node = -1;
     model.num_components = 0;
-    // One pass over all nodes (most of them empty: OS128 has 3.4k of 14.4k nodes with points):
-    // reset reached / component where a previous search set them (after embedding they are
-    // already reset: no write, so no cache line of an untouched node is dirtied) and copy
-    // what the searches read of the terrain nodes into hot_.
-    const int num_nodes = static_cast<int>(model.nodes.size());
-    terrain_slot_.resize(model.nodes.size());
+    // One pass over the nodes with points (embed()'s list, ascending: OS128 has 3.4k of 14.4k
+    // nodes with points; an empty node is never terrain, so never reached, and its cache line
+    // is not read): reset reached / component where a previous search set them (after
+    // embedding they are already reset: no write, so no cache line of an untouched node is
+    // dirtied) and copy what the searches read of the terrain nodes into hot_.
+    terrain_slot_.assign(model.nodes.size(), -1);
     hot_.clear(), terrain_.clear();
-    for (int id = 0; id < num_nodes; ++id) {
+    for (const uint32_t id : field.occupiedNodes()) {
         TriNode& node = model.nodes[id];
         if (node.reached || node.component != -1) node.reached = false, node.component = -1;
-        if (node.node_class != NodeClass::Terrain) {
-            terrain_slot_[id] = -1;
-            continue;
-        }
+        if (node.node_class != NodeClass::Terrain) continue;
         terrain_slot_[id] = static_cast<int32_t>(hot_.size());
         hot_.push_back({node.mean, node.normal, node.d, node.weight});
         terrain_.push_back(id);

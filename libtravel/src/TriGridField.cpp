@@ -118,18 +118,22 @@ void TriGridField::embed(const AlignedCloud& cloud, TerrainModel& model) {
     start[outside] = sum;
     const uint32_t total = start[outside];
     // The nodes with points, in ascending order, listed without a branch (83 % of KITTI's nodes
-    // are empty: the later stages then read no empty node's cache line).
+    // are empty: the later stages then read no empty node's cache line), then their begin and
+    // count (an empty node keeps begin = count = 0 from the reset, and its TriNode is not
+    // touched again).
     occupied_.resize(num_nodes);
     uint32_t* occupied = occupied_.data();
     uint32_t num_occupied = 0;
     for (int k = 0; k < num_nodes; ++k) {
-        const uint32_t count = start[k + 1] - start[k];
-        model.nodes[k].begin = start[k];
-        model.nodes[k].count = count;
         occupied[num_occupied] = static_cast<uint32_t>(k);
-        num_occupied += count != 0 ? 1 : 0;
+        num_occupied += start[k + 1] != start[k] ? 1 : 0;
     }
     occupied_.resize(num_occupied);
+    for (uint32_t j = 0; j < num_occupied; ++j) {
+        const uint32_t k = occupied[j];
+        model.nodes[k].begin = start[k];
+        model.nodes[k].count = start[k + 1] - start[k];
+    }
     // Pass 2: every dropped point goes to the one spare slot after the embedded ones. The
     // scatter writes each node's slots a run at a time, one ring after the other: the line a
     // node's next run starts is often not in the cache, and a store that misses holds up the

@@ -22,7 +22,8 @@ inline PointClass classifyByPlaneDistance(float e, float ground_dist, float outl
                              : PointClass::NonGround;
 }
 
-/// labels.size() == cloud size afterwards; every point gets exactly one class.
+/// labels.size() == cloud size afterwards; every point gets exactly one class. `model` is the
+/// one field.embed() filled last (its nodes with points are field.occupiedNodes()).
 /// Returns the number of points per class (indexed by PointClass value). With `heights`, each
 /// point of a node with a ground plane gets the signed distance e that labelled it (+inf for
 /// the others): the face rule's foot height (VerticalFaces).

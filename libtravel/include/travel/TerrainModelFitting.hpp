@@ -16,7 +16,8 @@ namespace travel {
 class TerrainModelFitting {
   public:
     /// Sets corner_z, refit_* and traversable of every node. With params.ttmf == false,
-    /// traversable = reached and the refit plane is the node's own plane (ablation).
+    /// traversable = reached and the refit plane is the node's own plane (ablation). `model` is
+    /// the one field.embed() filled last: the votes are looked for among field.occupiedNodes().
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
     /// Sizes (and maps) the per-vertex buffers for the field (no page faults on the first frame).
     void reserve(const TriGridField& field);

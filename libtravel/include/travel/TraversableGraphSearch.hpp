@@ -18,7 +18,9 @@ bool isTraversableEdge(const TriNode& a, const TriNode& b, const Params& params)
 
 class TraversableGraphSearch {
   public:
-    /// Sets reached / component of every node and model.seed_node / num_components.
+    /// Sets reached / component of every node and model.seed_node / num_components. `model` is
+    /// the one field.embed() filled last: only its nodes with points (field.occupiedNodes())
+    /// are visited, the empty ones keep embed()'s reset (never reached).
     void run(const TriGridField& field, const Params& params, TerrainModel& model);
     /// Sizes (and maps) the per-node buffers for the field, so the first frame pays no page
     /// faults for them.
