@@ -246,6 +246,18 @@ bool blockSweep(const int16_t* azimuth, std::size_t count, int cut, int& sweep) 
                          : blockSweepBackward(azimuth, count, cut, sweep);
 }
 
+// row[i] = row_of[elevation[i] - kNoAngle], -1 where !keep[i]; `elevation` may be `row`. Its own
+// function, without a branch: inside RangeImage::build() GCC kept the pointers on the stack and
+// branched on keep[i], a mispredicted branch wherever valid and invalid points alternate.
+TRAVEL_AVX2_CLONES
+void rowsOfElevations(const int16_t* row_of, const int16_t* elevation, const uint8_t* keep,
+                      std::size_t n, int16_t* row) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const int beam = row_of[elevation[i] - kNoAngle];  // >= 0
+        row[i] = static_cast<int16_t>(beam | -static_cast<int>(keep[i] == 0));
+    }
+}
+
 // ---- Ring statistics and row maps ------------------------------------------------------------
 
 // Per ring, sum z / sum range is the range-weighted mean sine of elevation: far points, whose
@@ -555,12 +567,7 @@ class RowAssigner {
             }
             cached_mids.assign(mids.begin(), mids.begin() + count);
         }
-        const int16_t* row_of = row_of_elevation.data();
-        const uint8_t* keep = valid_.data();
-        for (std::size_t i = 0; i < n; ++i) {
-            const int16_t beam = row_of[elevations[i] - kNoAngle];
-            row[i] = keep[i] ? beam : int16_t{-1};
-        }
+        rowsOfElevations(row_of_elevation.data(), elevations, valid_.data(), n, row);
     }
 
   private:
