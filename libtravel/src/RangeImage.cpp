@@ -34,6 +34,14 @@
 #include <stdexcept>
 #include <string>
 
+// The table lookup's AVX2 copy: GCC on x86-64, not where the build asks for baseline code only
+// (TRAVEL_NO_CPU_DISPATCH, see CpuDispatch.hpp).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(TRAVEL_NO_CPU_DISPATCH)
+#define TRAVEL_ROWS_AVX2 1
+#include <immintrin.h>
+#endif
+
 #include "CpuDispatch.hpp"
 #include "FastAtan2.hpp"
 #include "Prefault.hpp"
@@ -244,6 +252,57 @@ template <int Direction>
 bool blockSweep(const int16_t* azimuth, std::size_t count, int cut, int& sweep) {
     return Direction > 0 ? blockSweepForward(azimuth, count, cut, sweep)
                          : blockSweepBackward(azimuth, count, cut, sweep);
+}
+
+// row[i] = row_of[elevation[i] - kNoAngle], -1 where !keep[i], from i = begin; `elevation` may
+// be `row`. Its own function, without a branch: inside RangeImage::build() GCC kept the pointers
+// on the stack and branched on keep[i], a mispredicted branch wherever valid and invalid points
+// alternate.
+void rowsOfElevationsScalar(const int16_t* row_of, const int16_t* elevation, const uint8_t* keep,
+                            std::size_t begin, std::size_t n, int16_t* row) {
+    for (std::size_t i = begin; i < n; ++i) {
+        const int beam = row_of[elevation[i] - kNoAngle];  // >= 0
+        row[i] = static_cast<int16_t>(beam | -static_cast<int>(keep[i] == 0));
+    }
+}
+
+#ifdef TRAVEL_ROWS_AVX2
+// The same, 8 points at a time: a 32-bit gather at each entry (row_of holds one more entry, so
+// that the last one's upper half is readable), its lower 16 bits the row (little endian).
+__attribute__((target("avx2"))) void rowsOfElevationsAvx2(const int16_t* row_of,
+                                                          const int16_t* elevation,
+                                                          const uint8_t* keep, std::size_t n,
+                                                          int16_t* row) {
+    const int* base = reinterpret_cast<const int*>(row_of);
+    const __m256i offset = _mm256_set1_epi32(-kNoAngle), low16 = _mm256_set1_epi32(0xffff);
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m256i e = _mm256_add_epi32(
+            _mm256_cvtepi16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(elevation + i))),
+            offset);
+        const __m256i beam = _mm256_and_si256(_mm256_i32gather_epi32(base, e, 2), low16);
+        const __m256i invalid = _mm256_cmpeq_epi32(
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(keep + i))),
+            _mm256_setzero_si256());
+        const __m256i rows = _mm256_or_si256(beam, invalid);  // in [-1, 32767]
+        const __m256i packed = _mm256_permute4x64_epi64(_mm256_packs_epi32(rows, rows), 0xd8);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row + i), _mm256_castsi256_si128(packed));
+    }
+    rowsOfElevationsScalar(row_of, elevation, keep, i, n, row);
+}
+#endif
+
+// row_of: 65537 entries (see rowsOfElevationsAvx2).
+void rowsOfElevations(const int16_t* row_of, const int16_t* elevation, const uint8_t* keep,
+                      std::size_t n, int16_t* row) {
+#ifdef TRAVEL_ROWS_AVX2
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2");
+    }();
+    if (avx2) return rowsOfElevationsAvx2(row_of, elevation, keep, n, row);
+#endif
+    rowsOfElevationsScalar(row_of, elevation, keep, 0, n, row);
 }
 
 // ---- Ring statistics and row maps ------------------------------------------------------------
@@ -540,14 +599,15 @@ class RowAssigner {
         int16_t* row = row_.data();
         const std::size_t n = n_;
         // A search per point would cost more than all the rest: the row of every quantised
-        // elevation (65536 values, 128 KiB) is looked up instead, row = the number of quantised
-        // boundaries <= the elevation (kNoAngle, NaN, ends on row 0). Built once per table.
+        // elevation (65536 values and a padding entry, 128 KiB) is looked up instead, row = the
+        // number of quantised boundaries <= the elevation (kNoAngle, NaN, ends on row 0). Built
+        // once per table.
         std::array<int32_t, kMaxRings> mids{};
         for (int k = 0; k < count; ++k) mids[k] = quantisedAngle(boundaries[k]);
         if (cached_mids.size() != static_cast<std::size_t>(count) ||
             !std::equal(cached_mids.begin(), cached_mids.end(), mids.begin()) ||
-            row_of_elevation.size() != 65536) {
-            row_of_elevation.resize(65536);
+            row_of_elevation.size() != 65537) {
+            row_of_elevation.assign(65537, 0);
             int beam = 0;
             for (int e = kNoAngle; e <= kHalfTurn; ++e) {
                 while (beam < count && mids[beam] <= e) ++beam;
@@ -555,12 +615,7 @@ class RowAssigner {
             }
             cached_mids.assign(mids.begin(), mids.begin() + count);
         }
-        const int16_t* row_of = row_of_elevation.data();
-        const uint8_t* keep = valid_.data();
-        for (std::size_t i = 0; i < n; ++i) {
-            const int16_t beam = row_of[elevations[i] - kNoAngle];
-            row[i] = keep[i] ? beam : int16_t{-1};
-        }
+        rowsOfElevations(row_of_elevation.data(), elevations, valid_.data(), n, row);
     }
 
   private:
