@@ -5,8 +5,6 @@
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
@@ -18,6 +16,7 @@
 #include "Interrupt.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
+#include "ThreadCpu.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
@@ -53,13 +52,6 @@ std::optional<CPose3D> PoseFileSource::at(double t, std::size_t frame) const {
 namespace {
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-/// CPU time of the calling thread [ms].
-double threadCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 // TRAVEL's note on the sensor mount (an `auto` estimate, or a configured value far from the

@@ -12,7 +12,8 @@
 
 namespace travel {
 
-/// Wall-clock milliseconds spent in each stage of the last frame.
+/// Milliseconds of the calling thread's CPU time spent in each stage of the last frame (time
+/// spent waiting for a core is not in them: time process() with a wall clock for its latency).
 struct StageTimings {
     double preprocess = 0;     ///< validity, alignment, deskew
     double embedding = 0;      ///< tri-grid field: points to nodes
