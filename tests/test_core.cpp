@@ -89,8 +89,9 @@ TEST(TriGridField, EmbeddingAgreesWithNodeOfUpToTheGridEdge) {
             AlignedCloud aligned;
             preprocess(cloud, p, {}, aligned, nodes_in_preprocess ? &field.geometry() : nullptr);
             ASSERT_EQ(aligned.node.size(), nodes_in_preprocess ? 1u : 0u);
-            if (nodes_in_preprocess)
+            if (nodes_in_preprocess) {
                 EXPECT_EQ(static_cast<int>(aligned.node[0]), field.nodeOf(xy[0], xy[1]));
+            }
             TerrainModel model;
             field.embed(aligned, model);
             int embedded = -1;
