@@ -16,7 +16,7 @@
 #include "Interrupt.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
-#include "ThreadCpu.hpp"
+#include "travel/ThreadCpuClock.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"

@@ -25,10 +25,10 @@
 #include "LargePages.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
-#include "ThreadCpu.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/ThreadCpuClock.hpp"
 #include "travel/eval/FrameEvaluation.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Segmenter.hpp"
@@ -55,11 +55,11 @@ struct Tracking {
 
     /// Tracks frame `f` (time 0.1 f: KITTI's 10 Hz) and writes its pose line.
     void add(std::size_t f, const travel::PointCloud& cloud, travel::eval::Segmentation& s) {
-        const double start = travel::apps::threadCpuMs();
+        const double start = travel::threadCpuMs();
         const Eigen::Isometry3d* pose = given ? &given->poses[f] : nullptr;
         const Eigen::Isometry3d world_T_sensor = tracker->update(
             0.1 * double(f), cloud, s.labels, s.aligned_rotation, s.clusters, pose, &s.cluster_id);
-        ms.push_back(travel::apps::threadCpuMs() - start);
+        ms.push_back(travel::threadCpuMs() - start);
         poses << travel::kittiPoseLine(world_T_sensor);
         frames.push_back({s.clusters, tracker->worldTAligned()});
         travel::viz::TrackFrame view;
@@ -99,14 +99,13 @@ void printTimeLine(const char* name, const std::vector<double>& ms, const char* 
 
 /// The time report: per stage, the first frame apart (it checks the sensor mount and first uses
 /// the pipeline's buffers), then the median and max of the other frames.
-void printTimeReport(const std::vector<StageSeries>& stages, const std::vector<double>& tracking_ms,
-                     bool baseline_stages) {
+void printTimeReport(const std::vector<StageSeries>& stages,
+                     const std::vector<double>& tracking_ms) {
     const std::size_t frames = stages.front().ms.size();
     if (frames == 0) return;
     std::printf(
-        "Milliseconds per frame: CPU time of each TRAVEL stage on its worker thread%s (reading, "
-        "scoring and writing not included):\n",
-        baseline_stages ? ", wall clock of the baseline's stages" : "");
+        "Milliseconds per frame: CPU time of each stage on its worker thread (reading, scoring and "
+        "writing not included):\n");
     std::printf("  %-13s %8s", "", "first");
     if (frames > 1) std::printf(" %8s %8s  (frames 2-%zu)", "median", "max", frames);
     std::printf("\n");
@@ -130,7 +129,7 @@ int run(int argc, char** argv) {
         "points predicted ground count as TP) and protocol B (Patchwork++: classes 0, 1, 70 not "
         "scored). Then the time report: CPU milliseconds of each TRAVEL stage on its worker "
         "thread (as bench_travel measures: time waiting for a core, reading, scoring and writing "
-        "are not in it; a baseline's stages of --method: their wall clock), for the first frame "
+        "are not in it; --method baselines are timed the same way), for the first frame "
         "(it checks the mount and first uses the buffers) and as median and max of the others, "
         "and the scans per second of the whole run (wall clock, -j N, reading and writing "
         "included).",
@@ -235,7 +234,6 @@ int run(int argc, char** argv) {
         {"total", {}}};
     const int kNumStages = static_cast<int>(stages.size());
     constexpr int kObjectsStage = 11;  // "objects_total"
-    bool baseline_stages = false;      // a --method baseline's stage, timed by the wall clock
     std::size_t unlabelled_frames = 0;
     const travel::apps::Verbosity verbosity =
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
@@ -288,13 +286,11 @@ int run(int argc, char** argv) {
                 tracking.tracker ? tracking.trackId(result.cluster_id[i]) : result.cluster_id[i]);
         travel::writeLabelFile((fs::path(out) / (stem + ".label")).string(), encoded);
 
-        // TRAVEL's stages (result.stages): CPU time; a baseline's ground or object stage
-        // (result.ground_ms / objects_ms where the pipeline has none): the segmenter's wall clock.
+        // TRAVEL's stages (result.stages), or a baseline's ground or object stage (result.ground_ms
+        // / objects_ms where the pipeline has none): CPU time of this thread, both.
         travel::StageTimings t = result.stages;
         if (t.ground_total == 0.0) t.ground_total = result.ground_ms;
         if (t.objects_total == 0.0) t.objects_total = result.objects_ms;
-        baseline_stages = baseline_stages || t.ground_total != result.stages.ground_total ||
-                          t.objects_total != result.stages.objects_total;
         const double stage_ms[] = {t.preprocess,
                                    t.embedding,
                                    t.node_fitting,
@@ -419,7 +415,7 @@ int run(int argc, char** argv) {
             tracking.given ? "from the sequence's poses.txt" : "estimated (ICP)", out.c_str(),
             kept.kept, kept.counted, 100.0 * kept.share());
     }
-    printTimeReport(stages, tracking.ms, baseline_stages);
+    printTimeReport(stages, tracking.ms);
     std::printf(
         "%zu scan%s in %.3f s, %.1f scans/s (wall clock, -j %u; reading, segmentation, "
         "scoring and writing)\n",

@@ -155,7 +155,7 @@ std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector
        << setup << "; machine: " << cpuModel() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
        << " logical CPUs, single thread; " << nowText() << ".\n\n"
        << "Mean (mu) and population standard deviation (sigma) over frames; ms = median "
-          "milliseconds per frame (each frame run once, cold caches).\n";
+          "CPU milliseconds per frame of the method's thread (each frame run once).\n";
     for (int p = 0; p < 2; ++p) {
         md << "\n## Ground, protocol " << protocolName(kGroundProtocols[p]) << "\n\n"
            << "| method | P | R | F1 μ | F1 σ | accuracy μ | accuracy σ | ms |\n"
