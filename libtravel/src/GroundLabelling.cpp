@@ -24,9 +24,19 @@
 // ground within [-outlier_dist, eps3) of the own plane of a clear neighbour near it (see
 // onClearNeighbourPlane): its height is judged against the verified surface beside it. The
 // same holds for the points of a node too sparse for a plane of its own (labelSparseNode).
+// Local clearance (clearance_radius): in a reached node that is not clear, a point may still
+// use its node's own plane (not the neighbours' planes: asking them for every non-ground point
+// of the buildings and cars in such nodes costs too much time, docs/parameters.md) when nothing
+// within clearance_radius of it (xy, points of the node and its neighbours) stands
+// own_plane_clearance or more above that plane (NearHighPoints).
+// The bases to keep out of the ground lie under their object: a wall's, fence's, post's or
+// trunk's straight below its face, a car's sills and tyres under its body; a verge a metre
+// from a sign post, a tree or a parked car is not the base of anything (the dev frames' missed
+// sidewalk and terrain in such nodes stand next to poles, signs and other structures).
 #include "travel/GroundLabelling.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -149,6 +159,69 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
     for (uint32_t i = node.begin; i < end; ++i) labels[order[i]] = PointClass::Ground;
 }
 
+// The points standing own_plane_clearance or more above a node's own plane near some of its
+// points: a bitmap of cells of side clearance_radius / 2 over the box [lo, hi] of those points
+// grown by clearance_radius, filled from the points of the node and of its neighbours
+// (TriGridField's 14) whose triangles meet that box. near(x, y) reads the 5 x 5 cells around
+// (x, y): true for every such point within clearance_radius, false for every one farther than
+// 1.8 clearance_radius.
+class NearHighPoints {
+  public:
+    void build(const TriGridField& field, const TerrainModel& model, int k, Eigen::Vector2f lo,
+               Eigen::Vector2f hi, const float* x, const float* y, const float* z, float radius,
+               float clearance) {
+        lo.array() -= radius, hi.array() += radius;
+        // Cells of radius / 2, at most kMaxSide a side (a tiny radius: larger cells, still
+        // covering the radius in 2 cells).
+        cell_ = std::max(0.5f * radius, (hi - lo).maxCoeff() / static_cast<float>(kMaxSide));
+        // Cells on a lattice of the frame (not of the box): near() of a point does not depend
+        // on which other points asked.
+        origin_ = (lo / cell_).array().floor().matrix() * cell_;
+        nx_ = std::min(kMaxSide + 1, static_cast<int>((hi.x() - origin_.x()) / cell_) + 1);
+        ny_ = std::min(kMaxSide + 1, static_cast<int>((hi.y() - origin_.y()) / cell_) + 1);
+        high_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
+        const TriNode& node = model.nodes[k];
+        const float s0 = node.normal.x(), s1 = node.normal.y(), s2 = node.normal.z();
+        const auto mark = [&](int j) {
+            const std::array<Eigen::Vector2f, 3> corners = model.triangleCorners(j);
+            Eigen::Vector2f t_lo = corners[0], t_hi = corners[0];
+            for (const Eigen::Vector2f& c : corners)
+                t_lo = t_lo.cwiseMin(c), t_hi = t_hi.cwiseMax(c);
+            if ((t_lo.array() > hi.array()).any() || (t_hi.array() < lo.array()).any()) return;
+            const TriNode& other = model.nodes[j];
+            for (uint32_t i = other.begin; i < other.begin + other.count; ++i) {
+                if (!(s0 * x[i] + s1 * y[i] + s2 * z[i] + node.d >= clearance)) continue;
+                const float gx = (x[i] - origin_.x()) / cell_, gy = (y[i] - origin_.y()) / cell_;
+                if (gx >= 0.f && gy >= 0.f && gx < static_cast<float>(nx_) &&
+                    gy < static_cast<float>(ny_))
+                    high_[static_cast<std::size_t>(gy) * nx_ + static_cast<std::size_t>(gx)] = 1;
+            }
+        };
+        mark(k);
+        const TriGridField::Neighbours& nb = field.neighbours(k);
+        for (int m = 0; m < nb.count; ++m) mark(nb.ids[m]);
+    }
+    bool near(float x, float y) const {
+        const int cx = static_cast<int>(std::floor((x - origin_.x()) / cell_));
+        const int cy = static_cast<int>(std::floor((y - origin_.y()) / cell_));
+        for (int iy = std::max(0, cy - 2); iy <= std::min(ny_ - 1, cy + 2); ++iy)
+            for (int ix = std::max(0, cx - 2); ix <= std::min(nx_ - 1, cx + 2); ++ix)
+                if (high_[static_cast<std::size_t>(iy) * nx_ + ix]) return true;
+        return false;
+    }
+
+  private:
+    static constexpr int kMaxSide = 64;
+    Eigen::Vector2f origin_{0.f, 0.f};
+    float cell_ = 1.f;
+    int nx_ = 0, ny_ = 0;
+    std::vector<uint8_t> high_;
+};
+
+thread_local NearHighPoints near_high_scratch;  // reused across nodes and frames
+// Points of a node that only its own plane makes Ground (index in the sorted order, e_own).
+thread_local std::vector<std::pair<uint32_t, float>> own_only_scratch;
+
 }  // namespace
 
 // With AVX2 (CpuDispatch.hpp) the per-point loops run 8 points an instruction.
@@ -170,6 +243,10 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float ground_dist = static_cast<float>(params.ground_dist);
     const float outlier_dist = static_cast<float>(params.outlier_dist);
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
+    const float clearance_radius = static_cast<float>(params.clearance_radius);
+    const bool local_clearance = params.label_with_node_plane && clearance_radius > 0.f;
+    NearHighPoints& near_high = near_high_scratch;
+    std::vector<std::pair<uint32_t, float>>& own_only = own_only_scratch;
     const int num_nodes = static_cast<int>(model.nodes.size());
     // classifyByPlaneDistance's classes as lane values.
     const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
@@ -204,7 +281,13 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z();
         const uint32_t end = node.begin + node.count;
         const bool own = clear[k] != 0;
-        const float od = own ? node.d : std::numeric_limits<float>::infinity();
+        // Not clear, but reached: the own plane labels the points with nothing tall near them.
+        const bool local = !own && local_clearance && node.reached;
+        const float od = own || local ? node.d : std::numeric_limits<float>::infinity();
+        // With `local`, the points that only the own plane makes Ground keep the refitted
+        // plane's class for now; once the node is done, those with no tall point near them
+        // become Ground (NearHighPoints is built once, around them only).
+        own_only.clear();
         // kLanes points at a time: the same floats as the scalar loop below (the same products
         // and sums in the same order, no FMA) and the same selections; only the points of a
         // clear node that eq. 5 leaves non-ground ask the neighbours, one by one.
@@ -224,21 +307,45 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
                     onClearNeighbourPlane(field, model, clear, k, sx[j], sy[j], sz[j], ground_dist,
                                           outlier_dist))
                     c = PointClass::Ground;
+                float e_label = e[l];
+                if (local) {  // the own plane counts only where it makes the point ground
+                    const PointClass refit =
+                        classifyByPlaneDistance(e_refit[l], ground_dist, outlier_dist);
+                    if (c != refit) own_only.push_back({j, e_label});
+                    c = refit, e_label = e_refit[l];
+                }
                 labels[order[j]] = c;
-                if (heights) (*heights)[order[j]] = e[l];
+                if (heights) (*heights)[order[j]] = e_label;
             }
         }
         for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
-            const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
+            float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
             PointClass label = classifyByPlaneDistance(e, ground_dist, outlier_dist);
             if (own && label == PointClass::NonGround &&
                 onClearNeighbourPlane(field, model, clear, k, sx[i], sy[i], sz[i], ground_dist,
                                       outlier_dist))
                 label = PointClass::Ground;
+            if (local) {  // the own plane counts only where it makes the point ground
+                const PointClass refit =
+                    classifyByPlaneDistance(e_refit, ground_dist, outlier_dist);
+                if (label != refit) own_only.push_back({i, e});
+                label = refit, e = e_refit;
+            }
             labels[order[i]] = label;
             if (heights) (*heights)[order[i]] = e;
+        }
+        if (own_only.empty()) continue;
+        Eigen::Vector2f lo(sx[own_only[0].first], sy[own_only[0].first]), hi = lo;
+        for (const auto& [j, e_own] : own_only)
+            lo = lo.cwiseMin(Eigen::Vector2f(sx[j], sy[j])),
+            hi = hi.cwiseMax(Eigen::Vector2f(sx[j], sy[j]));
+        near_high.build(field, model, k, lo, hi, sx, sy, sz, clearance_radius, own_plane_clearance);
+        for (const auto& [j, e_own] : own_only) {
+            if (near_high.near(sx[j], sy[j])) continue;
+            labels[order[j]] = PointClass::Ground;
+            if (heights) (*heights)[order[j]] = e_own;
         }
     }
     return classCounts(labels);
