@@ -84,14 +84,20 @@ TEST(TriGridField, EmbeddingAgreesWithNodeOfUpToTheGridEdge) {
     for (const auto& xy : probes) {
         PointCloud cloud;
         cloud.push_back(xy[0], xy[1], -1.f);
-        AlignedCloud aligned;
-        preprocess(cloud, p, {}, aligned);
-        TerrainModel model;
-        field.embed(aligned, model);
-        int embedded = -1;
-        for (int k = 0; k < field.numNodes(); ++k)
-            if (model.nodes[k].count == 1) embedded = k;
-        EXPECT_EQ(embedded, field.nodeOf(xy[0], xy[1])) << xy[0] << ", " << xy[1];
+        // The node found by embed() itself and the one preprocess() finds for it.
+        for (const bool nodes_in_preprocess : {false, true}) {
+            AlignedCloud aligned;
+            preprocess(cloud, p, {}, aligned, nodes_in_preprocess ? &field.geometry() : nullptr);
+            ASSERT_EQ(aligned.node.size(), nodes_in_preprocess ? 1u : 0u);
+            if (nodes_in_preprocess)
+                EXPECT_EQ(static_cast<int>(aligned.node[0]), field.nodeOf(xy[0], xy[1]));
+            TerrainModel model;
+            field.embed(aligned, model);
+            int embedded = -1;
+            for (int k = 0; k < field.numNodes(); ++k)
+                if (model.nodes[k].count == 1) embedded = k;
+            EXPECT_EQ(embedded, field.nodeOf(xy[0], xy[1])) << xy[0] << ", " << xy[1];
+        }
     }
 }
 

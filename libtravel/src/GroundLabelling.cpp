@@ -51,7 +51,8 @@ using detail::LaneMask;
 using detail::Lanes;
 using detail::loadLanes;
 
-thread_local std::vector<uint8_t> clear_scratch;  // per node, reused across frames
+thread_local std::vector<uint8_t> clear_scratch;     // per node, reused across frames
+thread_local std::vector<int32_t> labelled_scratch;  // nodes whose points get labels
 
 // Points per class. One counter per class, each a branch-free sum over all labels: a
 // ++counts[label] per point would chain the increments of equal labels through memory. The sums
@@ -252,28 +253,31 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
     const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
     const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
-    // Reached nodes whose own plane may label points (see the header comment).
+    // Reached nodes whose own plane may label points (see the header comment), and the nodes
+    // whose points the loop below labels (one pass over all nodes; most are empty).
     std::vector<uint8_t>& clear = clear_scratch;
     clear.assign(model.nodes.size(), 0);
-    if (params.label_with_node_plane) {
-        for (int k = 0; k < num_nodes; ++k) {
-            const TriNode& node = model.nodes[k];
-            if (!node.reached || node.count == 0) continue;
+    std::vector<int32_t>& labelled = labelled_scratch;
+    labelled.clear();
+    const bool with_node_plane = params.label_with_node_plane;
+    for (int k = 0; k < num_nodes; ++k) {
+        const TriNode& node = model.nodes[k];
+        if (node.count == 0) continue;
+        if (with_node_plane && node.reached)
             clear[k] =
                 clearAbovePlane(sx, sy, sz, node.begin, node.begin + node.count, node.normal.x(),
                                 node.normal.y(), node.normal.z(), node.d, own_plane_clearance);
-        }
+        if (node.traversable || (with_node_plane && node.node_class == NodeClass::Unknown))
+            labelled.push_back(k);
     }
-    for (int k = 0; k < num_nodes; ++k) {
+    for (const int32_t k : labelled) {
         const TriNode& node = model.nodes[k];
         const std::optional<GroundPlane> ground = model.groundPlane(k);
-        if (!ground && node.count > 0 && node.node_class == NodeClass::Unknown &&
-            params.label_with_node_plane) {
+        if (!ground) {  // an Unknown node without ground (see the list above)
             labelSparseNode(field, model, clear, k, sx, sy, sz, order, ground_dist, outlier_dist,
                             own_plane_clearance, labels);
             continue;
         }
-        if (!ground || node.count == 0) continue;
         const float s0 = ground->normal.x(), s1 = ground->normal.y();
         const float s2 = ground->normal.z(), d = ground->d;
         // The node's own plane, when the search verified it: a point on either surface is
@@ -300,23 +304,39 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
             const LaneMask label = e < -outlier_dist ? kOutlier
                                    : e < ground_dist ? kGround
                                                      : kNonGround;
-            for (int l = 0; l < kLanes; ++l) {
-                PointClass c = static_cast<PointClass>(label[l]);
-                const uint32_t j = i + static_cast<uint32_t>(l);
-                if (own && c == PointClass::NonGround &&
-                    onClearNeighbourPlane(field, model, clear, k, sx[j], sy[j], sz[j], ground_dist,
-                                          outlier_dist))
-                    c = PointClass::Ground;
-                float e_label = e[l];
-                if (local) {  // the own plane counts only where it makes the point ground
-                    const PointClass refit =
-                        classifyByPlaneDistance(e_refit[l], ground_dist, outlier_dist);
-                    if (c != refit) own_only.push_back({j, e_label});
-                    c = refit, e_label = e_refit[l];
+            if (local) {  // the own plane counts only where it makes the point ground
+                const LaneMask refit = e_refit < -outlier_dist ? kOutlier
+                                       : e_refit < ground_dist ? kGround
+                                                               : kNonGround;
+                for (int l = 0; l < kLanes; ++l) {
+                    const uint32_t j = i + static_cast<uint32_t>(l);
+                    if (label[l] != refit[l]) own_only.push_back({j, e[l]});
+                    labels[order[j]] = static_cast<PointClass>(refit[l]);
                 }
-                labels[order[j]] = c;
-                if (heights) (*heights)[order[j]] = e_label;
+                if (heights)
+                    for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e_refit[l];
+                continue;
             }
+            // Most blocks have no point for the neighbours' planes: a plain scatter of labels.
+            bool ask = false;
+            if (own)
+                for (int l = 0; l < kLanes; ++l) ask |= label[l] == kNonGround[0];
+            if (!ask) {
+                for (int l = 0; l < kLanes; ++l)
+                    labels[order[i + l]] = static_cast<PointClass>(label[l]);
+            } else {
+                for (int l = 0; l < kLanes; ++l) {
+                    PointClass c = static_cast<PointClass>(label[l]);
+                    const uint32_t j = i + static_cast<uint32_t>(l);
+                    if (c == PointClass::NonGround &&
+                        onClearNeighbourPlane(field, model, clear, k, sx[j], sy[j], sz[j],
+                                              ground_dist, outlier_dist))
+                        c = PointClass::Ground;
+                    labels[order[j]] = c;
+                }
+            }
+            if (heights)
+                for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e[l];
         }
         for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;

@@ -245,10 +245,9 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
     const float* sy = field.sy().data();
     const float* sz = field.sz().data();
     const double cos_max_slope = std::cos(params.max_slope_deg * M_PI / 180.0);
-    const int num_nodes = static_cast<int>(model.nodes.size());
-    for (int id = 0; id < num_nodes; ++id) {
+    // Only the nodes with points (embed()'s list): an empty node's cache line is never read.
+    for (const uint32_t id : field.occupiedNodes()) {
         TriNode& node = model.nodes[id];
-        if (node.count == 0) continue;
         const float* x = sx + node.begin;
         const float* y = sy + node.begin;
         const float* z = sz + node.begin;
@@ -259,7 +258,7 @@ void fitNodes(const TriGridField& field, const Params& params, TerrainModel& mod
             continue;
         }
         // Node-local origin: cell centre in xy, LPR in z.
-        const Eigen::Vector2f c = model.cellCenter(id / 4);
+        const Eigen::Vector2f c = model.cellCenter(static_cast<int>(id / 4));
         const float origin[3] = {c.x(), c.y(), node.lpr};
         const SeedBand seeds{-static_cast<float>(params.seed_margin_below_lpr),
                              static_cast<float>(params.seed_margin_above_lpr)};

@@ -40,12 +40,18 @@ std::size_t mountStride(const Params& configured) {
 }
 
 // The face rule's scopes (VerticalFaces): under every ground point, in the ground stage; or
-// under wall-like clusters only, after the object segmentation.
+// under wall-like clusters only, after the object segmentation. The walls scope needs the
+// object segmentation's runs whatever cluster_objects says: without clusters it still runs
+// them (and reports no cluster), so that the ground labels do not depend on cluster_objects.
 bool everyGroundPointFaces(const Params& p) {
     return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length == 0.0;
 }
 bool wallFaces(const Params& p) {
-    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length > 0.0 && p.cluster_objects;
+    return p.vertical_face_min_rise > 0.0 && p.vertical_face_min_length > 0.0;
+}
+// The object segmentation runs: for the clusters, or for the walls scope.
+bool runsObjects(const Params& p) {
+    return p.cluster_objects || wallFaces(p);
 }
 
 }  // namespace
@@ -58,13 +64,14 @@ Pipeline::Pipeline(const Params& params) : configured_(params), params_(params) 
     const std::size_t points = expectedPoints();
     detail::prefault(aligned_.x, points), detail::prefault(aligned_.y, points);
     detail::prefault(aligned_.z, points), detail::prefault(aligned_.valid, points);
+    detail::prefault(aligned_.node, points);
     if (hasSelfBox(params_)) detail::prefault(self_returns_, points);
     const std::size_t stride = mountStride(configured_);
     mount_estimator_.reserve((points + stride - 1) / stride);
     field_.reserve(points);
     graph_search_.reserve(field_), terrain_fitting_.reserve(field_);
-    if (params_.cluster_objects || everyGroundPointFaces(params_)) range_image_.reserve(points);
-    if (params_.cluster_objects)
+    if (runsObjects(params_) || everyGroundPointFaces(params_)) range_image_.reserve(points);
+    if (runsObjects(params_))
         clustering_.reserve(points, points);  // the range image has beams x columns cells too
 }
 
@@ -151,7 +158,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     result.mount.message.clear();
     updateMount(cloud, input, result.mount);
     result.sensor_height = params_.sensor_height;
-    preprocess(cloud, params_, input, aligned_);
+    preprocess(cloud, params_, input, aligned_, &field_.geometry());
     t.preprocess = msSince(clock);
     field_.embed(aligned_, result.terrain);
     t.embedding = msSince(clock);
@@ -180,7 +187,7 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
     result.cluster_id.assign(cloud.size(), 0u);
     result.clusters.clear();
     t.range_image = t.horizontal = t.vertical = t.clusters = t.objects_total = 0;
-    if (!params_.cluster_objects) return;
+    if (!runsObjects(params_)) return;
     if (!faces) range_image_.build(cloud, aligned_.valid, params_);  // else built above
     t.range_image = msSince(clock);
     vertical_faces_.setFaceFeet(result.labels, PointClass::Ground);
@@ -192,6 +199,11 @@ void Pipeline::process(const PointCloud& cloud, const FrameInput& input, Result&
         clustering_.wallBottoms(params_, range_image_.cols(), wall_bottoms_, wall_bottom_ranges_);
         vertical_faces_.unlabelWallFeet(aligned_, range_image_, params_, wall_bottoms_,
                                         wall_bottom_ranges_, result.labels, result.class_counts);
+    }
+    if (!params_.cluster_objects) {  // the walls scope only: its feet are labelled, no cluster
+        t.vertical = msSince(clock);
+        t.objects_total = t.range_image + t.horizontal + t.vertical;
+        return;
     }
     if (params_.cluster_face_feet || wallFaces(params_))
         clustering_.attachFeet(aligned_, range_image_, vertical_faces_.feet(),

@@ -42,12 +42,11 @@ struct SelfBox {
         reach2 = (far2(min_x, max_x) + far2(min_y, max_y) + far2(min_z, max_z)) * 1.0001f;
     }
     bool empty() const { return !(min_x < max_x && min_y < max_y && min_z < max_z); }
-    /// (vx, vy, vz) in the vehicle frame, r2 its squared range. The range test first: nearly
-    /// every point is beyond the box's reach, and the scalar loop then skips the six compares
-    /// (a predictable branch; a vectorised loop computes both, branch-free). False for NaN.
+    /// (vx, vy, vz) in the vehicle frame, r2 its squared range. Bitwise &, no branch: the
+    /// loops over all points vectorise. False for NaN.
     TRAVEL_INTO_CALLER bool contains(float r2, float vx, float vy, float vz) const {
-        return r2 < reach2 && ((vx > min_x) & (vx < max_x) & (vy > min_y) & (vy < max_y) &
-                               (vz > min_z) & (vz < max_z));
+        return (r2 < reach2) & (vx > min_x) & (vx < max_x) & (vy > min_y) & (vy < max_y) &
+               (vz > min_z) & (vz < max_z);
     }
 };
 
@@ -55,11 +54,14 @@ struct SelfBox {
 /// vectorises). kRotate = false copies the coordinates unchanged (R = I: a product by 1 and sums
 /// with 0 would turn -0 into +0). The same values as the general loop in preprocess(), for a
 /// frame without levelling: then R = R_mount and the rotated point is in the vehicle frame, where
-/// the self box is tested (no second rotation). kSelfBox = false: no box, no test.
-template <bool kRotate, bool kSelfBox>
+/// the self box is tested (no second rotation). kSelfBox = false: no box, no test. kNodes: also
+/// each point's tri-grid node (out.node, sized n), from the coordinates and validity in
+/// registers.
+template <bool kRotate, bool kSelfBox, bool kNodes>
 TRAVEL_INTO_CALLER std::size_t alignWithoutDeskew(const PointCloud& cloud, const Eigen::Matrix3f& R,
                                                   float min_r2, float max_r2,
-                                                  const SelfBox& self_box, AlignedCloud& out) {
+                                                  const SelfBox& self_box,
+                                                  const NodeLocator& locator, AlignedCloud& out) {
     const std::size_t n = cloud.size();
     const float* cx = cloud.x.data();
     const float* cy = cloud.y.data();
@@ -68,10 +70,15 @@ TRAVEL_INTO_CALLER std::size_t alignWithoutDeskew(const PointCloud& cloud, const
     float* oy = out.y.data();
     float* oz = out.z.data();
     uint8_t* valid = out.valid.data();
+    uint32_t* node = kNodes ? out.node.data() : nullptr;
     const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
     const float r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
-    const SelfBox box = self_box;  // a local copy: the stores below cannot alias it
+    const SelfBox box = self_box;  // local copies: the stores below cannot alias them
+    const NodeLocator nodeOf = locator;
     std::size_t num_valid = 0;
+    // The output arrays are not the input cloud's: without this GCC would version the loop on
+    // more run-time alias tests than it allows (10) and leave it scalar.
+#pragma GCC ivdep
     for (std::size_t i = 0; i < n; ++i) {
         const float px = cx[i], py = cy[i], pz = cz[i];
         const float r2 = px * px + py * py + pz * pz;
@@ -82,12 +89,29 @@ TRAVEL_INTO_CALLER std::size_t alignWithoutDeskew(const PointCloud& cloud, const
         // not the own vehicle.
         const bool ok = (std::fabs(r2) <= std::numeric_limits<float>::max()) & (r2 > 0.f) &
                         (r2 >= min_r2) & (r2 <= max_r2) &
-                        !(kSelfBox && box.contains(r2, ax, ay, az));
+                        !(kSelfBox & box.contains(r2, ax, ay, az));
         ox[i] = ok ? ax : 0.f, oy[i] = ok ? ay : 0.f, oz[i] = ok ? az : 0.f;
         valid[i] = ok ? 1 : 0;
+        if (kNodes) node[i] = nodeOf(ax, ay, ok);
         num_valid += ok ? 1 : 0;
     }
     return num_valid;
+}
+
+/// alignWithoutDeskew() for the frame's case: rotation or copy, self box or none, nodes or none.
+TRAVEL_INTO_CALLER std::size_t alignDispatch(bool rotate, bool box, bool nodes,
+                                             const PointCloud& cloud, const Eigen::Matrix3f& R,
+                                             float min_r2, float max_r2, const SelfBox& self_box,
+                                             const NodeLocator& locator, AlignedCloud& out) {
+#define TRAVEL_ALIGN(kRotate, kSelfBox, kNodes) \
+    alignWithoutDeskew<kRotate, kSelfBox, kNodes>(cloud, R, min_r2, max_r2, self_box, locator, out)
+    if (nodes) {
+        if (box) return rotate ? TRAVEL_ALIGN(true, true, true) : TRAVEL_ALIGN(false, true, true);
+        return rotate ? TRAVEL_ALIGN(true, false, true) : TRAVEL_ALIGN(false, false, true);
+    }
+    if (box) return rotate ? TRAVEL_ALIGN(true, true, false) : TRAVEL_ALIGN(false, true, false);
+    return rotate ? TRAVEL_ALIGN(true, false, false) : TRAVEL_ALIGN(false, false, false);
+#undef TRAVEL_ALIGN
 }
 
 }  // namespace
@@ -122,12 +146,28 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
     return R_level * R_mount;
 }
 
+// With AVX2 (CpuDispatch.hpp) the node loop runs 8 points an instruction.
+TRAVEL_AVX2_CLONES
+void locateNodes(const TriGridGeometry& grid, const AlignedCloud& cloud,
+                 std::vector<uint32_t>& node) {
+    const std::size_t n = cloud.x.size();
+    node.resize(n);
+    const float* x = cloud.x.data();
+    const float* y = cloud.y.data();
+    const uint8_t* valid = cloud.valid.data();
+    uint32_t* out = node.data();
+    const NodeLocator nodeOf(grid);
+    for (std::size_t i = 0; i < n; ++i) out[i] = nodeOf(x[i], y[i], valid[i] != 0);
+}
+
 // With AVX2 (CpuDispatch.hpp) the alignment loop runs 8 points an instruction.
 TRAVEL_AVX2_CLONES
 void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
-                AlignedCloud& out) {
+                AlignedCloud& out, const TriGridGeometry* grid) {
     const std::size_t n = cloud.size();
     out.x.resize(n), out.y.resize(n), out.z.resize(n), out.valid.resize(n);
+    out.node.resize(grid ? n : 0);
+    out.node_grid = grid ? *grid : TriGridGeometry{};
     out.rotation = alignmentRotation(params, input).cast<float>();
     const Eigen::Matrix3f& R = out.rotation;
 
@@ -151,16 +191,11 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
     const bool levelled = !(R_mount * R.cast<double>().transpose()).isIdentity(1e-6);
     const Eigen::Matrix3f to_vehicle = R_mount.cast<float>();
     const bool rotate = !R.isIdentity(0.f);
-    if (!deskew && self_box.empty()) {
-        out.num_valid =
-            rotate ? alignWithoutDeskew<true, false>(cloud, R, min_r2, max_r2, self_box, out)
-                   : alignWithoutDeskew<false, false>(cloud, R, min_r2, max_r2, self_box, out);
-        return;
-    }
-    if (!deskew && !levelled) {
-        out.num_valid =
-            rotate ? alignWithoutDeskew<true, true>(cloud, R, min_r2, max_r2, self_box, out)
-                   : alignWithoutDeskew<false, true>(cloud, R, min_r2, max_r2, self_box, out);
+    if (!deskew && (self_box.empty() || !levelled)) {
+        // Without a grid the loop finds no nodes; a one-cell stand-in keeps 1 / resolution finite.
+        const NodeLocator locator(grid ? *grid : TriGridGeometry{1.f, 1, 0.f});
+        out.num_valid = alignDispatch(rotate, !self_box.empty(), grid != nullptr, cloud, R, min_r2,
+                                      max_r2, self_box, locator, out);
         return;
     }
     const float r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1);
@@ -211,6 +246,7 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         }
     }
     out.num_valid = num_valid;
+    if (grid) locateNodes(*grid, out, out.node);
 }
 
 bool hasSelfBox(const Params& params) {

@@ -255,14 +255,19 @@ class RingStats {
     // Sums stay in registers while consecutive points share a ring: ring-by-ring input would
     // otherwise chain every addition through memory.
     void add(int ring, float x, float y, float z) {
-        const float range = std::sqrt(x * x + y * y + z * z);
-        if (!(range <= std::numeric_limits<float>::max())) return;  // NaN or inf
+        float range;
+        if (!counted(x, y, z, range)) return;
         if (ring != run_ring_) {
             flush();
             run_ring_ = ring;
         }
         run_z_ += z;
         run_range_ += range;
+    }
+    // The point's range; false (not counted) when it is NaN or inf.
+    static bool counted(float x, float y, float z, float& range) {
+        range = std::sqrt(x * x + y * y + z * z);
+        return range <= std::numeric_limits<float>::max();
     }
     // Call once after the last add().
     void flush() {
@@ -272,6 +277,12 @@ class RingStats {
         }
         run_ring_ = -1;
         run_z_ = run_range_ = 0.0f;
+    }
+    // The sums of one run of add() calls for `ring` (any: at least one point), made by the
+    // caller in registers: the same floats as those calls and flush().
+    void addRun(int ring, bool any, float z, float range) {
+        flush();
+        if (any) sum_z_[ring] += z, sum_range_[ring] += range;
     }
     bool has(int ring) const { return sum_range_[ring] > 0.0; }
     double sinElevation(int ring) const { return sum_z_[ring] / sum_range_[ring]; }
@@ -454,10 +465,17 @@ class RowAssigner {
             constexpr std::size_t kStatsStride = 8;
             std::size_t i = ring_start[ring];
             while (i < end && !valid_[i]) ++i;
+            // RingStats::add() for each point, its sums kept in local registers (GCC kept the
+            // object's in memory: a store and reload per point).
+            bool any = false;
+            float sum_z = 0.0f, sum_range = 0.0f;
             for (; i < end; i += kStatsStride) {
-                if (valid_[i]) stats.add(ring, cloud_.x[i], cloud_.y[i], cloud_.z[i]);
+                float range;
+                if (!valid_[i] || !RingStats::counted(cloud_.x[i], cloud_.y[i], cloud_.z[i], range))
+                    continue;
+                sum_z += cloud_.z[i], sum_range += range, any = true;
             }
-            stats.flush();
+            stats.addRun(ring, any, sum_z, sum_range);
             if (strict && stats.has(ring)) proof.add(stats.sinElevation(ring));
             return strict && proof.mixed();
         };

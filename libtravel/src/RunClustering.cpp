@@ -72,6 +72,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -86,6 +87,7 @@
 #include <array>
 #endif
 
+#include "CpuDispatch.hpp"
 #include "Prefault.hpp"
 #include "travel/TerrainModel.hpp"
 #include "travel/TriGridField.hpp"
@@ -212,6 +214,55 @@ uint32_t compact(const int16_t* row, const int32_t* col, const PointClass* label
     return compactScalar(row, col, labels, 0, n, cols, 0, input, key);
 }
 
+// A run's bounding box while the horizontal sweep grows it: the same floats as per-axis
+// std::min / std::max of x, y, z; stored into a RunBox with its fourth lane 0.
+struct GrowBox {
+#ifdef __SSE2__
+    __m128 lo = _mm_setzero_ps(), hi = _mm_setzero_ps();  // 4th lane: column bits, ignored
+    template <class Point>
+    void start(const Point& p) {
+        lo = hi = _mm_loadu_ps(&p.x);
+    }
+    template <class Point>
+    void add(const Point& p) {
+        // min(p, lo) is (p < lo ? p : lo), as std::min(lo, p); max likewise.
+        const __m128 v = _mm_loadu_ps(&p.x);
+        lo = _mm_min_ps(v, lo), hi = _mm_max_ps(v, hi);
+    }
+    template <class Box>
+    void load(const Box& box) {
+        lo = _mm_loadu_ps(box.lo.data()), hi = _mm_loadu_ps(box.hi.data());
+    }
+    template <class Box>
+    void store(Box& box) const {
+        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+        _mm_storeu_ps(box.lo.data(), _mm_and_ps(lo, xyz));
+        _mm_storeu_ps(box.hi.data(), _mm_and_ps(hi, xyz));
+    }
+#else
+    float lo[3] = {}, hi[3] = {};
+    template <class Point>
+    void start(const Point& p) {
+        lo[0] = hi[0] = p.x, lo[1] = hi[1] = p.y, lo[2] = hi[2] = p.z;
+    }
+    template <class Point>
+    void add(const Point& p) {
+        const float v[3] = {p.x, p.y, p.z};
+        for (int axis = 0; axis < 3; ++axis)
+            lo[axis] = std::min(lo[axis], v[axis]), hi[axis] = std::max(hi[axis], v[axis]);
+    }
+    template <class Box>
+    void load(const Box& box) {
+        for (int axis = 0; axis < 3; ++axis) lo[axis] = box.lo[axis], hi[axis] = box.hi[axis];
+    }
+    template <class Box>
+    void store(Box& box) const {
+        for (int axis = 0; axis < 3; ++axis) box.lo[axis] = lo[axis], box.hi[axis] = hi[axis];
+        box.lo[3] = box.hi[3] = 0.f;
+    }
+#endif
+};
+
 }  // namespace
 
 inline int RunClustering::find(int run) {
@@ -244,6 +295,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
     prefault(run_far_range_, runs), prefault(run_near_range_, runs);
     prefault(run_col_begin_, runs), prefault(run_col_end_, runs), prefault(run_row_, runs);
     prefault(parent_, runs), prefault(merge_dist2_, runs + 4), prefault(near_, runs);
+    prefault(blocks_, 4 * 4096);
     prefault(run_size_, runs), prefault(run_first_input_, runs);
     prefault(run_box_, runs), prefault(box_arrays_, 6 * (runs + 4));
     prefault(run_root_, runs), prefault(run_id_, runs), prefault(root_size_, runs);
@@ -257,6 +309,7 @@ void RunClustering::reserve(std::size_t points, std::size_t cells) {
 void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& image,
                                const std::vector<PointClass>& labels, const Params& params) {
     const int rows = image.rows(), cols = image.cols();
+    cols_ = cols;
     const std::vector<int16_t>& row = image.row();
     const std::vector<int32_t>& col = image.col();
     const std::size_t n = labels.size();
@@ -299,6 +352,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
     const float seam2 = static_cast<float>(params.seam_max_shift * params.seam_max_shift);
     const SortedPoint* pts = pts_.data();
     const float* ranges = range_.data();
+    const uint32_t* sorted = sorted_.data();
+    uint32_t* next_in_run = next_in_run_.data();
+    int32_t* point_run = point_run_.data();
     open_runs_.resize(max_open);
     int32_t* const open_runs = open_runs_.data();
     for (int r = 0; r < rows; ++r) {
@@ -311,34 +367,30 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
         };
         // The most recent open run, whose points mostly follow one another: its box, ranges,
         // size and first input point are kept here (registers) and written back when another
-        // run takes a point (one store per point instead of a dozen read-modify-writes).
+        // run takes a point (one store per point instead of a dozen read-modify-writes). The
+        // box is two 4-lane registers (x, y, z and the column's bits, ignored): fewer
+        // registers than six floats, so the sweep's state does not spill to the stack.
         int current = -1;
-        float lo_x = 0, lo_y = 0, lo_z = 0, hi_x = 0, hi_y = 0, hi_z = 0, far = 0, near = 0;
+        GrowBox box;
+        float far = 0, near = 0;
         uint32_t size = 0, first_input = 0;
         auto store = [&] {
-            RunBox& box = run_box_[current];
-            box.lo[0] = lo_x, box.lo[1] = lo_y, box.lo[2] = lo_z, box.lo[3] = 0.f;
-            box.hi[0] = hi_x, box.hi[1] = hi_y, box.hi[2] = hi_z, box.hi[3] = 0.f;
+            box.store(run_box_[current]);
             run_far_range_[current] = far, run_near_range_[current] = near;
             run_size_[current] = size, run_first_input_[current] = first_input;
             run_col_end_[current] = pts[run_last_[current]].col;
         };
         auto load = [&](int run) {
-            const RunBox& box = run_box_[run];
-            lo_x = box.lo[0], lo_y = box.lo[1], lo_z = box.lo[2];
-            hi_x = box.hi[0], hi_y = box.hi[1], hi_z = box.hi[2];
+            box.load(run_box_[run]);
             far = run_far_range_[run], near = run_near_range_[run];
             size = run_size_[run], first_input = run_first_input_[run];
             current = run;
         };
         auto extend = [&](uint32_t k, float range) {  // current takes sorted point k
-            const SortedPoint& p = pts[k];
-            lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y);
-            lo_z = std::min(lo_z, p.z), hi_x = std::max(hi_x, p.x);
-            hi_y = std::max(hi_y, p.y), hi_z = std::max(hi_z, p.z);
+            box.add(pts[k]);
             far = std::max(far, range), near = std::min(near, range);
             ++size;
-            first_input = std::min(first_input, sorted_[k]);
+            first_input = std::min(first_input, sorted[k]);
         };
         // Each row's elevation: the range-weighted mean sine of its points' elevations.
         float sum_z = 0.f, sum_range = 0.f;
@@ -351,8 +403,8 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             // consecutive points, without looking up the open runs. Its last point and box
             // stay in registers.
             if (current >= 0 && dist2(k, k - 1) < merge2) {
-                next_in_run_[k - 1] = k;
-                point_run_[k] = current;
+                next_in_run[k - 1] = k;
+                point_run[k] = current;
                 extend(k, range);
                 continue;
             }
@@ -385,9 +437,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
                 }
             }
             if (joined >= 0) {
-                next_in_run_[run_last_[joined]] = k;
+                next_in_run[run_last_[joined]] = k;
                 run_last_[joined] = k;
-                point_run_[k] = joined;
+                point_run[k] = joined;
                 if (joined != current) store(), load(joined);
                 extend(k, range);
                 // Keep the extended run open longest: move it to the most recent slot.
@@ -404,9 +456,9 @@ void RunClustering::horizontal(const AlignedCloud& cloud, const RangeImage& imag
             run_far_range_.emplace_back(), run_near_range_.emplace_back();
             run_size_.emplace_back(), run_first_input_.emplace_back(), run_box_.emplace_back();
             current = run;
-            lo_x = hi_x = pts[k].x, lo_y = hi_y = pts[k].y, lo_z = hi_z = pts[k].z;
-            far = near = range, size = 1, first_input = sorted_[k];
-            point_run_[k] = run;
+            box.start(pts[k]);
+            far = near = range, size = 1, first_input = sorted[k];
+            point_run[k] = run;
             if (open == max_open)
                 pushOpen(0, run);  // the oldest closes
             else
@@ -528,6 +580,66 @@ inline unsigned nearLanes(const BoxArrays& box, uint32_t fixed, uint32_t first, 
 #endif
 }
 
+// For each mask of kBoxLanes bits: the lanes set, in order (then 0), and their number.
+struct LaneList {
+    alignas(16) uint32_t lane[1u << kBoxLanes][kBoxLanes];
+    uint8_t count[1u << kBoxLanes];
+};
+constexpr LaneList kLaneList = [] {
+    LaneList list{};
+    for (unsigned mask = 0; mask < (1u << kBoxLanes); ++mask)
+        for (uint32_t l = 0; l < kBoxLanes; ++l)
+            if (mask >> l & 1u) list.lane[mask][list.count[mask]++] = l;
+    return list;
+}();
+
+// Writes the pairs {fixed, first + l} (fixed_first) or {first + l, fixed} of the lanes l set in
+// mask, in lane order, at out[0..]; kBoxLanes pairs are written whatever their number. Returns
+// their number.
+template <class Pair>
+inline uint32_t listPairs(Pair* out, uint32_t fixed, uint32_t first, unsigned mask,
+                          bool fixed_first) {
+    static_assert(sizeof(Pair) == 2 * sizeof(uint32_t));
+#ifdef __SSE2__
+    const __m128i lanes =
+        _mm_add_epi32(_mm_set1_epi32(static_cast<int>(first)),
+                      _mm_load_si128(reinterpret_cast<const __m128i*>(kLaneList.lane[mask])));
+    const __m128i same = _mm_set1_epi32(static_cast<int>(fixed));
+    const __m128i lo =
+        fixed_first ? _mm_unpacklo_epi32(same, lanes) : _mm_unpacklo_epi32(lanes, same);
+    const __m128i hi =
+        fixed_first ? _mm_unpackhi_epi32(same, lanes) : _mm_unpackhi_epi32(lanes, same);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), lo);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 2), hi);
+#else
+    for (uint32_t j = 0; j < kBoxLanes; ++j) {
+        const uint32_t other = first + kLaneList.lane[mask][j];
+        out[j] = fixed_first ? Pair{fixed, other} : Pair{other, fixed};
+    }
+#endif
+    return kLaneList.count[mask];
+}
+
+// Bit i set when range[begin + i] < nearer_than, i < n <= 12 (the same compares as one at a
+// time).
+inline unsigned nearerBits(const std::vector<float>& range, uint32_t begin, uint32_t n,
+                           float nearer_than) {
+    unsigned bits = 0;
+#ifdef __SSE2__
+    if (begin + 12 <= range.size()) {
+        const float* r = range.data() + begin;
+        const __m128 limit = _mm_set1_ps(nearer_than);
+        for (int block = 0; block < 3; ++block)
+            bits |= static_cast<unsigned>(
+                        _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(r + 4 * block), limit)))
+                    << (4 * block);
+        return bits & ((1u << n) - 1);
+    }
+#endif
+    for (uint32_t i = 0; i < n; ++i) bits |= unsigned(range[begin + i] < nearer_than) << i;
+    return bits;
+}
+
 }  // namespace
 
 void RunClustering::vertical(const Params& params) {
@@ -589,10 +701,26 @@ void RunClustering::vertical(const Params& params) {
         parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
     };
     // The pairs whose boxes are near are listed without a branch (one in five is, at random),
-    // then merged, once per pair of rows.
+    // then merged, once per pair of rows. Each run's candidates are first cut into blocks of
+    // kBoxLanes, kListedBlocks of them written whatever their number (most runs have fewer; the
+    // count advances by the number needed), so that the box test is one loop over the blocks
+    // of all runs: a loop per run would end on a mispredicted branch per run.
+    constexpr uint32_t kListedBlocks = 4;
+    uint32_t num_blocks = 0;
+    auto blockRoom = [&](std::size_t more) {
+        if (blocks_.size() < num_blocks + more) blocks_.resize(2 * (num_blocks + more));
+    };
+    auto listBlocks = [&](uint32_t fixed, uint32_t first, uint32_t last, std::size_t runs_left) {
+        const uint32_t count = (last - first + kBoxLanes - 1) / kBoxLanes;
+        if (count > kListedBlocks) blockRoom(count + kListedBlocks * runs_left);  // rare
+        CandidateBlock* out = blocks_.data() + num_blocks;
+        for (uint32_t j = 0; j < kListedBlocks; ++j) out[j] = {fixed, first + j * kBoxLanes, last};
+        for (uint32_t j = kListedBlocks; j < count; ++j)
+            out[j] = {fixed, first + j * kBoxLanes, last};
+        num_blocks += count;
+    };
     uint32_t num_near = 0;
     auto room = [&](uint32_t more) {
-        more += kBoxLanes;
         if (near_.size() < num_near + more) near_.resize(2 * (num_near + more));
         return near_.data();
     };
@@ -619,27 +747,32 @@ void RunClustering::vertical(const Params& params) {
             }
             num_near = 0;
             // b starts within [lo, hi].
+            num_blocks = 0;
+            blockRoom(kListedBlocks * (a_end - a_begin + 1));
             for (uint32_t a = a_begin; a < a_end; ++a) {
                 const int lo = col_begin[a] - ext, hi = col_end[a] + ext;
-                const uint32_t first = below[std::max(lo, 0)], last = below[std::min(hi + 1, cols)];
-                NearPair* near = room(last - first);
-                for (uint32_t b = first; b < last; b += kBoxLanes) {
-                    const unsigned lanes = nearLanes(arrays, a, b, last, &merge_dist2_[a], true);
-                    for (uint32_t l = 0; l < kBoxLanes; ++l)
-                        near[num_near] = {a, b + l}, num_near += lanes >> l & 1u;
-                }
+                listBlocks(a, below[std::max(lo, 0)], below[std::min(hi + 1, cols)], a_end - a);
+            }
+            NearPair* near = room(kBoxLanes * (num_blocks + 1));
+            for (uint32_t i = 0; i < num_blocks; ++i) {
+                const CandidateBlock block = blocks_[i];
+                const uint32_t a = block.fixed, b = block.first;
+                const unsigned lanes = nearLanes(arrays, a, b, block.end, &merge_dist2_[a], true);
+                num_near += listPairs(near + num_near, a, b, lanes, true);
             }
             // b starts before lo and reaches it: col_begin[b] < lo <= col_end[b], i.e.
             // col_begin[b] + ext < col_begin[a] <= col_end[b] + ext.
-            for (uint32_t b = b_begin; b < b_end; ++b) {
-                const uint32_t first = above[std::min(col_begin[b] + ext + 1, cols)],
-                               last = above[std::min(col_end[b] + ext + 1, cols)];
-                NearPair* near = room(last - first);
-                for (uint32_t a = first; a < last; a += kBoxLanes) {
-                    const unsigned lanes = nearLanes(arrays, b, a, last, &merge_dist2_[a], false);
-                    for (uint32_t l = 0; l < kBoxLanes; ++l)
-                        near[num_near] = {a + l, b}, num_near += lanes >> l & 1u;
-                }
+            num_blocks = 0;
+            blockRoom(kListedBlocks * (b_end - b_begin + 1));
+            for (uint32_t b = b_begin; b < b_end; ++b)
+                listBlocks(b, above[std::min(col_begin[b] + ext + 1, cols)],
+                           above[std::min(col_end[b] + ext + 1, cols)], b_end - b);
+            near = room(kBoxLanes * (num_blocks + 1));
+            for (uint32_t i = 0; i < num_blocks; ++i) {
+                const CandidateBlock block = blocks_[i];
+                const uint32_t b = block.fixed, a = block.first;
+                const unsigned lanes = nearLanes(arrays, b, a, block.end, &merge_dist2_[a], false);
+                num_near += listPairs(near + num_near, b, a, lanes, false);
             }
             for (uint32_t k = 0; k < num_near; ++k) merge(near_[k].a, near_[k].b);
         }
@@ -656,19 +789,21 @@ int RunClustering::enclosingRoot(uint32_t first, uint32_t last, uint32_t row_lo,
     constexpr uint32_t kEnclosureWalk = 10;
     uint32_t before[kEnclosureWalk];
     int32_t before_root[kEnclosureWalk];
-    uint32_t num_before = 0;
-    // Listed without a branch (in front or not is as likely); their roots looked up once.
-    const uint32_t walk_end = first - std::min(first - row_lo, kEnclosureWalk);
-    for (uint32_t k = first; k-- > walk_end;)
-        before[num_before] = k, num_before += range_[k] < nearer_than;
-    if (num_before == 0) return -1;
-    // The same after it, before any root is looked up: none on one side needs no root.
+    // Which points are in front, as bits (k = begin + bit), before any root is looked up: none
+    // on one side needs no root (one branch for both sides).
+    const uint32_t num_walk_before = std::min(first - row_lo, kEnclosureWalk);
+    const unsigned in_front_before =
+        nearerBits(range_, first - num_walk_before, num_walk_before, nearer_than);
+    const unsigned in_front_after =
+        nearerBits(range_, last + 1, std::min(row_hi - (last + 1), kEnclosureWalk), nearer_than);
+    if ((in_front_before == 0) | (in_front_after == 0)) return -1;
+    uint32_t num_before = 0;  // nearest to the run first
+    for (unsigned bits = in_front_before; bits != 0; bits &= ~(1u << (31 - __builtin_clz(bits))))
+        before[num_before++] = first - num_walk_before + (31 - __builtin_clz(bits));
     uint32_t after[kEnclosureWalk];
     uint32_t num_after = 0;
-    const uint32_t after_end = last + 1 + std::min(row_hi - (last + 1), kEnclosureWalk);
-    for (uint32_t k = last + 1; k < after_end; ++k)
-        after[num_after] = k, num_after += range_[k] < nearer_than;
-    if (num_after == 0) return -1;
+    for (unsigned bits = in_front_after; bits != 0; bits &= bits - 1)
+        after[num_after++] = last + 1 + __builtin_ctz(bits);
     for (uint32_t i = 0; i < num_before; ++i) before_root[i] = run_root_[point_run_[before[i]]];
     for (uint32_t j = 0; j < num_after; ++j) {
         const uint32_t k = after[j];
@@ -732,10 +867,7 @@ bool RunClustering::closedAboveOrBelow(int r, int rows, uint32_t b, int root, fl
         const int rr = r + dr;
         if (dr == 0 || rr < 0 || rr >= rows) continue;
         const SortedPoint* pts = pts_.data();
-        uint32_t k = static_cast<uint32_t>(
-            std::lower_bound(pts + row_begin_[rr], pts + row_begin_[rr + 1], run_col_begin_[b],
-                             [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
-            pts);
+        uint32_t k = firstPointFrom(rr, run_col_begin_[b]);
         for (; k < row_begin_[rr + 1] && pts[k].col <= run_col_end_[b]; ++k)
             if (range_[k] < nearer_than && run_root_[point_run_[k]] == root) return true;
     }
@@ -830,16 +962,21 @@ void RunClustering::linkSeenThrough(const Params& params) {
     }
 }
 
+uint32_t RunClustering::firstPointFrom(int row, int col) const {
+    // After the counting sort's scatter in horizontal(), key_count_[key] is the end of cell
+    // `key`'s slots, so key_count_[key - 1] is its start: the first point of key or after.
+    const std::size_t key =
+        static_cast<std::size_t>(row) * cols_ + static_cast<std::size_t>(std::clamp(col, 0, cols_));
+    return key == 0 ? 0u : key_count_[key - 1];
+}
+
 int RunClustering::rootInFrontBelow(uint32_t run, float t_horz, float depth) const {
     // The row below the run, swept with it in column order: in each of the run's columns (+-1,
     // the rings' azimuths differ) its nearest point there.
     const int r = run_row_[run];
     const uint32_t below_hi = row_begin_[r];
     const SortedPoint* pts = pts_.data();
-    uint32_t j = static_cast<uint32_t>(
-        std::lower_bound(pts + row_begin_[r - 1], pts + below_hi, run_col_begin_[run] - 1,
-                         [](const SortedPoint& p, int32_t c) { return p.col < c; }) -
-        pts);
+    uint32_t j = firstPointFrom(r - 1, run_col_begin_[run] - 1);
     int found = kNoRoot;
     float least_depth = std::numeric_limits<float>::infinity();
     for (uint32_t k = run_first_[run]; k != kEndOfRun; k = next_in_run_[k]) {
@@ -1013,6 +1150,8 @@ void RunClustering::assignIds(const Params& params, std::vector<uint32_t>& clust
     }
 }
 
+// With AVX2 (CpuDispatch.hpp) a point's three coordinates are one vector in both passes.
+TRAVEL_AVX2_CLONES
 void RunClustering::summarize(const TriGridField& field, const TerrainModel& terrain,
                               std::vector<ClusterSummary>& clusters) {
     const uint32_t num = static_cast<uint32_t>(root_order_.size());
@@ -1027,12 +1166,26 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         clusters[k].num_points = 0;
     }
     // Pass 1 over the clustered points (sorted order, contiguous): counts, boxes, moments.
-    // Consecutive points mostly share a cluster: accumulate each stretch of one id in scalar
-    // locals (registers) and add it to the cluster once, instead of chaining every += through
-    // the cluster's memory.
+    // Consecutive points mostly share a cluster: accumulate each stretch of one id in registers
+    // and add it to the cluster once, instead of chaining every += through the cluster's
+    // memory. A point is one vector (x, y, z, 0): its box as lane-wise selects (the same as
+    // std::min / std::max one coordinate at a time), its sums and products as double lanes
+    // (each lane the same adds in the same order as one scalar per sum: the same bits).
+    typedef float Float4 __attribute__((vector_size(16)));
+    typedef int32_t Int4 __attribute__((vector_size(16)));
+    typedef double Double4 __attribute__((vector_size(32)));
+    const Int4 xyz_only = {-1, -1, -1, 0};  // the column's lane -> +0
     const SortedPoint* pts = pts_.data();
     const uint32_t* ids = point_id_.data();
     const uint32_t num_points = static_cast<uint32_t>(point_id_.size());
+    const auto load = [&](uint32_t k) {
+        Int4 bits;
+        std::memcpy(&bits, &pts[k], sizeof bits);
+        bits &= xyz_only;
+        Float4 p;
+        std::memcpy(&p, &bits, sizeof p);
+        return p;
+    };
     for (uint32_t k = 0; k < num_points;) {
         const uint32_t id = ids[k];
         if (id == 0) {
@@ -1040,22 +1193,22 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             continue;
         }
         const uint32_t begin = k;
-        float lo_x = inf, lo_y = inf, lo_z = inf, hi_x = -inf, hi_y = -inf, hi_z = -inf;
-        double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, syy = 0;
+        Float4 lo = Float4{} + inf, hi = Float4{} - inf;
+        Double4 sum = {0, 0, 0, 0}, products = {0, 0, 0, 0};  // x, y, z; xx, xy, yy
         for (; k < num_points && ids[k] == id; ++k) {
-            const float x = pts[k].x, y = pts[k].y, z = pts[k].z;
-            lo_x = std::min(lo_x, x), lo_y = std::min(lo_y, y), lo_z = std::min(lo_z, z);
-            hi_x = std::max(hi_x, x), hi_y = std::max(hi_y, y), hi_z = std::max(hi_z, z);
-            sx += x, sy += y, sz += z;
-            sxx += double(x) * x, sxy += double(x) * y, syy += double(y) * y;
+            const Float4 p = load(k);
+            lo = p < lo ? p : lo, hi = hi < p ? p : hi;
+            const Double4 v = __builtin_convertvector(p, Double4);
+            sum += v;
+            products += Double4{v[0], v[0], v[1], 0} * Double4{v[0], v[1], v[1], 0};
         }
         ClusterSummary& c = clusters[id - 1];
-        Sums& sum = sums_[id - 1];
+        Sums& s = sums_[id - 1];
         c.num_points += k - begin;
-        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo_x, lo_y, lo_z));
-        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi_x, hi_y, hi_z));
-        sum.sx += sx, sum.sy += sy, sum.sz += sz;
-        sum.sxx += sxx, sum.sxy += sxy, sum.syy += syy;
+        c.aabb_min = c.aabb_min.cwiseMin(Eigen::Vector3f(lo[0], lo[1], lo[2]));
+        c.aabb_max = c.aabb_max.cwiseMax(Eigen::Vector3f(hi[0], hi[1], hi[2]));
+        s.sx += sum[0], s.sy += sum[1], s.sz += sum[2];
+        s.sxx += products[0], s.sxy += products[1], s.syy += products[2];
     }
     // Oriented box axes from the 2-D covariance of xy.
     for (uint32_t k = 0; k < num; ++k) {
@@ -1070,7 +1223,8 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
         s.cos_yaw = std::cos(c.obb_yaw), s.sin_yaw = std::sin(c.obb_yaw);
         s.extent = Eigen::Vector4f(inf, -inf, inf, -inf);  // umin, umax, vmin, vmax
     }
-    // Pass 2: extents along the box axes (same stretch accumulation).
+    // Pass 2: extents along the box axes (same stretch accumulation), (u, v) as two lanes:
+    // u = cos x + sin y, v = -sin x + cos y, each product and sum as in scalar code.
     for (uint32_t k = 0; k < num_points;) {
         const uint32_t id = ids[k];
         if (id == 0) {
@@ -1078,17 +1232,18 @@ void RunClustering::summarize(const TriGridField& field, const TerrainModel& ter
             continue;
         }
         Sums& sum = sums_[id - 1];
-        const float cos_yaw = sum.cos_yaw, sin_yaw = sum.sin_yaw;
-        float u_min = inf, u_max = -inf, v_min = inf, v_max = -inf;
+        const Float4 along_x = {sum.cos_yaw, -sum.sin_yaw, 0.f, 0.f};
+        const Float4 along_y = {sum.sin_yaw, sum.cos_yaw, 0.f, 0.f};
+        Float4 lo = Float4{} + inf, hi = Float4{} - inf;
         for (; k < num_points && ids[k] == id; ++k) {
-            const float u = cos_yaw * pts[k].x + sin_yaw * pts[k].y;
-            const float v = -sin_yaw * pts[k].x + cos_yaw * pts[k].y;
-            u_min = std::min(u_min, u), u_max = std::max(u_max, u);
-            v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+            const Float4 p = load(k);
+            const Float4 uv =
+                along_x * Float4{p[0], p[0], 0.f, 0.f} + along_y * Float4{p[1], p[1], 0.f, 0.f};
+            lo = uv < lo ? uv : lo, hi = hi < uv ? uv : hi;
         }
         Eigen::Vector4f& e = sum.extent;
-        e[0] = std::min(e[0], u_min), e[1] = std::max(e[1], u_max);
-        e[2] = std::min(e[2], v_min), e[3] = std::max(e[3], v_max);
+        e[0] = std::min(e[0], lo[0]), e[1] = std::max(e[1], hi[0]);
+        e[2] = std::min(e[2], lo[1]), e[3] = std::max(e[3], hi[1]);
     }
     for (uint32_t k = 0; k < num; ++k) {
         ClusterSummary& c = clusters[k];

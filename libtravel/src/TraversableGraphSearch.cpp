@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "Prefault.hpp"
@@ -44,7 +45,8 @@ struct EdgeTest {
     float sin_eps1;
     explicit EdgeTest(const Params& params)
         : eps2(params.eps2), sin_eps1(static_cast<float>(std::sin(params.eps1))) {}
-    bool operator()(const TriNode& a, const TriNode& b) const {
+    template <class Node>  // TriNode or HotNode: reads mean and normal
+    bool operator()(const Node& a, const Node& b) const {
         const Eigen::Vector3f d = b.mean - a.mean;
         const float len = d.norm();
         if (!(len > 0.f)) return true;  // coincident means: nothing separates the nodes
@@ -79,7 +81,10 @@ void TraversableGraphSearch::reserve(const TriGridField& field) {
     const std::size_t nodes = static_cast<std::size_t>(field.numNodes());
     detail::prefault(reached_, nodes), detail::prefault(reached_where_, nodes);
     detail::prefault(candidates_, nodes), detail::prefault(nearest_, nodes);
+    detail::prefault(candidate_keys_, nodes);
     detail::prefault(node_reached_, nodes), detail::prefault(node_xy_, nodes);
+    detail::prefault(terrain_slot_, nodes), detail::prefault(hot_, nodes);
+    detail::prefault(terrain_, nodes);
     const int n = field.cellsPerSide();
     const std::size_t bit_words =
         static_cast<std::size_t>(n) * static_cast<std::size_t>((n + 63) / 64);
@@ -92,13 +97,14 @@ void TraversableGraphSearch::markReached(int node, int16_t component, const TriG
     reached.reached = true;
     reached.component = component;
     node_reached_[node] = 1;
-    node_xy_[node] = reached.mean.head<2>();
+    const Eigen::Vector2f xy = hot_[terrain_slot_[node]].mean.head<2>();
+    node_xy_[node] = xy;
     const int cell = node / 4, n = field.cellsPerSide();
     const int ix = cell % n, iy = cell / n;
     row_cells_[static_cast<std::size_t>(iy) * words_ + ix / 64] |= uint64_t{1} << (ix % 64);
     col_cells_[static_cast<std::size_t>(ix) * words_ + iy / 64] |= uint64_t{1} << (iy % 64);
     reached_.push_back(node);
-    reached_where_.push_back({reached.mean.head<2>(), cell % n, cell / n});
+    reached_where_.push_back({xy, ix, iy});
 }
 
 void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGridField& field,
@@ -109,30 +115,31 @@ void TraversableGraphSearch::searchFrom(int root, int16_t component, const TriGr
     markReached(root, component, field, model);
     for (; head < reached_.size(); ++head) {
         const int i = reached_[head];
+        const HotNode& from = hot_[terrain_slot_[i]];
         const TriGridField::Neighbours& nb = field.neighbours(i);
         for (int k = 0; k < nb.count; ++k) {
             const int j = nb.ids[k];
-            const TriNode& next = model.nodes[j];
-            if (next.reached || next.node_class != NodeClass::Terrain) continue;
-            if (!traversable(model.nodes[i], next)) continue;
+            const int32_t slot = terrain_slot_[j];
+            if (slot < 0 || node_reached_[j]) continue;  // not terrain, or reached
+            if (!traversable(from, hot_[slot])) continue;
             markReached(j, component, field, model);
         }
     }
 }
 
-// The reached node whose mean is nearest (xy) to `cand`'s, at most sqrt(max_dist2) away, or -1
-// (nearest = that node, best_d2 = its squared distance, or max_dist2; cx, cy = the candidate's
-// cell). Cells are visited in rings of growing Chebyshev radius around the candidate's cell, up
-// to window_rings. Means lie inside their cells, so a node of ring r is at least (r - 1) r_cell
-// away: the scan stops when that exceeds the best distance found (exact, not a heuristic): the
-// result is the nearest reached node of the window, ties to the lower id.
-void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridField& field,
+// The reached node whose mean is nearest (xy) to `xy` (a candidate's mean), at most
+// sqrt(max_dist2) away, or -1 (nearest = that node, best_d2 = its squared distance, or
+// max_dist2; cx, cy = the candidate's cell). Cells are visited in rings of growing Chebyshev
+// radius around the candidate's cell, up to window_rings. Means lie inside their cells, so a node
+// of ring r is at least (r - 1) r_cell away: the scan stops when that exceeds the best distance
+// found (exact, not a heuristic): the result is the nearest reached node of the window, ties to
+// the lower id.
+void TraversableGraphSearch::nearestReached(const Eigen::Vector2f& xy, const TriGridField& field,
                                             float max_dist2, Nearest& near) const {
     const int n = field.cellsPerSide();
     const int cx = near.cx, cy = near.cy;
     int nearest = -1;
     float best = max_dist2;
-    const Eigen::Vector2f xy = cand.mean.head<2>();
     const auto visit_cell = [&](int cell) {
         for (int k = 0; k < 4; ++k) {
             const int id = 4 * cell + k;
@@ -171,15 +178,14 @@ void TraversableGraphSearch::nearestReached(const TriNode& cand, const TriGridFi
 // after each accepted seed.
 constexpr std::size_t kMaxNewReached = 64;
 int TraversableGraphSearch::nearestReachedNow(std::size_t c, const TriGridField& field,
-                                              const TerrainModel& model, float max_dist2) {
+                                              float max_dist2) {
     Nearest& near = nearest_[c];
-    const TriNode& cand = model.nodes[candidates_[c]];
     if (near.cx < 0) return -1;  // mean outside the grid
+    const Eigen::Vector2f xy = hot_[terrain_slot_[candidates_[c]]].mean.head<2>();
     const std::size_t reached = reached_.size();
     if (near.seen == 0 || reached - near.seen > kMaxNewReached) {
-        nearestReached(cand, field, max_dist2, near);
+        nearestReached(xy, field, max_dist2, near);
     } else {
-        const Eigen::Vector2f xy = cand.mean.head<2>();
         for (std::size_t k = near.seen; k < reached; ++k) {
             const ReachedWhere& where = reached_where_[k];
             if (std::abs(where.cx - near.cx) > window_rings_ ||
@@ -194,13 +200,39 @@ int TraversableGraphSearch::nearestReachedNow(std::size_t c, const TriGridField&
     return near.node;
 }
 
+namespace {
+// Key that orders floats as their values do (for non-NaN values; -0 and +0 are one key).
+uint32_t orderedBits(float value) {
+    value += 0.f;  // -0 -> +0
+    uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+}
+}  // namespace
+
 void TraversableGraphSearch::run(const TriGridField& field, const Params& params,
                                  TerrainModel& model) {
     model.seed_node = -1;
     model.num_components = 0;
-    for (TriNode& node : model.nodes) node.reached = false, node.component = -1;
-    // Compact copies of `reached` and of the reached nodes' mean xy for the nearest-node scans
-    // (a TriNode is ~100 bytes: the scans would read one cache line per node).
+    // One pass over all nodes (most of them empty: OS128 has 3.4k of 14.4k nodes with points):
+    // reset reached / component where a previous search set them (after embedding they are
+    // already reset: no write, so no cache line of an untouched node is dirtied) and copy
+    // what the searches read of the terrain nodes into hot_.
+    const int num_nodes = static_cast<int>(model.nodes.size());
+    terrain_slot_.resize(model.nodes.size());
+    hot_.clear(), terrain_.clear();
+    for (int id = 0; id < num_nodes; ++id) {
+        TriNode& node = model.nodes[id];
+        if (node.reached || node.component != -1) node.reached = false, node.component = -1;
+        if (node.node_class != NodeClass::Terrain) {
+            terrain_slot_[id] = -1;
+            continue;
+        }
+        terrain_slot_[id] = static_cast<int32_t>(hot_.size());
+        hot_.push_back({node.mean, node.normal, node.d, node.weight});
+        terrain_.push_back(id);
+    }
+    // Compact copies of `reached` and of the reached nodes' mean xy for the nearest-node scans.
     node_reached_.assign(model.nodes.size(), 0);
     node_xy_.resize(model.nodes.size());
     const int n = field.cellsPerSide();
@@ -210,13 +242,13 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     // Start node (see the decisions above).
     const float radius2 = static_cast<float>(params.seed_search_radius * params.seed_search_radius);
     int seed = -1;
-    for (int id = 0; id < static_cast<int>(model.nodes.size()); ++id) {
-        const TriNode& node = model.nodes[id];
-        if (node.node_class != NodeClass::Terrain) continue;
+    float seed_weight = 0.f;
+    for (std::size_t t = 0; t < terrain_.size(); ++t) {
+        const HotNode& node = hot_[t];
         if (node.mean.head<2>().squaredNorm() > radius2) continue;
         if (std::fabs(node.mean.z() + params.sensor_height) > params.seed_height_tolerance)
             continue;
-        if (seed < 0 || node.weight > model.nodes[seed].weight) seed = id;
+        if (seed < 0 || node.weight > seed_weight) seed = terrain_[t], seed_weight = node.weight;
     }
     if (seed < 0) return;
     model.seed_node = seed;
@@ -224,28 +256,36 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
     searchFrom(seed, 0, field, params, model);
     int16_t component = 1;
 
-    // Re-seeding from plausible ground only.
-    candidates_.clear();
-    for (int id = 0; id < static_cast<int>(model.nodes.size()); ++id) {
-        if (model.nodes[id].node_class == NodeClass::Terrain && !model.nodes[id].reached)
-            candidates_.push_back(id);
+    // Re-seeding from plausible ground only: the unreached terrain nodes at least min_weight
+    // heavy, in decreasing weight (ties: lower id first).
+    const float min_weight = static_cast<float>(params.reseed_min_weight_ratio) * seed_weight;
+    candidates_.clear(), candidate_keys_.clear();
+    bool nan_weight = false;
+    for (std::size_t t = 0; t < terrain_.size(); ++t) {
+        const int id = terrain_[t];
+        if (node_reached_[id] || hot_[t].weight < min_weight) continue;
+        candidates_.push_back(id);
+        nan_weight |= std::isnan(hot_[t].weight);
+        // Decreasing weight, then increasing id (the ids are in increasing order here).
+        candidate_keys_.push_back(uint64_t{~orderedBits(hot_[t].weight)} << 32 |
+                                  static_cast<uint32_t>(id));
     }
-    std::stable_sort(candidates_.begin(), candidates_.end(),
-                     [&](int a, int b) { return model.nodes[a].weight > model.nodes[b].weight; });
-    const float min_weight =
-        static_cast<float>(params.reseed_min_weight_ratio) * model.nodes[seed].weight;
-    // Too light candidates never qualify: drop them once (the order of the rest is kept).
-    candidates_.erase(std::remove_if(candidates_.begin(), candidates_.end(),
-                                     [&](int id) { return model.nodes[id].weight < min_weight; }),
-                      candidates_.end());
+    if (nan_weight) {  // no order of values: keep the comparison sort's own answer
+        std::stable_sort(candidates_.begin(), candidates_.end(), [&](int a, int b) {
+            return hot_[terrain_slot_[a]].weight > hot_[terrain_slot_[b]].weight;
+        });
+    } else {
+        std::sort(candidate_keys_.begin(), candidate_keys_.end());
+        for (std::size_t c = 0; c < candidates_.size(); ++c)
+            candidates_[c] = static_cast<int>(candidate_keys_[c] & 0xffffffffu);
+    }
     const float max_dist2 =
         static_cast<float>(params.reseed_max_distance * params.reseed_max_distance);
     window_rings_ = static_cast<int>(std::ceil(std::sqrt(max_dist2) / field.resolution())) + 1;
     nearest_.resize(candidates_.size());
     for (std::size_t c = 0; c < candidates_.size(); ++c) {
-        const TriNode& cand = model.nodes[candidates_[c]];
+        const HotNode& cand = hot_[terrain_slot_[candidates_[c]]];
         const int node = field.nodeOf(cand.mean.x(), cand.mean.y());
-        const int n = field.cellsPerSide();
         nearest_[c] = Nearest{};
         if (node >= 0) nearest_[c].cx = (node / 4) % n, nearest_[c].cy = (node / 4) / n;
     }
@@ -255,10 +295,10 @@ void TraversableGraphSearch::run(const TriGridField& field, const Params& params
         for (std::size_t c = 0; c < candidates_.size(); ++c) {
             const int id = candidates_[c];
             if (node_reached_[id]) continue;
-            const TriNode& cand = model.nodes[id];
-            const int nearest = nearestReachedNow(c, field, model, max_dist2);
+            const HotNode& cand = hot_[terrain_slot_[id]];
+            const int nearest = nearestReachedNow(c, field, max_dist2);
             if (nearest < 0) continue;
-            const TriNode& ref = model.nodes[nearest];
+            const HotNode& ref = hot_[terrain_slot_[nearest]];
             const Eigen::Vector2f mid = 0.5f * (ref.mean + cand.mean).head<2>();
             const float gap = planeHeightAt(ref.normal, ref.d, mid.x(), mid.y()) -
                               planeHeightAt(cand.normal, cand.d, mid.x(), mid.y());

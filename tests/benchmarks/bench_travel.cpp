@@ -245,7 +245,7 @@ void runStage(benchmark::State& state, CaseId id, Stage stage) {
     RunClustering clustering;
     std::vector<uint32_t> cluster_id(cloud.size(), 0);
     std::vector<ClusterSummary> clusters;
-    preprocess(cloud, params, {}, aligned);
+    preprocess(cloud, params, {}, aligned, &field.geometry());
     field.embed(aligned, model);
     fitNodes(field, params, model);
     search.run(field, params, model);
@@ -257,7 +257,7 @@ void runStage(benchmark::State& state, CaseId id, Stage stage) {
     for (auto _ : state) {
         switch (stage) {
             case kPreprocess:
-                preprocess(cloud, params, {}, aligned);
+                preprocess(cloud, params, {}, aligned, &field.geometry());
                 break;
             case kEmbedding:
                 field.embed(aligned, model);

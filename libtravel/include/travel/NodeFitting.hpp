@@ -10,7 +10,8 @@
 
 namespace travel {
 
-/// Fills normal, mean, d, eigenvalues, weight, lpr and node_class of every node with points.
+/// Fills normal, mean, d, eigenvalues, weight, lpr and node_class of every node with points
+/// (field.occupiedNodes(): `model` is the one field.embed() filled last).
 void fitNodes(const TriGridField& field, const Params& params, TerrainModel& model);
 
 }  // namespace travel

@@ -148,6 +148,11 @@ struct AutoReal {
       "The face rule's climb steps over up to this many consecutive rings without a return "      \
       "(foliage, mesh fences and dark paint return part of the rays): a porous face keeps its "   \
       "foot. 0 = an empty ring ends the climb")                                                   \
+    X(double, vertical_face_max_thickness, 0.03, "m", 0.0, 100.0,                                 \
+      "Walls scope only: a foot is taken only under a thin face, half of the returns of its "     \
+      "column from the face up (8 rings) within this of their median xy range: a wall or fence "  \
+      "is one vertical plane (range noise), a hedge scatters its returns through its depth "      \
+      "(SemanticKITTI: vegetation). 0 = no test")                                                 \
     X(double, vertical_face_min_foot_height, 0.0, "m", 0.0, 100.0,                                \
       "A face foot stands at least this high above its ground plane (eq. 5's signed "             \
       "distance): lower points are on the ground as far as range noise tells (SemanticKITTI's "   \
@@ -176,7 +181,9 @@ struct AutoReal {
     X(double, max_elevation_deg, 2.0, "deg", -90.0, 90.0,                                         \
       "Highest beam elevation, for elevation_table: uniform")                                     \
     /* ---- Above-ground object segmentation (Sec. IV) ---- */                                    \
-    X(bool, cluster_objects, true, "", 0, 1, "Run the above-ground object segmentation")          \
+    X(bool, cluster_objects, true, "", 0, 1,                                                      \
+      "Run the above-ground object segmentation (the face rule's walls scope builds its runs "    \
+      "either way, and then reports no cluster)")                                                 \
     X(double, horizontal_merge_dist, 0.4, "m", 0.0, 100.0,                                        \
       "T_horz: neighbouring points of a ring closer than this (3-D) form one run")                \
     X(int, horizontal_skip_runs, 5, "", 0, 10000,                                                 \

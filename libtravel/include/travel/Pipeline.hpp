@@ -47,7 +47,10 @@ class Pipeline {
     const Params& configuredParams() const { return configured_; }
 
     /// Traversable ground segmentation (TGS) of one frame, then (params.cluster_objects)
-    /// above-ground object segmentation (AOS) of its non-ground points.
+    /// above-ground object segmentation (AOS) of its non-ground points. The face rule's walls
+    /// scope (vertical_face_min_rise > 0, vertical_face_min_length > 0) runs the AOS runs even
+    /// without cluster_objects (its walls are clusters), reporting no cluster then: the labels
+    /// are the same either way.
     void process(const PointCloud& cloud, const FrameInput& input, Result& result);
 
     /// Names where fixed mount_roll_deg / mount_pitch_deg come from when the caller sets them
@@ -73,7 +76,8 @@ class Pipeline {
 
     /// The aligned coordinates of the last frame (sensor-centred, gravity-aligned).
     const AlignedCloud& aligned() const { return aligned_; }
-    /// Rings and columns of the last frame (valid when params.cluster_objects).
+    /// Rings and columns of the last frame (valid when params.cluster_objects or the face rule
+    /// is on).
     const RangeImage& rangeImage() const { return range_image_; }
 
   private:

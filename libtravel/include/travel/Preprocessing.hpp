@@ -12,6 +12,7 @@
 
 #include "travel/Params.hpp"
 #include "travel/PointCloud.hpp"
+#include "travel/TerrainModel.hpp"
 
 namespace travel {
 
@@ -37,6 +38,11 @@ struct AlignedCloud {
     std::vector<uint8_t> valid;  ///< 1 = valid point, 0 = invalid (label Invalid)
     std::size_t num_valid = 0;
     Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();  ///< applied sensor->aligned
+    /// Tri-grid node of every point on `node_grid` (NodeLocator: numNodes() for invalid points
+    /// and points off the grid), when preprocess() was given a grid; else empty. Computed while
+    /// the point is in registers, so TriGridField::embed does not read x and y again.
+    std::vector<uint32_t> node;
+    TriGridGeometry node_grid;
 };
 
 /// Rotation from the sensor frame to the vehicle frame, from mount_{yaw,pitch,roll}_deg:
@@ -51,9 +57,14 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
 /// Fill 'out' from 'cloud': invalid points (non-finite, exactly zero, outside
 /// [min_range, max_range] in 3-D range, inside the self_box: the own vehicle, tested in the
 /// vehicle frame before deskew) are flagged and never read again; valid points are
-/// deskewed (if params.deskew and times + velocity are given) then rotated.
+/// deskewed (if params.deskew and times + velocity are given) then rotated. With a `grid`, also
+/// out.node (locateNodes()); without, out.node is emptied.
 void preprocess(const PointCloud& cloud, const Params& params, const FrameInput& input,
-                AlignedCloud& out);
+                AlignedCloud& out, const TriGridGeometry* grid = nullptr);
+
+/// node[i] = the node of aligned point i on `grid` (NodeLocator), for cloud.x, y and valid.
+void locateNodes(const TriGridGeometry& grid, const AlignedCloud& cloud,
+                 std::vector<uint32_t>& node);
 
 /// Whether params' self_box holds any volume (min < max on every axis): otherwise it is off.
 bool hasSelfBox(const Params& params);

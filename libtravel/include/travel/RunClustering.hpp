@@ -136,6 +136,10 @@ class RunClustering {
     std::vector<SortedPoint> pts_;
     std::vector<uint32_t> row_begin_;
     std::vector<uint32_t> key_count_;
+    int cols_ = 0;  // of the range image of the last horizontal()
+    // The first sorted point of `row` in column `col` or after, the row's end if none: one
+    // lookup in the counting sort's cell offsets (no search).
+    uint32_t firstPointFrom(int row, int col) const;
     std::vector<uint32_t> input_, key_;  // the points to sort and their keys, in input order
     std::vector<float> range_;           // of each sorted point
 
@@ -170,7 +174,13 @@ class RunClustering {
     struct NearPair {
         uint32_t a, b;  // runs of the upper and the lower row whose boxes are near
     };
-    std::vector<NearPair> near_;      // see vertical()
+    std::vector<NearPair> near_;  // see vertical()
+    // vertical(): blocks of up to 4 candidate runs (the box test's lanes) of one run `fixed`:
+    // candidates first .. min(first + 4, end) - 1.
+    struct CandidateBlock {
+        uint32_t fixed, first, end;
+    };
+    std::vector<CandidateBlock> blocks_;
     std::vector<int32_t> point_run_;  // run of each sorted point
     // The points of a run, in column order: from run_first_, each point's successor, up to
     // kEndOfRun.

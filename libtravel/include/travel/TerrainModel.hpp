@@ -103,6 +103,12 @@ struct TriGridGeometry {
         return {origin_xy + (ix + 0.5f) * resolution, origin_xy + (iy + 0.5f) * resolution};
     }
 
+    /// The same grid (resolution, size and origin).
+    bool sameGrid(const TriGridGeometry& other) const {
+        return resolution == other.resolution && cells_per_side == other.cells_per_side &&
+               origin_xy == other.origin_xy;
+    }
+
     /// Node holding (x, y), or -1 outside the grid (also for NaN and huge coordinates).
     int nodeAt(float x, float y) const {
         if (!hasCells()) return -1;
@@ -138,6 +144,34 @@ struct TriGridGeometry {
             xy[k] = latticeXY(l[0], l[1]);
         }
         return xy;
+    }
+};
+
+/// nodeAt() for a loop over every point of a frame: branch-free, so that the loop vectorises,
+/// and numNodes() (`outside`) instead of -1 off the grid and for invalid points. A copy of the
+/// geometry's values in the loop's registers (a member function would reread them after every
+/// store of the loop). The same floats and the same triangle as nodeAt().
+struct NodeLocator {
+    float inv_r, origin, limit;
+    int side;
+    uint32_t outside;
+
+    explicit NodeLocator(const TriGridGeometry& grid)
+        : inv_r(1.f / grid.resolution),
+          origin(grid.origin_xy),
+          limit(static_cast<float>(grid.cells_per_side)),
+          side(grid.cells_per_side),
+          outside(static_cast<uint32_t>(grid.numNodes())) {}
+
+    uint32_t operator()(float x, float y, bool valid) const {
+        // Bitwise & of the bools: GCC leaves && as branches here, and the loop unvectorised.
+        const float gx = (x - origin) * inv_r, gy = (y - origin) * inv_r;
+        const bool in_x = (gx >= 0.f) & (gx < limit), in_y = (gy >= 0.f) & (gy < limit);
+        // Outside points are moved to 0 so the float->int conversion stays defined (NaN, huge
+        // values); inside points keep their exact position.
+        const float cx = in_x ? gx : 0.f, cy = in_y ? gy : 0.f;
+        const int node = triangleNodeOfGridCoords(cx, cy, side);
+        return (valid & in_x & in_y) ? static_cast<uint32_t>(node) : outside;
     }
 };
 

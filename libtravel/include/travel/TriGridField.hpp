@@ -35,7 +35,8 @@ class TriGridField {
 
     /// Bucket the valid points into nodes; fills model.nodes[*].begin/count and the sorted
     /// coordinates below. Invalid points and points outside the grid are left out (the caller
-    /// labels them).
+    /// labels them). Takes the points' nodes from cloud.node when preprocess() found them on
+    /// this grid (preprocess(..., &geometry())), else finds them.
     void embed(const AlignedCloud& cloud, TerrainModel& model);
 
     const TriGridGeometry& geometry() const { return geometry_; }
@@ -63,17 +64,20 @@ class TriGridField {
     const std::vector<float>& sy() const { return sy_; }
     const std::vector<float>& sz() const { return sz_; }
     const std::vector<uint32_t>& order() const { return order_; }
+    /// The nodes that embed() gave points (count > 0), ascending.
+    const std::vector<uint32_t>& occupiedNodes() const { return occupied_; }
 
   private:
     TriGridGeometry geometry_;
     std::vector<Neighbours> neighbours_;
     std::vector<int32_t> vertices_;  // 3 per node
 
-    std::vector<uint32_t> point_node_;  // per input point; numNodes() = not embedded
+    std::vector<uint32_t> point_node_;  // per input point, when the cloud has no nodes
     std::vector<uint32_t> rank_;        // per input point: earlier points of its node
     std::vector<uint32_t> node_start_;
     std::vector<float> sx_, sy_, sz_;
     std::vector<uint32_t> order_;
+    std::vector<uint32_t> occupied_;
 };
 
 }  // namespace travel

@@ -25,7 +25,10 @@
 //   unlabelWallFeet() after the object segmentation, only in the range-image columns whose
 //   lowest clustered point belongs to a cluster whose xy box has a side at least that long
 //   (RunClustering::wallBottoms): longer than any car seen from any side, so car sills and
-//   tyres never lose their road. The same climb; each foot joins its face's cluster.
+//   tyres never lose their road. The same climb; each foot joins its face's cluster. A foot is
+//   taken only under a thin face (vertical_face_max_thickness): a wall or fence is one vertical
+//   plane, a hedge (vegetation in SemanticKITTI, ground below 0.75 h_s in its protocol A)
+//   scatters its returns through its depth.
 #pragma once
 
 #include <array>
@@ -93,6 +96,10 @@ class VerticalFaces {
     static int32_t climbToFace(const Cell* cell, std::ptrdiff_t stride, int steps, float foot_z,
                                float foot_range, const std::vector<PointClass>& labels,
                                float min_rise, int max_gap);
+    // The thickness of a face: the spread of the xy ranges of the returns in cell[0..rings)
+    // (consecutive rings of one column, from the face's point up; see VerticalFaces.cpp),
+    // leaving out those 0.5 m or more behind face_range; 0 with fewer than two.
+    static float faceThickness(const Cell* cell, int rings, float face_range);
     void finish(std::vector<PointClass>& labels, std::array<std::size_t, 4>& counts) const;
     std::vector<Cell> cells_;  // rows x cols (every ground point's scope)
     // The walls' scope: a window of rows per column, and the candidate feet (ground points of
@@ -104,8 +111,9 @@ class VerticalFaces {
         float min_r2 = 0.f;  // a foot's squared xy range is at least this
     };
     std::vector<Window> windows_;
-    std::vector<uint32_t> spans_;      // per column + 1: its window's lo | rows << 16
-    std::vector<uint32_t> in_window_;  // the points in a window
+    std::vector<uint32_t> spans_;        // per column + 1: its window's lo | rows << 16
+    std::vector<uint8_t> window_flags_;  // per point (padded to 8): in a window
+    std::vector<uint32_t> in_window_;    // the points in a window
     std::vector<uint32_t> candidates_;
     std::vector<uint32_t> face_feet_;   // points relabelled by the last unlabelFaceFeet()
     std::vector<uint32_t> foot_faces_;  // the face point of each
