@@ -46,6 +46,7 @@
 namespace travel {
 namespace {
 
+using detail::anyLane;
 using detail::kLanes;
 using detail::LaneMask;
 using detail::Lanes;
@@ -168,9 +169,9 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
 // 1.8 clearance_radius.
 class NearHighPoints {
   public:
-    void build(const TriGridField& field, const TerrainModel& model, int k, Eigen::Vector2f lo,
-               Eigen::Vector2f hi, const float* x, const float* y, const float* z, float radius,
-               float clearance) {
+    TRAVEL_INTO_CALLER void build(const TriGridField& field, const TerrainModel& model, int k,
+                                  Eigen::Vector2f lo, Eigen::Vector2f hi, const float* x,
+                                  const float* y, const float* z, float radius, float clearance) {
         lo.array() -= radius, hi.array() += radius;
         // Cells of radius / 2, at most kMaxSide a side (a tiny radius: larger cells, still
         // covering the radius in 2 cells).
@@ -180,27 +181,22 @@ class NearHighPoints {
         origin_ = (lo / cell_).array().floor().matrix() * cell_;
         nx_ = std::min(kMaxSide + 1, static_cast<int>((hi.x() - origin_.x()) / cell_) + 1);
         ny_ = std::min(kMaxSide + 1, static_cast<int>((hi.y() - origin_.y()) / cell_) + 1);
-        high_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
+        // One spare cell past the map, which markNode's lanes without a cell write.
+        high_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
+        inv_cell_ = 1.f / cell_;
+        int exponent = 0;
+        exact_inverse_ = std::frexp(cell_, &exponent) == 0.5f && std::isfinite(inv_cell_);
         const TriNode& node = model.nodes[k];
-        const float s0 = node.normal.x(), s1 = node.normal.y(), s2 = node.normal.z();
-        const auto mark = [&](int j) {
-            const std::array<Eigen::Vector2f, 3> corners = model.triangleCorners(j);
-            Eigen::Vector2f t_lo = corners[0], t_hi = corners[0];
-            for (const Eigen::Vector2f& c : corners)
-                t_lo = t_lo.cwiseMin(c), t_hi = t_hi.cwiseMax(c);
-            if ((t_lo.array() > hi.array()).any() || (t_hi.array() < lo.array()).any()) return;
-            const TriNode& other = model.nodes[j];
-            for (uint32_t i = other.begin; i < other.begin + other.count; ++i) {
-                if (!(s0 * x[i] + s1 * y[i] + s2 * z[i] + node.d >= clearance)) continue;
-                const float gx = (x[i] - origin_.x()) / cell_, gy = (y[i] - origin_.y()) / cell_;
-                if (gx >= 0.f && gy >= 0.f && gx < static_cast<float>(nx_) &&
-                    gy < static_cast<float>(ny_))
-                    high_[static_cast<std::size_t>(gy) * nx_ + static_cast<std::size_t>(gx)] = 1;
-            }
-        };
-        mark(k);
+        plane_ = {node.normal.x(), node.normal.y(), node.normal.z(), node.d};
+        clearance_ = clearance;
+        // The bitmap's extent with a cell to spare on each side: a point outside it has no cell
+        // (mark() would drop it), so the lanes test it before any division.
+        extent_ = {origin_.x() - cell_, origin_.y() - cell_,
+                   origin_.x() + static_cast<float>(nx_ + 1) * cell_,
+                   origin_.y() + static_cast<float>(ny_ + 1) * cell_};
+        markNode(model, k, lo, hi, x, y, z);
         const TriGridField::Neighbours& nb = field.neighbours(k);
-        for (int m = 0; m < nb.count; ++m) mark(nb.ids[m]);
+        for (int m = 0; m < nb.count; ++m) markNode(model, nb.ids[m], lo, hi, x, y, z);
     }
     bool near(float x, float y) const {
         const int cx = static_cast<int>(std::floor((x - origin_.x()) / cell_));
@@ -212,10 +208,66 @@ class NearHighPoints {
     }
 
   private:
+    // The tall points of node j, when its triangle meets the box [lo, hi].
+    TRAVEL_INTO_CALLER void markNode(const TerrainModel& model, int j, Eigen::Vector2f lo,
+                                     Eigen::Vector2f hi, const float* x, const float* y,
+                                     const float* z) {
+        const std::array<Eigen::Vector2f, 3> corners = model.triangleCorners(j);
+        Eigen::Vector2f t_lo = corners[0], t_hi = corners[0];
+        for (const Eigen::Vector2f& c : corners) t_lo = t_lo.cwiseMin(c), t_hi = t_hi.cwiseMax(c);
+        if ((t_lo.array() > hi.array()).any() || (t_hi.array() < lo.array()).any()) return;
+        const float s0 = plane_[0], s1 = plane_[1], s2 = plane_[2], d = plane_[3];
+        const float clearance = clearance_;
+        const float x_lo = extent_[0], y_lo = extent_[1], x_hi = extent_[2], y_hi = extent_[3];
+        const TriNode& other = model.nodes[j];
+        const uint32_t end = other.begin + other.count;
+        const float ox = origin_.x(), oy = origin_.y(), cell = cell_, inv_cell = inv_cell_;
+        const bool exact_inverse = exact_inverse_;
+        const float cells_x = static_cast<float>(nx_), cells_y = static_cast<float>(ny_);
+        const LaneMask row = LaneMask{} + nx_, spare = LaneMask{} + nx_ * ny_;
+        uint8_t* high = high_.data();
+        // kLanes points at a time. Most blocks hold no tall point inside the extent; in the
+        // others, each lane finds its cell as mark() does (the same floats: x * 2^-k is x / 2^k
+        // exactly) and every lane stores, the lanes without a cell into the spare cell.
+        uint32_t i = other.begin;
+        for (; i + kLanes <= end; i += kLanes) {
+            const Lanes px = loadLanes(x + i), py = loadLanes(y + i);
+            const Lanes e = s0 * px + s1 * py + s2 * loadLanes(z + i) + d;
+            const LaneMask tall =
+                (e >= clearance) & (px >= x_lo) & (px < x_hi) & (py >= y_lo) & (py < y_hi);
+            if (!anyLane(tall)) continue;
+            Lanes gx = px - ox, gy = py - oy;
+            if (exact_inverse)
+                gx = gx * inv_cell, gy = gy * inv_cell;
+            else
+                gx = gx / cell, gy = gy / cell;
+            const LaneMask in_map =
+                tall & (gx >= 0.f) & (gy >= 0.f) & (gx < cells_x) & (gy < cells_y);
+            const Lanes zero = Lanes{};
+            gx = in_map ? gx : zero, gy = in_map ? gy : zero;  // converted only in range
+            const LaneMask cell_id =
+                __builtin_convertvector(gy, LaneMask) * row + __builtin_convertvector(gx, LaneMask);
+            const LaneMask at = in_map ? cell_id : spare;
+            for (int l = 0; l < kLanes; ++l) high[at[l]] = 1;
+        }
+        for (; i < end; ++i)
+            if (s0 * x[i] + s1 * y[i] + s2 * z[i] + d >= clearance) mark(x[i], y[i]);
+    }
+    TRAVEL_INTO_CALLER void mark(float x, float y) {
+        const float gx = (x - origin_.x()) / cell_, gy = (y - origin_.y()) / cell_;
+        if (gx >= 0.f && gy >= 0.f && gx < static_cast<float>(nx_) && gy < static_cast<float>(ny_))
+            high_[static_cast<std::size_t>(gy) * nx_ + static_cast<std::size_t>(gx)] = 1;
+    }
+
     static constexpr int kMaxSide = 64;
     Eigen::Vector2f origin_{0.f, 0.f};
     float cell_ = 1.f;
+    float inv_cell_ = 1.f;       // 1 / cell_
+    bool exact_inverse_ = true;  // cell_ a power of two: x * inv_cell_ == x / cell_, bit for bit
     int nx_ = 0, ny_ = 0;
+    std::array<float, 4> plane_{};   // the node's own plane (s, d)
+    float clearance_ = 0.f;          // own_plane_clearance
+    std::array<float, 4> extent_{};  // x_lo, y_lo, x_hi, y_hi: the bitmap and a cell around it
     std::vector<uint8_t> high_;
 };
 
@@ -308,11 +360,12 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
                 const LaneMask refit = e_refit < -outlier_dist ? kOutlier
                                        : e_refit < ground_dist ? kGround
                                                                : kNonGround;
-                for (int l = 0; l < kLanes; ++l) {
-                    const uint32_t j = i + static_cast<uint32_t>(l);
-                    if (label[l] != refit[l]) own_only.push_back({j, e[l]});
-                    labels[order[j]] = static_cast<PointClass>(refit[l]);
-                }
+                for (int l = 0; l < kLanes; ++l)
+                    labels[order[i + l]] = static_cast<PointClass>(refit[l]);
+                const LaneMask own_only_lanes = label != refit;
+                if (anyLane(own_only_lanes))
+                    for (int l = 0; l < kLanes; ++l)
+                        if (own_only_lanes[l]) own_only.push_back({i + l, e[l]});
                 if (heights)
                     for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e_refit[l];
                 continue;
