@@ -275,6 +275,68 @@ thread_local NearHighPoints near_high_scratch;  // reused across nodes and frame
 // Points of a node that only its own plane makes Ground (index in the sorted order, e_own).
 thread_local std::vector<std::pair<uint32_t, float>> own_only_scratch;
 
+// The points of node k, reached but not clear (a pole, sign, trunk, wall or car stands in it):
+// eq. 5 against the refitted plane (s, d), and also ground within [-outlier_dist, eps3) of the
+// node's own plane where NearHighPoints finds no point own_plane_clearance above that plane
+// within clearance_radius (see the header comment). Heights are the refitted plane's, or the
+// own plane's for the points that only it makes ground.
+TRAVEL_AVX2_CLONES
+void labelWithLocalClearance(const TriGridField& field, const TerrainModel& model, int k,
+                             const GroundPlane& ground, const float* sx, const float* sy,
+                             const float* sz, const uint32_t* order, float ground_dist,
+                             float outlier_dist, float clearance_radius, float clearance,
+                             NearHighPoints& near_high,
+                             std::vector<std::pair<uint32_t, float>>& own_only,
+                             std::vector<PointClass>& labels, std::vector<float>* heights) {
+    const TriNode& node = model.nodes[k];
+    const float s0 = ground.normal.x(), s1 = ground.normal.y();
+    const float s2 = ground.normal.z(), d = ground.d;
+    const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z(), od = node.d;
+    const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
+    const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
+    const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
+    own_only.clear();
+    // The refitted plane's class for every point; the points that only the own plane makes
+    // Ground (min(e, e_own) in labelPoints: -outlier_dist <= e_own < eps3 <= e) are listed.
+    const uint32_t end = node.begin + node.count;
+    uint32_t i = node.begin;
+    for (; i + kLanes <= end; i += kLanes) {
+        const Lanes x = loadLanes(sx + i), y = loadLanes(sy + i), z = loadLanes(sz + i);
+        const Lanes e = s0 * x + s1 * y + s2 * z + d;
+        const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
+        const LaneMask label = e < -outlier_dist ? kOutlier
+                               : e < ground_dist ? kGround
+                                                 : kNonGround;
+        for (int l = 0; l < kLanes; ++l) labels[order[i + l]] = static_cast<PointClass>(label[l]);
+        if (heights)
+            for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e[l];
+        const LaneMask own_only_lanes =
+            (e_own >= -outlier_dist) & (e_own < ground_dist) & (e >= ground_dist);
+        if (anyLane(own_only_lanes))
+            for (int l = 0; l < kLanes; ++l)
+                if (own_only_lanes[l]) own_only.push_back({i + l, e_own[l]});
+    }
+    for (; i < end; ++i) {
+        const float e = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
+        const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
+        labels[order[i]] = classifyByPlaneDistance(e, ground_dist, outlier_dist);
+        if (heights) (*heights)[order[i]] = e;
+        if (e_own >= -outlier_dist && e_own < ground_dist && e >= ground_dist)
+            own_only.push_back({i, e_own});
+    }
+    if (own_only.empty()) return;
+    Eigen::Vector2f lo(sx[own_only[0].first], sy[own_only[0].first]), hi = lo;
+    for (const auto& [j, e_own] : own_only)
+        lo = lo.cwiseMin(Eigen::Vector2f(sx[j], sy[j])),
+        hi = hi.cwiseMax(Eigen::Vector2f(sx[j], sy[j]));
+    near_high.build(field, model, k, lo, hi, sx, sy, sz, clearance_radius, clearance);
+    for (const auto& [j, e_own] : own_only) {
+        if (near_high.near(sx[j], sy[j])) continue;
+        labels[order[j]] = PointClass::Ground;
+        if (heights) (*heights)[order[j]] = e_own;
+    }
+}
+
 }  // namespace
 
 // With AVX2 (CpuDispatch.hpp) the per-point loops run 8 points an instruction.
@@ -298,8 +360,6 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
     const float clearance_radius = static_cast<float>(params.clearance_radius);
     const bool local_clearance = params.label_with_node_plane && clearance_radius > 0.f;
-    NearHighPoints& near_high = near_high_scratch;
-    std::vector<std::pair<uint32_t, float>>& own_only = own_only_scratch;
     const int num_nodes = static_cast<int>(model.nodes.size());
     // classifyByPlaneDistance's classes as lane values.
     const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
@@ -337,13 +397,13 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z();
         const uint32_t end = node.begin + node.count;
         const bool own = clear[k] != 0;
-        // Not clear, but reached: the own plane labels the points with nothing tall near them.
-        const bool local = !own && local_clearance && node.reached;
-        const float od = own || local ? node.d : std::numeric_limits<float>::infinity();
-        // With `local`, the points that only the own plane makes Ground keep the refitted
-        // plane's class for now; once the node is done, those with no tall point near them
-        // become Ground (NearHighPoints is built once, around them only).
-        own_only.clear();
+        if (!own && local_clearance && node.reached) {  // see labelWithLocalClearance
+            labelWithLocalClearance(field, model, k, *ground, sx, sy, sz, order, ground_dist,
+                                    outlier_dist, clearance_radius, own_plane_clearance,
+                                    near_high_scratch, own_only_scratch, labels, heights);
+            continue;
+        }
+        const float od = own ? node.d : std::numeric_limits<float>::infinity();
         // kLanes points at a time: the same floats as the scalar loop below (the same products
         // and sums in the same order, no FMA) and the same selections; only the points of a
         // clear node that eq. 5 leaves non-ground ask the neighbours, one by one.
@@ -356,20 +416,6 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
             const LaneMask label = e < -outlier_dist ? kOutlier
                                    : e < ground_dist ? kGround
                                                      : kNonGround;
-            if (local) {  // the own plane counts only where it makes the point ground
-                const LaneMask refit = e_refit < -outlier_dist ? kOutlier
-                                       : e_refit < ground_dist ? kGround
-                                                               : kNonGround;
-                for (int l = 0; l < kLanes; ++l)
-                    labels[order[i + l]] = static_cast<PointClass>(refit[l]);
-                const LaneMask own_only_lanes = label != refit;
-                if (anyLane(own_only_lanes))
-                    for (int l = 0; l < kLanes; ++l)
-                        if (own_only_lanes[l]) own_only.push_back({i + l, e[l]});
-                if (heights)
-                    for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e_refit[l];
-                continue;
-            }
             // Most blocks have no point for the neighbours' planes: a plain scatter of labels.
             bool ask = false;
             if (own)
@@ -394,31 +440,14 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
-            float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
+            const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
             PointClass label = classifyByPlaneDistance(e, ground_dist, outlier_dist);
             if (own && label == PointClass::NonGround &&
                 onClearNeighbourPlane(field, model, clear, k, sx[i], sy[i], sz[i], ground_dist,
                                       outlier_dist))
                 label = PointClass::Ground;
-            if (local) {  // the own plane counts only where it makes the point ground
-                const PointClass refit =
-                    classifyByPlaneDistance(e_refit, ground_dist, outlier_dist);
-                if (label != refit) own_only.push_back({i, e});
-                label = refit, e = e_refit;
-            }
             labels[order[i]] = label;
             if (heights) (*heights)[order[i]] = e;
-        }
-        if (own_only.empty()) continue;
-        Eigen::Vector2f lo(sx[own_only[0].first], sy[own_only[0].first]), hi = lo;
-        for (const auto& [j, e_own] : own_only)
-            lo = lo.cwiseMin(Eigen::Vector2f(sx[j], sy[j])),
-            hi = hi.cwiseMax(Eigen::Vector2f(sx[j], sy[j]));
-        near_high.build(field, model, k, lo, hi, sx, sy, sz, clearance_radius, own_plane_clearance);
-        for (const auto& [j, e_own] : own_only) {
-            if (near_high.near(sx[j], sy[j])) continue;
-            labels[order[j]] = PointClass::Ground;
-            if (heights) (*heights)[order[j]] = e_own;
         }
     }
     return classCounts(labels);
