@@ -169,9 +169,12 @@ void labelSparseNode(const TriGridField& field, const TerrainModel& model,
 // 1.8 clearance_radius.
 class NearHighPoints {
   public:
+    /// tall_blocks: per block of kLanes points of node k (from its begin), whether one of them
+    /// stands `clearance` or more above its plane (the caller's pass found it already).
     TRAVEL_INTO_CALLER void build(const TriGridField& field, const TerrainModel& model, int k,
                                   Eigen::Vector2f lo, Eigen::Vector2f hi, const float* x,
-                                  const float* y, const float* z, float radius, float clearance) {
+                                  const float* y, const float* z, float radius, float clearance,
+                                  const uint8_t* tall_blocks) {
         lo.array() -= radius, hi.array() += radius;
         // Cells of radius / 2, at most kMaxSide a side (a tiny radius: larger cells, still
         // covering the radius in 2 cells).
@@ -194,9 +197,9 @@ class NearHighPoints {
         extent_ = {origin_.x() - cell_, origin_.y() - cell_,
                    origin_.x() + static_cast<float>(nx_ + 1) * cell_,
                    origin_.y() + static_cast<float>(ny_ + 1) * cell_};
-        markNode(model, k, lo, hi, x, y, z);
+        markNode(model, k, lo, hi, x, y, z, tall_blocks);
         const TriGridField::Neighbours& nb = field.neighbours(k);
-        for (int m = 0; m < nb.count; ++m) markNode(model, nb.ids[m], lo, hi, x, y, z);
+        for (int m = 0; m < nb.count; ++m) markNode(model, nb.ids[m], lo, hi, x, y, z, nullptr);
     }
     bool near(float x, float y) const {
         const int cx = static_cast<int>(std::floor((x - origin_.x()) / cell_));
@@ -208,10 +211,11 @@ class NearHighPoints {
     }
 
   private:
-    // The tall points of node j, when its triangle meets the box [lo, hi].
+    // The tall points of node j, when its triangle meets the box [lo, hi] (with tall_blocks,
+    // only in the blocks it flags).
     TRAVEL_INTO_CALLER void markNode(const TerrainModel& model, int j, Eigen::Vector2f lo,
                                      Eigen::Vector2f hi, const float* x, const float* y,
-                                     const float* z) {
+                                     const float* z, const uint8_t* tall_blocks) {
         const std::array<Eigen::Vector2f, 3> corners = model.triangleCorners(j);
         Eigen::Vector2f t_lo = corners[0], t_hi = corners[0];
         for (const Eigen::Vector2f& c : corners) t_lo = t_lo.cwiseMin(c), t_hi = t_hi.cwiseMax(c);
@@ -230,7 +234,8 @@ class NearHighPoints {
         // others, each lane finds its cell as mark() does (the same floats: x * 2^-k is x / 2^k
         // exactly) and every lane stores, the lanes without a cell into the spare cell.
         uint32_t i = other.begin;
-        for (; i + kLanes <= end; i += kLanes) {
+        for (uint32_t b = 0; i + kLanes <= end; i += kLanes, ++b) {
+            if (tall_blocks && !tall_blocks[b]) continue;
             const Lanes px = loadLanes(x + i), py = loadLanes(y + i);
             const Lanes e = s0 * px + s1 * py + s2 * loadLanes(z + i) + d;
             const LaneMask tall =
@@ -274,6 +279,7 @@ class NearHighPoints {
 thread_local NearHighPoints near_high_scratch;  // reused across nodes and frames
 // Points of a node that only its own plane makes Ground (index in the sorted order, e_own).
 thread_local std::vector<std::pair<uint32_t, float>> own_only_scratch;
+thread_local std::vector<uint8_t> tall_blocks_scratch;  // per block of the node being labelled
 
 // The points of node k, reached but not clear (a pole, sign, trunk, wall or car stands in it):
 // eq. 5 against the refitted plane (s, d), and also ground within [-outlier_dist, eps3) of the
@@ -287,7 +293,8 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
                              float outlier_dist, float clearance_radius, float clearance,
                              NearHighPoints& near_high,
                              std::vector<std::pair<uint32_t, float>>& own_only,
-                             std::vector<PointClass>& labels, std::vector<float>* heights) {
+                             std::vector<uint8_t>& tall_blocks, std::vector<PointClass>& labels,
+                             std::vector<float>* heights) {
     const TriNode& node = model.nodes[k];
     const float s0 = ground.normal.x(), s1 = ground.normal.y();
     const float s2 = ground.normal.z(), d = ground.d;
@@ -299,11 +306,13 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
     // The refitted plane's class for every point; the points that only the own plane makes
     // Ground (min(e, e_own) in labelPoints: -outlier_dist <= e_own < eps3 <= e) are listed.
     const uint32_t end = node.begin + node.count;
+    tall_blocks.resize(node.count / kLanes);
     uint32_t i = node.begin;
-    for (; i + kLanes <= end; i += kLanes) {
+    for (uint32_t b = 0; i + kLanes <= end; i += kLanes, ++b) {
         const Lanes x = loadLanes(sx + i), y = loadLanes(sy + i), z = loadLanes(sz + i);
         const Lanes e = s0 * x + s1 * y + s2 * z + d;
         const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
+        tall_blocks[b] = anyLane(e_own >= clearance);  // NearHighPoints reads no other block
         const LaneMask label = e < -outlier_dist ? kOutlier
                                : e < ground_dist ? kGround
                                                  : kNonGround;
@@ -329,7 +338,8 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
     for (const auto& [j, e_own] : own_only)
         lo = lo.cwiseMin(Eigen::Vector2f(sx[j], sy[j])),
         hi = hi.cwiseMax(Eigen::Vector2f(sx[j], sy[j]));
-    near_high.build(field, model, k, lo, hi, sx, sy, sz, clearance_radius, clearance);
+    near_high.build(field, model, k, lo, hi, sx, sy, sz, clearance_radius, clearance,
+                    tall_blocks.data());
     for (const auto& [j, e_own] : own_only) {
         if (near_high.near(sx[j], sy[j])) continue;
         labels[order[j]] = PointClass::Ground;
@@ -400,7 +410,8 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         if (!own && local_clearance && node.reached) {  // see labelWithLocalClearance
             labelWithLocalClearance(field, model, k, *ground, sx, sy, sz, order, ground_dist,
                                     outlier_dist, clearance_radius, own_plane_clearance,
-                                    near_high_scratch, own_only_scratch, labels, heights);
+                                    near_high_scratch, own_only_scratch, tall_blocks_scratch,
+                                    labels, heights);
             continue;
         }
         const float od = own ? node.d : std::numeric_limits<float>::infinity();
