@@ -220,6 +220,9 @@ class NearHighPoints {
         Eigen::Vector2f t_lo = corners[0], t_hi = corners[0];
         for (const Eigen::Vector2f& c : corners) t_lo = t_lo.cwiseMin(c), t_hi = t_hi.cwiseMax(c);
         if ((t_lo.array() > hi.array()).any() || (t_hi.array() < lo.array()).any()) return;
+        // A neighbour's triangle clear of the bitmap (its box meets the box, its slanted side
+        // does not): none of its points has a cell.
+        if (!tall_blocks && !triangleMeetsMap(corners)) return;
         const float s0 = plane_[0], s1 = plane_[1], s2 = plane_[2], d = plane_[3];
         const float clearance = clearance_;
         const float x_lo = extent_[0], y_lo = extent_[1], x_hi = extent_[2], y_hi = extent_[3];
@@ -257,6 +260,25 @@ class NearHighPoints {
         }
         for (; i < end; ++i)
             if (s0 * x[i] + s1 * y[i] + s2 * z[i] + d >= clearance) mark(x[i], y[i]);
+    }
+    // True unless a side of the triangle separates it from the bitmap's cells (grown by 1 cm:
+    // a point on a triangle's side may fall into either node).
+    bool triangleMeetsMap(const std::array<Eigen::Vector2f, 3>& corners) const {
+        const float grow = 0.01f;
+        const Eigen::Vector2f lo(origin_.x() - grow, origin_.y() - grow);
+        const Eigen::Vector2f hi(origin_.x() + static_cast<float>(nx_) * cell_ + grow,
+                                 origin_.y() + static_cast<float>(ny_) * cell_ + grow);
+        for (int e = 0; e < 3; ++e) {
+            const Eigen::Vector2f& a = corners[e];
+            const Eigen::Vector2f edge = corners[(e + 1) % 3] - a;
+            Eigen::Vector2f out(edge.y(), -edge.x());  // away from the third corner
+            if (out.dot(corners[(e + 2) % 3] - a) > 0.f) out = -out;
+            // The map's corner farthest in along `out`.
+            const Eigen::Vector2f nearest(out.x() > 0.f ? lo.x() : hi.x(),
+                                          out.y() > 0.f ? lo.y() : hi.y());
+            if (out.dot(nearest - a) > 0.f) return false;
+        }
+        return true;
     }
     TRAVEL_INTO_CALLER void mark(float x, float y) {
         const float gx = (x - origin_.x()) / cell_, gy = (y - origin_.y()) / cell_;
