@@ -465,6 +465,87 @@ TEST(HardScenes, VergesAt10And22MetresAreGround) {
     EXPECT_EQ(s.high_obstacle_as_ground, 0u);
 }
 
+// Verges with sign posts and tree trunks on them (sim::vergesWithStreetFurniture): every verge
+// node holds a point 0.5 m or more above its plane, so the clear-node rule alone leaves the
+// verge to TTMF's road-level planes. Verge points (terrain 6 cm or more above the road) by
+// distance, HDL-64E level and on KITTI's tilted mount (roll 1.6, pitch 0.6 deg, not given to
+// the pipeline, as on the dev frames), with the clear-node rule only (clearance_radius 0) and
+// with local clearance (the default).
+struct VergeFigures {
+    double recall[3];  // verge points 0-10, 10-20, 20-40 m away labelled ground
+    std::size_t missed[3];
+    std::size_t objects_as_ground;  // post and trunk points
+    test::SceneScores all;
+};
+
+VergeFigures vergeFigures(const sim::Scene& scene, const Eigen::Isometry3d& pose,
+                          const sim::Scan& scan, const Params& params) {
+    Result result;
+    Pipeline(params).process(scan.cloud, {}, result);
+    VergeFigures f{};
+    std::size_t verge[3] = {};
+    for (std::size_t i = 0; i < scan.gt.size(); ++i) {
+        const bool ground = result.labels[i] == PointClass::Ground;
+        f.objects_as_ground += scan.gt.instance[i] != 0 && ground;
+        if (scan.gt.cls[i] != sim::Ground) continue;
+        const Eigen::Vector3d p =
+            pose * Eigen::Vector3d(scan.cloud.x[i], scan.cloud.y[i], scan.cloud.z[i]);
+        if (scene.terrainHeight(p.x(), p.y()) < 0.06) continue;  // the road
+        const double r = std::hypot(p.x(), p.y());
+        const int bin = r < 10.0 ? 0 : r < 20.0 ? 1 : r < 40.0 ? 2 : -1;
+        if (bin < 0) continue;
+        ++verge[bin];
+        f.missed[bin] += !ground;
+    }
+    for (int b = 0; b < 3; ++b) f.recall[b] = 1.0 - double(f.missed[b]) / double(verge[b]);
+    f.all = test::scoreScene(scan.gt, result.labels);
+    return f;
+}
+
+TEST(HardScenes, VergesWithPostsAndTreesAreGround) {
+    const sim::Scene scene = sim::vergesWithStreetFurniture();
+    Params node_rule = hdl64Params();
+    node_rule.clearance_radius = 0.0;
+    struct Mount {
+        const char* name;
+        double roll_deg, pitch_deg;
+    };
+    for (const Mount& mount : {Mount{"level", 0.0, 0.0}, Mount{"tilted", 1.6, 0.6}}) {
+        sim::LidarModel model = sim::LidarModel::hdl64();
+        model.range_noise_sigma = 0.01;
+        model.seed = 7;
+        model.max_range = 80.0;
+        const Eigen::Isometry3d pose =
+            sim::sensorPoseAt(scene, 0, 0, sim::kSensorHeight, mount.roll_deg, mount.pitch_deg, 0);
+        const sim::Scan scan = sim::scan(scene, model, pose);
+        VergeFigures node{};
+        for (const bool local : {false, true}) {
+            const VergeFigures f =
+                vergeFigures(scene, pose, scan, local ? hdl64Params() : node_rule);
+            std::printf(
+                "verges_furniture_%s_%-6s verge recall 0-10 m %.4f (%zu missed), 10-20 m "
+                "%.4f (%zu), 20-40 m %.4f (%zu); post and trunk points as ground %zu\n",
+                mount.name, local ? "local" : "node", f.recall[0], f.missed[0], f.recall[1],
+                f.missed[1], f.recall[2], f.missed[2], f.objects_as_ground);
+            print("  all points", f.all);
+            if (!local) {
+                node = f;
+                continue;
+            }
+            // Clear-node rule only: level 0.9560 / 0.9873 / 0.9859, tilted 0.9553 / 0.9873 /
+            // 0.9906. Local clearance (0.5 m): level 0.9862 / 0.9971 / 0.9987, tilted 0.9833 /
+            // 0.9969 / 0.9962; no post or trunk point more as ground. (The false ground is the
+            // embankment's rough surface where it is locally steeper than 25 deg, as above.)
+            EXPECT_GE(f.recall[0], 0.98) << mount.name;
+            EXPECT_GE(f.recall[1], 0.995) << mount.name;
+            EXPECT_GE(f.recall[2], 0.995) << mount.name;
+            EXPECT_LE(f.objects_as_ground, node.objects_as_ground) << mount.name;
+            EXPECT_LE(f.all.high_obstacle_as_ground, node.all.high_obstacle_as_ground)
+                << mount.name;
+        }
+    }
+}
+
 TEST(HardScenes, OffRoadMeadowWithBushesAndTrunks) {
     const SceneRun run =
         segment(sim::offRoadMeadow(), sim::LidarModel::uniform(64, -16.6, 16.6, 2048), os64Params(),

@@ -128,6 +128,12 @@ struct AutoReal {
       "A node is clear when none of its points stands this high or higher above its own "         \
       "plane: no car body, wall, fence, trunk or bush, whose bases must not join the ground; "    \
       "grass, verges and kerbs stay below. Leave-one-out over the dev frames: 0.5")               \
+    X(double, clearance_radius, 0.5, "m", 0.0, 2.0,                                               \
+      "In a reached node that is not clear, a point is still labelled against the node's own "    \
+      "plane (label_with_node_plane) when no point of the node or its neighbours within this xy " \
+      "distance stands own_plane_clearance or more above that plane: verges beside posts, "       \
+      "trees and signs; the bases of such objects lie under them. 0 = the whole node must be "    \
+      "clear")                                                                                    \
     X(double, vertical_face_min_rise, 0.0, "m", 0.0, 100.0,                                       \
       "A ground point from which its range-image column climbs steeper than 45 deg by more "      \
       "than this, up to a non-ground point, is the foot of a wall, fence, trunk or bush face: "   \

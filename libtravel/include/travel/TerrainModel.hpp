@@ -190,9 +190,10 @@ struct TerrainModel : TriGridGeometry {
     /// node's own plane when TTMF is off (TerrainModelFitting copies it into refit_*). Every
     /// point labelled Ground lies within ground_dist of this plane, so a map or navigator
     /// measuring heights against any other plane could call a point "ground" and "an obstacle
-    /// above the ground" at once (with label_with_node_plane, points of clear nodes also
-    /// within ground_dist of their own or a clear neighbour's plane: verges up to about 0.3 m
-    /// above this one, GroundLabelling.cpp). Its normal is within max_slope of vertical.
+    /// above the ground" at once (with label_with_node_plane, points of clear nodes, and of
+    /// reached nodes with nothing tall within clearance_radius, also within ground_dist of their
+    /// own or a clear neighbour's plane: verges up to about 0.3 m above this one,
+    /// GroundLabelling.cpp). Its normal is within max_slope of vertical.
     std::optional<GroundPlane> groundPlane(int node) const {
         const TriNode& n = nodes[static_cast<std::size_t>(node)];
         if (!n.traversable) return std::nullopt;

@@ -193,6 +193,23 @@ Scene grassVerges() {
     return scene;
 }
 
+Scene vergesWithStreetFurniture() {
+    Scene scene;
+    scene.ramps = {vergeBesideRoad(4.0, 1.0, 2.0, 0.3), vergeBesideRoad(14.0, 1.0, 1.0, 0.2),
+                   vergeBesideRoad(-4.0, -1.0, 1.5, 0.5), vergeBesideRoad(-22.0, -1.0, 1.0, 0.3)};
+    scene.roughness.amplitude = 0.03;
+    scene.roughness.wavelength = 1.0;
+    uint32_t id = 1;
+    for (double x = -32.0; x <= 32.0; x += 4.0) {              // within 40 m of the sensor
+        scene.poles.push_back(pole(id++, x, 6.5, 0.05, 1.2));  // fence posts
+        scene.poles.push_back(pole(id++, x + 2.0, -24.0, 0.05, 1.2));
+        if (static_cast<int>(x) % 8 != 0) continue;
+        scene.poles.push_back(pole(id++, x + 4.0, -7.0, 0.15, 5.0));  // tree trunks
+        scene.poles.push_back(pole(id++, x + 2.0, 16.0, 0.15, 5.0));
+    }
+    return scene;
+}
+
 Scene offRoadMeadow() {
     Scene scene;
     scene.bumps = {

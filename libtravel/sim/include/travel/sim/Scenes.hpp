@@ -60,6 +60,15 @@ Scene meshFencesOnRoughVerges();
 /// roughness (1 m wavelength) everywhere. All of it is ground: what TRAVEL missed 5-40 m away.
 Scene grassVerges();
 
+/// Verges with street furniture on them, 0-40 m away: no node of a verge is clear of objects
+/// 0.5 m tall (own_plane_clearance). Left: grass rising 0.3 m over 2 m from y = 4, fence posts
+/// (0.05 m radius, 1.2 m) every 4 m at y = 6.5; a bank rising 0.2 m over 1 m from y = 14, tree
+/// trunks (0.15 m, 5 m) every 8 m at y = 16. Right: an embankment rising 0.5 m over 1.5 m from
+/// y = -4, trunks every 8 m at y = -7; a verge rising 0.3 m over 1 m from y = -22, fence posts
+/// every 4 m at y = -24. 3 cm roughness (1 m wavelength). Posts and trunks (ids from 1) stand
+/// at x = -32..36.
+Scene vergesWithStreetFurniture();
+
 /// Uneven meadow: bumps of 0.2-0.6 m (sigma 1.5-4 m), 5 cm roughness (1.2 m wavelength),
 /// bushes (0.6-1.2 m boxes, ids 1-8) and tree trunks (0.15-0.3 m radius, ids 11-16). Meant for
 /// an OS1-64 about 1.3 m above the ground (kOffRoadSensorHeight).
