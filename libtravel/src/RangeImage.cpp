@@ -108,8 +108,9 @@ void fillElevationTableDeg(const Params& params, std::vector<double>& out) {
     } else if (name == "vlp16") {
         uniformElevations(16, -15.0, 15.0, out);  // VLP-16 datasheet
     } else if (name == "os128") {
-        // OS1-128 datasheet. The ouster128 sample cannot refine it: its origin is at ground
-        // level, not at the sensor, so elevations seen from there are distorted.
+        // OS1-128 datasheet (uniform). The ouster128 sample is not an OS1-128 in its own frame:
+        // its sensor sits 2.6 m behind and 1.8 m above the origin, and its beams are not
+        // uniform (docs/performance.md, "The sample's own sensor frame and rings").
         uniformElevations(128, -22.5, 22.5, out);
     } else if (name == "uniform") {
         if (params.num_rings < 1) throw ConfigError("num_rings must be >= 1");
