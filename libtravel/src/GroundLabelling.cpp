@@ -52,6 +52,14 @@ using detail::LaneMask;
 using detail::Lanes;
 using detail::loadLanes;
 
+// classifyByPlaneDistance for kLanes points at once: the classes as lane values.
+TRAVEL_INTO_CALLER LaneMask classifyLanes(const Lanes& e, float ground_dist, float outlier_dist) {
+    const LaneMask outlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
+    const LaneMask ground = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
+    const LaneMask non_ground = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
+    return e < -outlier_dist ? outlier : e < ground_dist ? ground : non_ground;
+}
+
 thread_local std::vector<uint8_t> clear_scratch;     // per node, reused across frames
 thread_local std::vector<int32_t> labelled_scratch;  // nodes whose points get labels
 
@@ -324,9 +332,6 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
     const float s0 = ground.normal.x(), s1 = ground.normal.y();
     const float s2 = ground.normal.z(), d = ground.d;
     const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z(), od = node.d;
-    const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
-    const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
-    const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     own_only.clear();
     // The refitted plane's class for every point; the points that only the own plane makes
     // Ground (min(e, e_own) in labelPoints: -outlier_dist <= e_own < eps3 <= e) are listed.
@@ -338,9 +343,7 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
         const Lanes e = s0 * x + s1 * y + s2 * z + d;
         const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
         tall_blocks[b] = anyLane(e_own >= clearance);  // NearHighPoints reads no other block
-        const LaneMask label = e < -outlier_dist ? kOutlier
-                               : e < ground_dist ? kGround
-                                                 : kNonGround;
+        const LaneMask label = classifyLanes(e, ground_dist, outlier_dist);
         for (int l = 0; l < kLanes; ++l) labels[order[i + l]] = static_cast<PointClass>(label[l]);
         if (heights)
             for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e[l];
@@ -395,10 +398,6 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
     const float own_plane_clearance = static_cast<float>(params.own_plane_clearance);
     const float clearance_radius = static_cast<float>(params.clearance_radius);
     const bool local_clearance = params.label_with_node_plane && clearance_radius > 0.f;
-    // classifyByPlaneDistance's classes as lane values.
-    const LaneMask kOutlier = LaneMask{} + static_cast<int32_t>(PointClass::Outlier);
-    const LaneMask kGround = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
-    const LaneMask kNonGround = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     // Reached nodes whose own plane may label points (see the header comment), and the nodes
     // whose points the loop below labels (one pass over the nodes with points, embed()'s list,
     // ascending: most nodes are empty, and their cache lines are not read).
@@ -449,13 +448,12 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
             const Lanes e_refit = s0 * x + s1 * y + s2 * z + d;
             const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
             const Lanes e = e_own >= -outlier_dist ? (e_own < e_refit ? e_own : e_refit) : e_refit;
-            const LaneMask label = e < -outlier_dist ? kOutlier
-                                   : e < ground_dist ? kGround
-                                                     : kNonGround;
+            const LaneMask label = classifyLanes(e, ground_dist, outlier_dist);
             // Most blocks have no point for the neighbours' planes: a plain scatter of labels.
             bool ask = false;
             if (own)
-                for (int l = 0; l < kLanes; ++l) ask |= label[l] == kNonGround[0];
+                for (int l = 0; l < kLanes; ++l)
+                    ask |= label[l] == static_cast<int32_t>(PointClass::NonGround);
             if (!ask) {
                 for (int l = 0; l < kLanes; ++l)
                     labels[order[i + l]] = static_cast<PointClass>(label[l]);
