@@ -21,6 +21,15 @@
 #define TRAVEL_AVX2_CLONES
 #endif
 
+// Hand-written AVX2 intrinsics (loops GCC does not vectorise itself), chosen at run time by
+// detail::cpuHasAvx2() rather than by the clones' resolver: GCC on x86-64, not where the build
+// asks for baseline code only.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(TRAVEL_NO_CPU_DISPATCH)
+#define TRAVEL_AVX2_INTRINSICS 1
+#include <immintrin.h>
+#endif
+
 // A helper of a TRAVEL_AVX2_CLONES function inlined into it, so that its AVX2 copy compiles the
 // helper for AVX2 too (a call would run the baseline code).
 #if defined(__GNUC__)
@@ -30,6 +39,17 @@
 #endif
 
 namespace travel::detail {
+
+#ifdef TRAVEL_AVX2_INTRINSICS
+/// Whether this CPU runs the TRAVEL_AVX2_INTRINSICS code (AVX2 and POPCNT), checked once.
+inline bool cpuHasAvx2() {
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
+    }();
+    return avx2;
+}
+#endif
 
 // kLanes float lanes as one value (GCC vector extension): one AVX register, or two SSE ones in
 // the baseline build. Lane l holds exactly what a scalar loop over lane l would: the same

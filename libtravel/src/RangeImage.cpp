@@ -34,14 +34,6 @@
 #include <stdexcept>
 #include <string>
 
-// The table lookup's AVX2 copy: GCC on x86-64, not where the build asks for baseline code only
-// (TRAVEL_NO_CPU_DISPATCH, see CpuDispatch.hpp).
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-    !defined(TRAVEL_NO_CPU_DISPATCH)
-#define TRAVEL_ROWS_AVX2 1
-#include <immintrin.h>
-#endif
-
 #include "CpuDispatch.hpp"
 #include "FastAtan2.hpp"
 #include "Prefault.hpp"
@@ -267,7 +259,7 @@ void rowsOfElevationsScalar(const int16_t* row_of, const int16_t* elevation, con
     }
 }
 
-#ifdef TRAVEL_ROWS_AVX2
+#ifdef TRAVEL_AVX2_INTRINSICS
 // The same, 8 points at a time: a 32-bit gather at each entry (row_of holds one more entry, so
 // that the last one's upper half is readable), its lower 16 bits the row (little endian).
 __attribute__((target("avx2"))) void rowsOfElevationsAvx2(const int16_t* row_of,
@@ -296,12 +288,8 @@ __attribute__((target("avx2"))) void rowsOfElevationsAvx2(const int16_t* row_of,
 // row_of: 65537 entries (see rowsOfElevationsAvx2).
 void rowsOfElevations(const int16_t* row_of, const int16_t* elevation, const uint8_t* keep,
                       std::size_t n, int16_t* row) {
-#ifdef TRAVEL_ROWS_AVX2
-    static const bool avx2 = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2");
-    }();
-    if (avx2) return rowsOfElevationsAvx2(row_of, elevation, keep, n, row);
+#ifdef TRAVEL_AVX2_INTRINSICS
+    if (detail::cpuHasAvx2()) return rowsOfElevationsAvx2(row_of, elevation, keep, n, row);
 #endif
     rowsOfElevationsScalar(row_of, elevation, keep, 0, n, row);
 }

@@ -77,15 +77,7 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
-// The compaction's AVX2 copy: GCC on x86-64, not where the build asks for baseline code only
-// (TRAVEL_NO_CPU_DISPATCH, see CpuDispatch.hpp).
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-    !defined(TRAVEL_NO_CPU_DISPATCH)
-#define TRAVEL_COMPACT_AVX2 1
-#include <immintrin.h>
-
 #include <array>
-#endif
 
 #include "CpuDispatch.hpp"
 #include "Prefault.hpp"
@@ -155,7 +147,7 @@ uint32_t compactScalar(const int16_t* row, const int32_t* col, const PointClass*
     return total;
 }
 
-#ifdef TRAVEL_COMPACT_AVX2
+#ifdef TRAVEL_AVX2_INTRINSICS
 // For each 8-bit mask, the lanes whose bit is set, in order (the rest: 0).
 constexpr std::array<std::array<int32_t, 8>, 256> kLeftPack = [] {
     std::array<std::array<int32_t, 8>, 256> table{};
@@ -204,12 +196,8 @@ __attribute__((target("avx2,popcnt"))) uint32_t compactAvx2(const int16_t* row, 
 
 uint32_t compact(const int16_t* row, const int32_t* col, const PointClass* labels, std::size_t n,
                  int cols, uint32_t* input, uint32_t* key) {
-#ifdef TRAVEL_COMPACT_AVX2
-    static const bool avx2 = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
-    }();
-    if (avx2) return compactAvx2(row, col, labels, n, cols, input, key);
+#ifdef TRAVEL_AVX2_INTRINSICS
+    if (detail::cpuHasAvx2()) return compactAvx2(row, col, labels, n, cols, input, key);
 #endif
     return compactScalar(row, col, labels, 0, n, cols, 0, input, key);
 }
