@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
-# The README's test command, and what CI runs (.ci/run):
-#   1. scripts/setup.sh: installs the missing Debian packages and builds ./build (Release)
-#   2. the whole test suite of ./build with CTest
-#   3. the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (./build-asan;
-#      MRPT itself is not instrumented, and MRPT's own apps cannot load a sanitized plugin, so
-#      the rawlog-edit / RawLogViewer checks run in step 2 only; nor can python3 load a sanitized
-#      extension, so the Python tests run in step 2 only), and the multi-threaded test
-#      under ThreadSanitizer (./build-tsan)
+# The README's test command, and what CI runs (.ci/run). Every test runs once, in the build that
+# can run it:
+#   1. scripts/setup.sh --no-unit-tests: installs the missing Debian packages and builds ./build
+#      (Release: the libraries, apps, plugin, Python module and benchmarks; of the tests, those
+#      that need this build: see 2)
+#   2. CTest on ./build: the apps' and the plugin's scripted checks (MRPT's own rawlog-edit and
+#      RawLogViewer load the plugin: they cannot load a sanitized one), the Python module (python3
+#      cannot load a sanitized extension), the installed package and the figure tests
+#      (closed-loop navigation, the real drive's tracking and registration)
+#   3. the unit tests and the apps' scripted checks under AddressSanitizer +
+#      UndefinedBehaviorSanitizer (./build-asan, -Og; MRPT itself is not instrumented), then the
+#      Release build's labels compared byte for byte with the sanitizer build's (the thresholds
+#      checked under the sanitizers hold for the -O3 binaries), and the multi-threaded test under
+#      ThreadSanitizer (./build-tsan)
 #   4. libFuzzer targets, 10 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
+# `scripts/setup.sh` alone builds the unit tests into ./build too (TRAVEL_BUILD_UNIT_TESTS).
 # Tests that need the real scans (SemanticKITTI etc., TRAVEL_DATA_DIR) skip with a message when absent.
 set -euo pipefail
 
@@ -25,10 +32,10 @@ log() {
   printf '[run-tests %4d s, cpu %5d s] %s\n' "$SECONDS" "$cpu" "$*"
 }
 
-log "setup: packages, then the Release build (build/)"
-"$ROOT_DIR/scripts/setup.sh"
+log "setup: packages, then the Release build (build/, without the unit tests)"
+"$ROOT_DIR/scripts/setup.sh" --no-unit-tests
 
-log "test suite (build/)"
+log "Release suite (build/): apps, plugin in MRPT's apps, Python, install, figures"
 ctest --test-dir build -j2 --output-on-failure
 
 log "sanitizer build (build-asan/: address,undefined)"
@@ -48,7 +55,8 @@ cmake --build build-asan -j2
 # under ASan by the obstacle-source and map tests. IndependentRegistration (travel-kitti --track
 # and MRPT's ICP over the 22-frame drive) is a figure, not a code path: plain suite only.
 # Neither is even built here (TRAVEL_BUILD_FIGURE_TESTS=OFF saves minutes of ASan compilation);
-# the filter stays for a build-asan/ configured by hand with them.
+# the filter stays for a build-asan/ configured by hand with them (and TrackingReal, in the
+# unit-test executable test_tracking_sequences, runs in the Release suite).
 # The apps' common-flag checks (the one flag dialect: parsing and messages, all code paths the
 # apps' own CLI tests run under ASan too) and the installed package's consumer build (CMake, no
 # TRAVEL code runs) are plain suite only as well: ~2 minutes of CI's 30. So are the apps' -j
@@ -57,16 +65,21 @@ cmake --build build-asan -j2
 # interrupt check (the output's wording and SIGINT's flag; under ASan 68 s of apps replayed
 # again) and TrackingReal (a figure on the real drive, its code paths under ASan in
 # TrackingSynthetic): ~70 s of the sanitizer suite's wall time. travel-nav-sim's CLI check runs
-# closed-loop navigation too (21 s under ASan), and MeshFencesAndWallsOnRoughVerges is a figure
-# over three sensor cases (16 s) whose code paths (the face rule's both scopes) the other
-# HardScenes tests run under ASan.
-ASAN_SKIP='^(NavClosedLoop\.|HardScenes\.MeshFencesAndWallsOnRoughVerges$|apps\.travel_nav_sim_cli$|Seeds/TravelOnRampKerb\.|Seeds/MapOnRampKerb\.|IndependentRegistration\.|TrackingReal\.|apps\.travel_[a-z_]+_common_flags$|apps\.(jobs_cli|travel_map_jobs|travel_rawlog_jobs|quiet_progress_interrupt_cli)$|install\.consumer$)'
-log "test suite under sanitizers (closed-loop navigation runs: plain suite only)"
+# closed-loop navigation too (21 s under ASan).
+ASAN_SKIP='^(NavClosedLoop\.|apps\.travel_nav_sim_cli$|Seeds/TravelOnRampKerb\.|Seeds/MapOnRampKerb\.|IndependentRegistration\.|TrackingReal\.|apps\.travel_[a-z_]+_common_flags$|apps\.(jobs_cli|travel_map_jobs|travel_rawlog_jobs|quiet_progress_interrupt_cli)$|install\.consumer$)'
+log "unit tests and apps under sanitizers (build-asan/)"
 # allocator_may_return_null: a corrupt rawlog's absurd sizes reach MRPT's allocator; the apps
 # turn the failure into a clean error (apps/MemoryLimit.hpp) instead of ASan aborting.
-LSAN_OPTIONS=suppressions="$ROOT_DIR/tests/lsan.supp" \
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir build-asan -j2 --output-on-failure -E "$ASAN_SKIP"
+asan_env=(env LSAN_OPTIONS=suppressions="$ROOT_DIR/tests/lsan.supp"
+          ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1
+          UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1)
+"${asan_env[@]}" ctest --test-dir build-asan -j2 --output-on-failure -E "$ASAN_SKIP"
+
+log "Release labels = sanitizer build's labels (synthetic scans; real scans when ../shared is there)"
+"${asan_env[@]}" cmake -DRELEASE_KITTI=build/apps/travel-kitti -DCHECKED_KITTI=build-asan/apps/travel-kitti \
+  -DMAKE_SCANS=build/tests/make_synthetic_scans -DWORK_DIR="$ROOT_DIR/build/same_labels_across_builds" \
+  -DDATA_DIR="$(sed -n 's/^TRAVEL_DATA_DIR:PATH=//p' build/CMakeCache.txt)" \
+  -P tests/cli/test_same_labels_across_builds.cmake
 
 log "thread sanitizer build (build-tsan/): one Pipeline per thread, identical results"
 tsan=(cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=thread

@@ -8,6 +8,8 @@
 #   scripts/setup.sh --no-build      install missing packages only
 #   scripts/setup.sh --demo ...      only the packages and targets of the apps and the plugin
 #                                    (no tests, benchmarks, fuzzers or Python module)
+#   scripts/setup.sh --no-unit-tests  everything but the unit tests (scripts/run-tests.sh runs
+#                                    those in its sanitizer build; TRAVEL_BUILD_UNIT_TESTS)
 set -euo pipefail
 
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -33,16 +35,18 @@ die() { printf '[setup] error: %s\n' "$*" >&2; exit 1; }
 
 build=1
 demo=0
+unit_tests=ON
 targets=()
 while (($# > 0)); do
   case "$1" in
     --no-build) build=0 ;;
     --demo) demo=1 ;;
+    --no-unit-tests) unit_tests=OFF ;;
     --target)
       (($# > 1)) || die "--target needs a target name (e.g. travel-rawlog)"
       targets+=(--target "$2"); shift ;;
-    -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) die "unknown option '$1' (options: --no-build, --demo, --target NAME)" ;;
+    -h|--help) sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option '$1' (options: --no-build, --demo, --no-unit-tests, --target NAME)" ;;
   esac
   shift
 done
@@ -88,7 +92,8 @@ if ((demo)); then
 else
   # Test sources at -O1 (TRAVEL_TEST_COMPILE_OPTIONS): the libraries, apps and benchmarks they
   # exercise stay Release (-O3); -O3 on the tests' own code only costs build time.
-  configure+=(-DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_BENCHMARKS=ON -DTRAVEL_BUILD_PYTHON=ON
+  configure+=(-DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_UNIT_TESTS=$unit_tests
+              -DTRAVEL_BUILD_BENCHMARKS=ON -DTRAVEL_BUILD_PYTHON=ON
               -DTRAVEL_TEST_COMPILE_OPTIONS=-O1)
 fi
 # The generator of an existing build directory cannot change; choose Ninja only for a new one.
