@@ -308,9 +308,10 @@ int run(int argc, char** argv) {
         "sweep_KEY_objects.png (coverage, purity; USE, OSE) and sweep_KEY_time.png. Paper "
         "studies: tgf_resolution=2,4,6,8,10, vertical_ring_span=1,2,3,4,5, "
         "vertical_column_extension=1,3,5,10,20.\n"
-        "  merges: runs one --method (default travel) and writes <output>/merges.md: the "
-        "clusters holding points of more than one ground-truth object, by linkage rule, class "
-        "pair and range (printed to stdout as well), and merges.csv (one row per part).",
+        "  merges: runs one --method with TRAVEL's object stage (default travel) and writes "
+        "<output>/merges.md: the clusters holding points of more than one ground-truth object, "
+        "by linkage rule, class pair and range (printed to stdout as well), and merges.csv (one "
+        "row per part).",
         {"travel-eval report -i data/sequences/00 -o eval",
          "travel-eval report -i seq/00 -i seq/01 --methods travel,gpf+slr -o eval",
          "travel-eval sweep -i data/sequences/00 --sweep tgf_resolution=2,4,6,8,10 -o sweep"});
@@ -367,8 +368,15 @@ int run(int argc, char** argv) {
                                          ? travel::eval::splitList(methods.getValue(), ',')
                                          : travel::eval::methodNames();
     if (is_sweep || is_merges) names = {method.getValue()};
-    for (const std::string& name : names)
-        travel::eval::makeSegmenter(name, params);  // throws, listing the valid names
+    for (const std::string& name : names) {
+        // Throws, listing the valid names.
+        const auto segmenter = travel::eval::makeSegmenter(name, params);
+        if (is_merges && !segmenter->objectPipeline())
+            throw travel::apps::usageError(
+                "merges names the linkage rules of TRAVEL's object stage: --method travel or "
+                "travel-no-ttmf, not '" +
+                name + "'");
+    }
     const travel::eval::SweepSpec spec =
         is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
@@ -385,8 +393,9 @@ int run(int argc, char** argv) {
         for (std::size_t k = 0; k < frames.size(); ++k) {
             const FrameRef& f = frames[k];
             travel::eval::evaluateFrame(f.scan, f.label, *segmenter, frame, f.format);
-            const std::vector<travel::eval::MergedPart> parts = travel::eval::mergedParts(
-                frame.segmentation.cluster_id, frame.ground_truth, frame.cloud, params);
+            const std::vector<travel::eval::MergedPart> parts =
+                travel::eval::mergedParts(frame.segmentation.cluster_id, frame.ground_truth,
+                                          frame.cloud, *segmenter->objectPipeline());
             table.add(parts);
             travel::eval::writeMergedPartsCsv(csv, f.name, parts, k == 0);
         }

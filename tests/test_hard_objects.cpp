@@ -17,6 +17,7 @@
 #include <map>
 #include <vector>
 
+#include "MergeDiagnosticRows.hpp"
 #include "SceneMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
@@ -358,8 +359,11 @@ TEST(HardObjects, MergeDiagnosticNamesTheLinkingRule) {
         labels[i] = id ? (10u | (id << 16)) : r.scan.gt.cls[i] == sim::Ground ? 40u : 0u;
         cluster[i] = id == 2 || id == 3 ? 1 : 0;
     }
+    Pipeline pipeline(hdl64().params);  // the object stage the diagnosis reads
+    Result result;
+    pipeline.process(r.scan.cloud, {}, result);
     const std::vector<eval::MergedPart> parts =
-        eval::mergedParts(cluster, labels, r.scan.cloud, hdl64().params);
+        eval::mergedParts(cluster, labels, r.scan.cloud, pipeline);
     // The cluster's largest GT object owns it; the other car is its largest part (the GT's
     // 0.5 m Euclidean split also cuts window returns off each car: smaller parts).
     ASSERT_FALSE(parts.empty());
@@ -376,6 +380,32 @@ TEST(HardObjects, MergeDiagnosticNamesTheLinkingRule) {
     EXPECT_EQ(p.row_gap, 0);
     EXPECT_GT(p.range, 20.f);
     EXPECT_LT(p.range, 26.f);
+}
+
+// The diagnosis reads the rows the object stage linked on (MergeDiagnosticRows.hpp), on the
+// 64- and the 128-beam preset (rows from the scan order and from the os128 table): parked cars at
+// 20-25 m, every clustered point put in one cluster so that every GT object is a part of it.
+TEST(HardObjects, MergeDiagnosticReadsTheClusteringRows) {
+    for (const Sensor& sensor : {hdl64(), os128()}) {
+        SCOPED_TRACE(sensor.name);
+        const ObjectRun r = run(sim::parkedCarsAt20To25Metres(), sensor);
+        const std::size_t n = r.scan.gt.size();
+        std::vector<uint32_t> labels(n), cluster(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const uint32_t id = r.scan.gt.instance[i];
+            labels[i] = id ? (10u | (id << 16)) : r.scan.gt.cls[i] == sim::Ground ? 40u : 0u;
+            cluster[i] = r.result.cluster_id[i] != 0;
+        }
+        Pipeline pipeline(sensor.params);
+        Result result;
+        pipeline.process(r.scan.cloud, {}, result);
+        const std::vector<eval::MergedPart> parts =
+            eval::mergedParts(cluster, labels, r.scan.cloud, pipeline);
+        const std::size_t checked = test::expectPartsOnTheClusteringRows(parts, pipeline);
+        std::printf("%s: %zu parts, %zu linking pairs checked\n", sensor.name, parts.size(),
+                    checked);
+        EXPECT_GE(checked, 2u);
+    }
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 // protocol-B mean F1 >= 98.5 and mean precision >= 98.5.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "MergeDiagnosticRows.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/eval/KittiIO.hpp"
@@ -27,6 +29,13 @@ std::string frameName(int i) {
     return name;
 }
 
+// Frame i: its scan into `cloud`, its SemanticKITTI labels returned.
+std::vector<uint32_t> readLabelledFrame(int i, PointCloud& cloud) {
+    readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
+             ScanFormat::KittiBin);
+    return readLabelFile((kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
+}
+
 TEST(RealKitti, GroundProtocolBMeetsTheTargets) {
     if (!fs::exists(kSequence / "labels" / "000000.label"))
         GTEST_SKIP() << "SemanticKITTI frames not found in " << kSequence
@@ -37,10 +46,7 @@ TEST(RealKitti, GroundProtocolBMeetsTheTargets) {
     Result result;
     std::vector<double> f1[2], precision[2];
     for (int i = 0; i < 3; ++i) {
-        readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
-                 ScanFormat::KittiBin);
-        const std::vector<uint32_t> gt = readLabelFile(
-            (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
+        const std::vector<uint32_t> gt = readLabelledFrame(i, cloud);
         pipeline.process(cloud, {}, result);
         ASSERT_EQ(result.labels.size(), cloud.size()) << "no point may be dropped";
         int p = 0;
@@ -89,10 +95,7 @@ TEST(RealKitti, ObjectsCoverageAndPurityMeetTheTargets) {
     Result result;
     ObjectScoreAccumulator scores;
     for (int i = 0; i < 3; ++i) {
-        readScan((kSequence / "velodyne" / (frameName(i) + ".bin")).string(), cloud,
-                 ScanFormat::KittiBin);
-        const std::vector<uint32_t> gt = readLabelFile(
-            (kSequence / "labels" / (frameName(i) + ".label")).string(), cloud.size());
+        const std::vector<uint32_t> gt = readLabelledFrame(i, cloud);
         pipeline.process(cloud, {}, result);
         EXPECT_EQ(pipeline.rangeImage().source(), RingSource::ScanOrder) << frameName(i);
         scores.add(evaluateObjects(result.cluster_id, result.labels, gt, cloud));
@@ -106,6 +109,25 @@ TEST(RealKitti, ObjectsCoverageAndPurityMeetTheTargets) {
     EXPECT_EQ(s.instances, 33u);
     EXPECT_GE(s.mean_coverage, 0.93);
     EXPECT_GE(s.mean_purity, 0.99);
+}
+
+// travel-eval merges' diagnosis reads the rows the object stage linked on
+// (MergeDiagnosticRows.hpp): on real frames the pipeline's validity mask (min_range, the self
+// box) and its rows' elevations over the clustered points are not those of all finite points.
+TEST(RealKitti, MergeDiagnosticReadsTheClusteringRows) {
+    if (!fs::exists(kSequence / "labels" / "000000.label"))
+        GTEST_SKIP() << "SemanticKITTI frames not found in " << kSequence
+                     << " (../shared/data is not part of the repository)";
+    Pipeline pipeline(loadPreset("hdl64"));
+    PointCloud cloud;
+    Result result;
+    const std::vector<uint32_t> gt = readLabelledFrame(0, cloud);
+    pipeline.process(cloud, {}, result);
+    const std::vector<eval::MergedPart> parts =
+        eval::mergedParts(result.cluster_id, gt, cloud, pipeline);
+    const std::size_t checked = test::expectPartsOnTheClusteringRows(parts, pipeline);
+    std::printf("frame 000000: %zu parts, %zu linking pairs checked\n", parts.size(), checked);
+    EXPECT_GE(checked, 10u);
 }
 
 TEST(RealKitti, OtherSensorsRunWithPlausibleOutput) {

@@ -256,6 +256,46 @@ TEST(ScanIO, PcdAnyTypeAndSkippedFields) {
     }
 }
 
+// KITTI's layout (binary float32 x, y, z, intensity) has a path of its own in the decoder; it
+// gives the floats of the general float32 path (the same records with a fifth, skipped field in
+// a PCD) bit for bit: signalling and quiet NaNs with payloads, -0, denormals, infinities, and a
+// count that is not a multiple of the 4 records it splits at a time.
+TEST(ScanIO, KittiLayoutDecodesAsTheGeneralPath) {
+    const uint32_t values[] = {0x7f800001u, 0x7fa00005u, 0xffc12345u, 0x7fc00000u,
+                               0x80000000u, 0x00000001u, 0x807fffffu, 0x7f800000u,
+                               0xff800000u, 0xbf800000u, 0x41200000u};
+    const std::size_t n = 11;
+    std::string kitti = le<float>(1.f) + le<float>(2.f) + le<float>(3.f) + le<float>(4.f);
+    std::string pcd = kitti + le<float>(0.f);
+    for (std::size_t i = 1; i < n; ++i) {
+        std::string record;
+        for (std::size_t k = 0; k < 4; ++k) record += le<uint32_t>(values[(3 * i + 5 * k) % 11]);
+        kitti += record;
+        pcd += record + le<float>(0.f);
+    }
+    TempDir dir;
+    dir.write("scan.bin", kitti);
+    dir.write("scan.pcd",
+              "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z intensity pad\nSIZE 4 4 4 4 4\n"
+              "TYPE F F F F F\nCOUNT 1 1 1 1 1\nWIDTH 11\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\n"
+              "POINTS 11\nDATA binary\n" +
+                  pcd);
+    PointCloud fast, general;
+    readScan(dir.file("scan.bin"), fast, ScanFormat::KittiBin);
+    readScan(dir.file("scan.pcd"), general);
+    ASSERT_EQ(fast.size(), n);
+    ASSERT_EQ(general.size(), n);
+    const auto bits = [](const std::vector<float>& v) {
+        std::vector<uint32_t> out(v.size());
+        std::memcpy(out.data(), v.data(), 4 * v.size());
+        return out;
+    };
+    EXPECT_EQ(bits(fast.x), bits(general.x));
+    EXPECT_EQ(bits(fast.y), bits(general.y));
+    EXPECT_EQ(bits(fast.z), bits(general.z));
+    EXPECT_EQ(bits(fast.intensity), bits(general.intensity));
+}
+
 TEST(ScanIO, PlySkipsOtherElementsAndReadsAnyType) {
     TempDir dir;
     const std::string header_tail =

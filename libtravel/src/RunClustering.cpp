@@ -724,8 +724,7 @@ void RunClustering::vertical(const Params& params) {
             const uint32_t b_begin = row_runs_begin_[rr], b_end = row_runs_begin_[rr + 1];
             if (a_begin == a_end || b_begin == b_end) continue;
             const uint32_t* below = table(rr);
-            const float ring_step =
-                std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(r - rr);
+            const float ring_step = ringSpacing(r, rr);
             ring_step2 = ring_step * ring_step;
             // The box pre-filter with a's farthest range: no pair of a's points needs more
             // (runsTouch takes the spacing at each point's own range).

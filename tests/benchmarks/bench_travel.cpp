@@ -26,6 +26,10 @@
 //                   (the tracker before the alignment)
 //   BM_Registration_KITTI the ego-motion estimate of travel-kitti --track without poses:
 //                   ScanRegistration of frame 1's non-ground points to frame 0's
+//   BM_ReadScan_KITTI / _PCD / _Synthetic  travel::readScan of one file into a reused cloud
+//                   (the bytes from the page cache, then decoded): SemanticKITTI 00 frame 0,
+//                   kitti_raw_pcd frame 0 (binary PCD, x y z intensity), the Synthetic case
+//                   written as a KITTI .bin to a temporary file (always available)
 // (KITTI cases take the frame as argument: BM_Ground_KITTI/0..2; stages use frame 0.)
 // Cases whose data is missing report an error and are skipped.
 // Run: build/tests/benchmarks/bench_travel --benchmark_repetitions=10
@@ -49,6 +53,7 @@
 #include "travel/TerrainModelFitting.hpp"
 #include "travel/TraversableGraphSearch.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel/io/ScanIO.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
 #include "travel/tracking/FrameTracker.hpp"
@@ -394,6 +399,20 @@ void runRegistration(benchmark::State& state) {
     state.counters["points"] = static_cast<double>(points[1].size());
 }
 
+// travel::readScan of one file, the cloud reused (as the apps' workers do).
+void runReadScan(benchmark::State& state, const std::string& path) {
+    if (!fs::exists(path)) {
+        state.SkipWithError((path + ": not found (../shared/data)").c_str());
+        return;
+    }
+    PointCloud cloud;
+    for (auto _ : state) {
+        readScan(path, cloud);
+        benchmark::DoNotOptimize(cloud.x.data());
+    }
+    state.counters["points"] = static_cast<double>(cloud.size());
+}
+
 void registerAll() {
     using benchmark::RegisterBenchmark;
     struct Named {
@@ -445,6 +464,19 @@ void registerAll() {
     RegisterBenchmark("BM_Tracking_KITTI_CentroidOnly", runTracking, false)
         ->Unit(benchmark::kMicrosecond);
     RegisterBenchmark("BM_Registration_KITTI", runRegistration)->Unit(benchmark::kMillisecond);
+    const fs::path data(TRAVEL_DATA_DIR);
+    RegisterBenchmark("BM_ReadScan_KITTI", runReadScan,
+                      (data / "semantickitti/sequences/00/velodyne/000000.bin").string())
+        ->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_ReadScan_PCD", runReadScan,
+                      (data / "kitti_raw_pcd/0000000000.pcd").string())
+        ->Unit(benchmark::kMicrosecond);
+    RegisterBenchmark("BM_ReadScan_Synthetic", [](benchmark::State& state) {
+        const fs::path path = fs::temp_directory_path() / "travel_bench_synthetic.bin";
+        writeKittiBin(path.string(), getCase(kSynthetic).cloud);
+        runReadScan(state, path.string());
+        fs::remove(path);
+    })->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
+#include "travel/Pipeline.hpp"
 #include "travel/RangeImage.hpp"
 #include "travel/RunClustering.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
@@ -93,30 +95,28 @@ struct LinkSearch {
 
 std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                                     const std::vector<uint32_t>& gt_labels, const PointCloud& cloud,
-                                    const Params& params, std::size_t min_part_points) {
+                                    const Pipeline& pipeline, std::size_t min_part_points) {
     const std::size_t n = cloud.size();
     std::vector<MergedPart> parts;
     if (cluster_id.size() != n || gt_labels.size() != n) return parts;
+    // What the object stage linked on: its rows and columns, its coordinates, its rows'
+    // elevations and the parameters in use (`auto` values resolved).
+    const RangeImage& image = pipeline.rangeImage();
+    const RunClustering& clustering = pipeline.clustering();
+    const AlignedCloud& aligned = pipeline.aligned();
+    const Params& params = pipeline.params();
+    if (aligned.x.size() != n || image.row().size() != n ||
+        clustering.rowElevations().size() != static_cast<std::size_t>(image.rows()))
+        throw std::invalid_argument(
+            "travel::eval::mergedParts: the pipeline's last frame is not this cloud of " +
+            std::to_string(n) + " points clustered (cluster_objects)");
     const std::vector<uint32_t> object = groundTruthObjects(gt_labels, cloud.x, cloud.y, cloud.z);
-    std::vector<float> range(n);
-    std::vector<uint8_t> valid(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        range[i] =
-            std::sqrt(cloud.x[i] * cloud.x[i] + cloud.y[i] * cloud.y[i] + cloud.z[i] * cloud.z[i]);
-        valid[i] = std::isfinite(range[i]) && range[i] > 0.f;
-    }
-    RangeImage image;
-    image.build(cloud, valid, params);
+    const std::vector<float>&x = aligned.x, &y = aligned.y, &z = aligned.z;
+    std::vector<float> range(n, 0.f);
+    for (std::size_t i = 0; i < n; ++i)
+        if (aligned.valid[i]) range[i] = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
     const std::vector<int16_t>& row = image.row();
     const int rows = image.rows();
-    // Each row's mean elevation, as RunClustering's (range-weighted mean sine).
-    std::vector<double> sum_z(rows, 0.0), sum_r(rows, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-        if (row[i] >= 0) sum_z[row[i]] += cloud.z[i], sum_r[row[i]] += range[i];
-    std::vector<float> elevation(rows, 0.f);
-    for (int r = 0; r < rows; ++r)
-        if (sum_r[r] > 0)
-            elevation[r] = float(std::asin(std::clamp(sum_z[r] / sum_r[r], -1.0, 1.0)));
 
     // Group key: the GT object, else the semantic class (high bit set).
     auto groupOf = [&](std::size_t i) -> uint32_t {
@@ -174,13 +174,10 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                 const uint32_t p = order[k];
                 const int rp = row[p];
                 for (int rq = std::max(0, rp - span); rq <= std::min(rows - 1, rp + span); ++rq) {
-                    const float elev_step =
-                        rq == rp ? 0.f
-                                 : std::fabs(elevation[rp] - elevation[rq]) / std::abs(rp - rq);
+                    const float elev_step = clustering.ringSpacing(rp, rq);
                     for (const uint32_t q : by_row[rq]) {
                         if (groupOf(q) == group) continue;
-                        const float dx = cloud.x[p] - cloud.x[q], dy = cloud.y[p] - cloud.y[q],
-                                    dz = cloud.z[p] - cloud.z[q];
+                        const float dx = x[p] - x[q], dy = y[p] - y[q], dz = z[p] - z[q];
                         const float d2 = dx * dx + dy * dy + dz * dz;
                         if (d2 < s.any) s.any = d2, s.any_pair[0] = p, s.any_pair[1] = q;
                         if (rq == rp) {
@@ -192,9 +189,9 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                                 s.seam = d2, s.seam_pair[0] = p, s.seam_pair[1] = q;
                             continue;
                         }
-                        // The vertical update compares points at most T_ext columns apart.
-                        const int dc = std::abs(col[p] - col[q]) % cols;
-                        if (std::min(dc, cols - dc) > params.vertical_column_extension) continue;
+                        // The vertical update compares points at most T_ext columns apart,
+                        // not across the 0/360-degree seam (RunClustering::runsTouch()).
+                        if (std::abs(col[p] - col[q]) > params.vertical_column_extension) continue;
                         if (d2 < s.cross_row)
                             s.cross_row = d2, s.cross_pair[0] = p, s.cross_pair[1] = q;
                         const float gap = range[rq > rp ? q : p] * elev_step;  // upper point
@@ -230,11 +227,14 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                 part.rule = LinkRule::Seam, pair = s.seam_pair;
             const std::size_t p = pair[0], q = pair[1];
             if (std::isfinite(s.any)) {
-                const float dx = cloud.x[p] - cloud.x[q], dy = cloud.y[p] - cloud.y[q],
-                            dz = cloud.z[p] - cloud.z[q];
+                const float dx = x[p] - x[q], dy = y[p] - y[q], dz = z[p] - z[q];
                 part.link_distance = std::sqrt(dx * dx + dy * dy + dz * dz);
                 part.depth_jump = std::fabs(range[p] - range[q]);
                 part.row_gap = std::abs(row[p] - row[q]);
+                part.part_point = static_cast<uint32_t>(p);
+                part.rest_point = static_cast<uint32_t>(q);
+                part.part_row = row[p], part.rest_row = row[q];
+                part.ring_spacing = clustering.ringSpacing(row[p], row[q]);
             }
             parts.push_back(part);
         }

@@ -176,6 +176,10 @@ class MethodSegmenter final : public Segmenter {
         if (pipeline_) pipeline_->adoptSettledState(*other->pipeline_);
     }
 
+    const Pipeline* objectPipeline() const override {
+        return method_.objects == Objects::TravelAos ? pipeline_.get() : nullptr;
+    }
+
   private:
     Method method_;
     Params params_;

@@ -79,6 +79,9 @@ class Pipeline {
     /// Rings and columns of the last frame (valid when params.cluster_objects or the face rule
     /// is on).
     const RangeImage& rangeImage() const { return range_image_; }
+    /// The object stage of the last frame (its rows' elevations: RunClustering::rowElevations();
+    /// valid when params.cluster_objects or the face rule's walls scope is on).
+    const RunClustering& clustering() const { return clustering_; }
 
   private:
     /// Estimates `auto` values or checks fixed ones (until done); sets `note`.

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -76,6 +78,21 @@ class RunClustering {
     void reserve(std::size_t points, std::size_t cells);
 
     std::size_t numRuns() const { return run_first_.size(); }
+
+    /// After horizontal(): the mean elevation [rad] of each range-image row, the range-weighted
+    /// mean sine of the elevations of the row's clustered (non-ground) points in the aligned
+    /// frame; 0 for a row without any.
+    const std::vector<float>& rowElevations() const { return row_elevation_; }
+    /// After horizontal(): dtheta of the range-scaled vertical rule between rows r and rr: one
+    /// ring's spacing [rad], the rows' mean elevations apart / rows apart. Two points of these
+    /// rows merge when closer than sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range.
+    /// 0 when r == rr or either row has no run (the vertical update compares no point there).
+    float ringSpacing(int r, int rr) const {
+        if (r == rr || row_runs_begin_[r] == row_runs_begin_[r + 1] ||
+            row_runs_begin_[rr] == row_runs_begin_[rr + 1])
+            return 0.f;
+        return std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(std::abs(r - rr));
+    }
 
   private:
     int find(int run);

@@ -1,7 +1,14 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <string>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#include <xmmintrin.h>
+#endif
 
 #include "Readers.hpp"
 #include "travel/EnumNames.hpp"
@@ -218,6 +225,69 @@ void checkRecordsFit(const std::string& path, const std::vector<Field>& fields, 
     }
 }
 
+namespace {
+
+// The float the general path below gives for a float32 value: it goes through a double, which
+// turns a signalling NaN quiet (sets the quiet bit, keeps the payload); every other value,
+// denormals and -0 included, comes back unchanged.
+constexpr uint32_t kQuietNanBit = 0x00400000u;
+
+inline float throughDouble(float v) {
+    uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    if (v != v) bits |= kQuietNanBit;
+    std::memcpy(&v, &bits, sizeof bits);
+    return v;
+}
+
+// KITTI's record layout: float32 x, y, z, intensity (16 bytes), each taken as it is.
+bool isXyziFloat32(const std::vector<Field>& fields) {
+    constexpr Target kXyzi[4] = {Target::X, Target::Y, Target::Z, Target::Intensity};
+    if (fields.size() != 4) return false;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Field& f = fields[k];
+        if (f.target != kXyzi[k] || f.type != ValueType::F32 || f.count != 1 || f.list ||
+            f.scale != 1.0)
+            return false;
+    }
+    return true;
+}
+
+// Splits n packed little-endian x, y, z, intensity float32 records into the four arrays, as the
+// general path does (throughDouble()), four records at a time: four loads, a 4x4 transpose and
+// four stores, where the general path converts every value through a double one by one.
+void splitXyzi(const unsigned char* packed, std::size_t n, float* x, float* y, float* z,
+               float* intensity) {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    if constexpr (!le::kHostIsBigEndian) {
+        const __m128 quiet = _mm_castsi128_ps(_mm_set1_epi32(static_cast<int>(kQuietNanBit)));
+        auto quieted = [&](__m128 v) {
+            return _mm_or_ps(v, _mm_and_ps(_mm_cmpunord_ps(v, v), quiet));
+        };
+        for (; i + 4 <= n; i += 4) {
+            const float* r = reinterpret_cast<const float*>(packed + 16 * i);
+            __m128 r0 = _mm_loadu_ps(r), r1 = _mm_loadu_ps(r + 4), r2 = _mm_loadu_ps(r + 8),
+                   r3 = _mm_loadu_ps(r + 12);
+            _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+            _mm_storeu_ps(x + i, quieted(r0));
+            _mm_storeu_ps(y + i, quieted(r1));
+            _mm_storeu_ps(z + i, quieted(r2));
+            _mm_storeu_ps(intensity + i, quieted(r3));
+        }
+    }
+#endif
+    for (; i < n; ++i) {
+        const unsigned char* r = packed + 16 * i;
+        x[i] = throughDouble(le::load<float>(r));
+        y[i] = throughDouble(le::load<float>(r + 4));
+        z[i] = throughDouble(le::load<float>(r + 8));
+        intensity[i] = throughDouble(le::load<float>(r + 12));
+    }
+}
+
+}  // namespace
+
 void decodeRecords(const std::string& path, const std::vector<Field>& fields, std::size_t n,
                    ValueSource& src, PointCloud& cloud, const char* what) {
     bool has[kTargets] = {};
@@ -232,8 +302,15 @@ void decodeRecords(const std::string& path, const std::vector<Field>& fields, st
         cloud.time.resize(n);
     else
         cloud.time.clear();
-    // Fast path for the usual layout, packed float32 values (KITTI, nuScenes, most PCDs): no
-    // per-value dispatch (about 4x faster than the general path on a KITTI scan).
+    // KITTI's layout (binary float32 x, y, z, intensity): split as it is, no per-value work.
+    if (!src.ascii() && isXyziFloat32(fields)) {
+        if (n > 0)
+            splitXyzi(src.take(n * 16, n, what), n, cloud.x.data(), cloud.y.data(), cloud.z.data(),
+                      cloud.intensity.data());
+        return;
+    }
+    // Other packed float32 layouts (nuScenes, PCDs with more fields): no per-value dispatch
+    // (about 4x faster than the general path below).
     bool all_f32 = !src.ascii();
     for (const Field& f : fields)
         all_f32 = all_f32 && f.type == ValueType::F32 && f.count == 1 && !f.list;

@@ -9,9 +9,11 @@
 //   objects) are grouped by semantic class. The largest group of a cluster is its owner; every
 //   other group of at least min_part_points points is a part.
 // - Linkage, inferred from the geometry of the closest point pairs between the part and the rest
-//   of the cluster, on the range image rows (RangeImage, as the pipeline builds it), in this
-//   order: horizontal (same ring, closer than T_horz), vertical (rings 1..T_ring apart, columns
-//   at most T_ext apart, closer than T_vert), range-scaled vertical (closer than
+//   of the cluster, on what the pipeline's object stage linked on: its range image (rows,
+//   columns, sweep start: Pipeline::rangeImage()), its aligned coordinates and its rows'
+//   elevations (RunClustering::ringSpacing()), in this order: horizontal (same ring, closer
+//   than T_horz), vertical (rings 1..T_ring apart, columns at most T_ext apart, not across the
+//   0/360-degree seam, closer than T_vert), range-scaled vertical (closer than
 //   sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range, dtheta one ring's spacing), occlusion
 //   (same ring, closer than occlusion_max_gap, ranges within T_horz), seam (same ring, both within
 //   4 columns of the sweep start, closer than seam_max_shift), else indirect (see-through, a feet
@@ -27,8 +29,11 @@
 #include <string>
 #include <vector>
 
-#include "travel/Params.hpp"
 #include "travel/PointCloud.hpp"
+
+namespace travel {
+class Pipeline;
+}
 
 namespace travel::eval {
 
@@ -59,13 +64,24 @@ struct MergedPart {
     float link_distance = 0;  ///< 3-D distance of the linking pair [m]
     float depth_jump = 0;     ///< |range difference| of the linking pair [m]
     int row_gap = 0;          ///< rings between the linking pair's points
+    /// The linking pair: input indices of its point in the part and in the rest of the
+    /// cluster, and their range-image rows (Pipeline::rangeImage().row()).
+    uint32_t part_point = 0, rest_point = 0;
+    int part_row = -1, rest_row = -1;
+    /// dtheta between the pair's rows (RunClustering::ringSpacing()) [rad]; 0 on one row or
+    /// where a row has no run.
+    float ring_spacing = 0;
 };
 
 /// Parts of every cluster with more than one group (see the file comment), ordered by cluster.
-/// cluster_id, gt_labels and the cloud (sensor frame, as read) are indexed alike.
+/// cluster_id, gt_labels and the cloud (sensor frame, as read) are indexed alike; `pipeline`
+/// processed `cloud` last, with its object stage on (params.cluster_objects): the linkage is
+/// read on its range image, aligned coordinates, rows' elevations and parameters in use.
+/// cluster_id is usually its Result's, or any grouping of the same points. Throws
+/// std::invalid_argument when the pipeline's last frame has another size or no object stage.
 std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
                                     const std::vector<uint32_t>& gt_labels, const PointCloud& cloud,
-                                    const Params& params, std::size_t min_part_points = 5);
+                                    const Pipeline& pipeline, std::size_t min_part_points = 5);
 
 /// One CSV row per part (header when `header`): frame, cluster, owner and part classes and
 /// points, range, rule, link distance, depth jump, row gap.

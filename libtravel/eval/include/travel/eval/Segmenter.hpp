@@ -21,6 +21,10 @@
 #include "travel/PointCloud.hpp"
 #include "travel/Result.hpp"
 
+namespace travel {
+class Pipeline;
+}
+
 namespace travel::eval {
 
 struct Segmentation {
@@ -59,6 +63,10 @@ class Segmenter {
     /// with the same method and Params and not yet used, keeping its buffers (apps build the
     /// workers' segmenters before the first frame, Pipeline::adoptSettledState()).
     virtual void adoptSettledState(const Segmenter& settled) = 0;
+    /// The Pipeline whose object stage made the last frame's cluster ids (TRAVEL's methods,
+    /// "travel" and "travel-no-ttmf"), for diagnostics that read its range image and rows
+    /// (mergedParts()); nullptr for the methods with another or no clustering.
+    virtual const Pipeline* objectPipeline() const = 0;
 };
 
 /// Methods by name: "travel", "travel-no-ttmf", "tgs", "ransac", "gpf", "gpf+slr", "tgs+slr",
