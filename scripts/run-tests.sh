@@ -75,7 +75,7 @@ asan_env=(env LSAN_OPTIONS=suppressions="$ROOT_DIR/tests/lsan.supp"
           UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1)
 "${asan_env[@]}" ctest --test-dir build-asan -j2 --output-on-failure -E "$ASAN_SKIP"
 
-log "Release labels = sanitizer build's labels (synthetic scans; real scans when ../shared is there)"
+log "Release labels = sanitizer build's labels (synthetic scans; real scans when TRAVEL_DATA_DIR holds them)"
 "${asan_env[@]}" cmake -DRELEASE_KITTI=build/apps/travel-kitti -DCHECKED_KITTI=build-asan/apps/travel-kitti \
   -DMAKE_SCANS=build/tests/make_synthetic_scans -DWORK_DIR="$ROOT_DIR/build/same_labels_across_builds" \
   -DDATA_DIR="$(sed -n 's/^TRAVEL_DATA_DIR:PATH=//p' build/CMakeCache.txt)" \
