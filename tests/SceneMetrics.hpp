@@ -26,13 +26,14 @@ struct SceneScores {
     }
 };
 
-/// No-return points are not scored; with a cloud and max_range, neither are points farther than
+/// No-return points and returns mirrored by water (sim::Reflection, SemanticKITTI's outliers)
+/// are not scored; with a cloud and max_range, neither are points farther than
 /// max_range from the sensor (to compare scans whose far coverage differs).
 inline SceneScores scoreScene(const sim::GroundTruth& gt, const std::vector<PointClass>& labels,
                               const PointCloud* cloud = nullptr, float max_range = 0.f) {
     SceneScores s;
     for (std::size_t i = 0; i < gt.size(); ++i) {
-        if (gt.cls[i] == sim::NoReturn) continue;
+        if (gt.cls[i] == sim::NoReturn || gt.cls[i] == sim::Reflection) continue;
         if (cloud && std::hypot(cloud->x[i], cloud->y[i], cloud->z[i]) > max_range) continue;
         const bool truth = gt.cls[i] == sim::Ground;
         const bool pred = labels[i] == PointClass::Ground;

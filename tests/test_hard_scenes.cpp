@@ -11,6 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
 
 #include "SceneMetrics.hpp"
 #include "travel/Pipeline.hpp"
@@ -605,6 +609,215 @@ TEST(HardScenes, BushesAndTrunksOnARoughHillside) {
         EXPECT_LE(g.first.first + g.second.first, c.max_objects_as_ground);
         EXPECT_LE(g.run.scores.high_obstacle_as_ground, c.max_high_as_ground);
     }
+}
+
+// ---- Harsher off-road scenes: grass, fences with wires, ditches, ruts, puddles, rocks, slopes.
+// Grass is ground (SemanticKITTI's terrain), bushes, shrubs, rocks, posts and wires are not;
+// mirrored returns below the puddles are not scored (SemanticKITTI marks them outliers).
+
+// Where the OS1-64 stands: `height` above the terrain along the normal of the vehicle's
+// footprint (4 x 2 m, heading `yaw_deg`), tilted on its mount by `mount_pitch_deg`.
+Eigen::Isometry3d vehicleSensorPose(const sim::Scene& scene, double yaw_deg, double mount_pitch_deg,
+                                    double height) {
+    const std::vector<Eigen::Vector2d> footprint = {
+        {2.0, 1.0}, {2.0, -1.0}, {-2.0, 1.0}, {-2.0, -1.0}};
+    double z = 0.0;
+    const Eigen::Matrix3d vehicle =
+        sim::robotAttitudeOnTerrain(scene, footprint, 0.0, 0.0, yaw_deg * sim::kDegToRad, z);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() =
+        vehicle * Eigen::AngleAxisd(mount_pitch_deg * sim::kDegToRad, Eigen::Vector3d::UnitY());
+    pose.translation() = Eigen::Vector3d(0.0, 0.0, z) + vehicle * Eigen::Vector3d(0, 0, height);
+    return pose;
+}
+
+struct OffRoadRun {
+    SceneRun run;
+    Eigen::Isometry3d pose;
+};
+
+// `scene` seen by the OS1-64 (os64 preset) from `pose`; the attitude (roll and pitch of the
+// pose) is given to the pipeline, as an IMU would.
+OffRoadRun segmentOffRoad(const sim::Scene& scene, const Eigen::Isometry3d& pose,
+                          const Params& params = os64Params()) {
+    sim::LidarModel model = sim::LidarModel::uniform(64, -16.6, 16.6, 2048);
+    model.range_noise_sigma = 0.01;
+    model.seed = 7;
+    model.max_range = params.max_range;
+    OffRoadRun r{{}, pose};
+    r.run.scan = sim::scan(scene, model, pose);
+    FrameInput input;
+    input.vehicle_attitude = pose.linear();
+    Pipeline pipeline(params);
+    pipeline.process(r.run.scan.cloud, input, r.run.result);
+    r.run.scores = test::scoreScene(r.run.scan.gt, r.run.result.labels);
+    return r;
+}
+
+// The errors of an off-road run by cause: non-ground taken as ground by object group (and steep
+// terrain), ground missed by where it lies (a named region of the scene, or the grass canopy:
+// 3 cm or more above the soil), and the mirrored returns by label.
+struct OffRoadCauses {
+    std::map<std::string, std::size_t> as_ground, missed;
+    std::size_t reflections = 0, reflections_as_ground = 0;
+};
+
+template <typename GroupOf, typename RegionOf>
+OffRoadCauses offRoadCauses(const OffRoadRun& r, GroupOf groupOf, RegionOf regionOf) {
+    OffRoadCauses c;
+    const sim::GroundTruth& gt = r.run.scan.gt;
+    const PointCloud& cloud = r.run.scan.cloud;
+    for (std::size_t i = 0; i < gt.size(); ++i) {
+        const bool as_ground = r.run.result.labels[i] == PointClass::Ground;
+        if (gt.cls[i] == sim::Reflection) {
+            ++c.reflections;
+            c.reflections_as_ground += as_ground;
+            continue;
+        }
+        const Eigen::Vector3d p = r.pose * Eigen::Vector3d(cloud.x[i], cloud.y[i], cloud.z[i]);
+        const double range = p.head<2>().norm();
+        const char* bin = range < 10 ? " 0-10" : range < 20 ? " 10-20" : " 20+";
+        if (gt.cls[i] == sim::NonGround && as_ground)
+            ++c.as_ground[(gt.instance[i] ? groupOf(gt.instance[i]) : std::string("steep")) + bin];
+        if (gt.cls[i] == sim::Ground && !as_ground)
+            ++c.missed[(gt.height_above_ground[i] >= 0.03f ? std::string("canopy")
+                                                           : std::string(regionOf(p))) +
+                       (r.run.result.labels[i] == PointClass::Outlier ? "/outlier" : "") + bin];
+    }
+    return c;
+}
+
+void print(const char* name, const OffRoadRun& r, const OffRoadCauses& c) {
+    print(name, r.run.scores);
+    std::printf("  as ground:");
+    for (const auto& [k, v] : c.as_ground) std::printf(" %s %zu;", k.c_str(), v);
+    std::printf("\n  missed:");
+    for (const auto& [k, v] : c.missed) std::printf(" %s %zu;", k.c_str(), v);
+    std::printf("\n  mirrored returns %zu, as ground %zu\n", c.reflections,
+                c.reflections_as_ground);
+}
+
+std::string meadowGroup(uint32_t id) {
+    return id <= 8 ? "bush" : id <= 16 ? "trunk" : id <= 26 ? "shrub" : id <= 38 ? "rock" : "?";
+}
+std::string soil(const Eigen::Vector3d&) {
+    return "soil";
+}
+std::size_t sumOf(const std::map<std::string, std::size_t>& counts, const std::string& prefix) {
+    std::size_t sum = 0;
+    for (const auto& [key, count] : counts) sum += key.rfind(prefix, 0) == 0 ? count : 0;
+    return sum;
+}
+
+// Grass 0.12-0.5 m (ground), bushes, trunks, low shrubs and rocks on the uneven meadow; the
+// OS1-64 level and pitched 6 deg down on its mount (the attitude given). Measured (level /
+// pitched): precision 0.9913 / 0.9911, recall 0.9547 / 0.9334. Not fixed: the canopy of the
+// tall grass 0.13 m or more above the plane is non-ground by eq. 5 (1,434 / 1,443 points 0-10 m,
+// 2,445 / 2,782 in all); the grass raises the node planes, so that rocks up to 0.35 m and low
+// shrubs up to 0.5 m lie within eps3 of them (rock points as ground 262 / 266, shrub 156 / 153);
+// the face rule needs a non-ground face 0.25 m above the foot (kerbs) and finds none there.
+// Pitched, the soil 20 m and farther is missed (897 points; 35 level).
+void tallGrassShrubsAndRocks(double mount_pitch_deg, double min_precision, double min_recall,
+                             std::size_t max_rocks_and_shrubs, std::size_t max_bushes_and_trunks) {
+    const sim::Scene scene = sim::offRoadTallGrassAndRocks();
+    const OffRoadRun r = segmentOffRoad(
+        scene, vehicleSensorPose(scene, 0.0, mount_pitch_deg, sim::kOffRoadSensorHeight));
+    const OffRoadCauses c = offRoadCauses(r, meadowGroup, soil);
+    std::printf("tall_grass_pitch%.0f", mount_pitch_deg);
+    print("", r, c);
+    EXPECT_GE(r.run.scores.precision(), min_precision);
+    EXPECT_GE(r.run.scores.recall(), min_recall);
+    EXPECT_LE(sumOf(c.as_ground, "rock") + sumOf(c.as_ground, "shrub"), max_rocks_and_shrubs);
+    EXPECT_LE(sumOf(c.as_ground, "bush") + sumOf(c.as_ground, "trunk"), max_bushes_and_trunks);
+    EXPECT_LE(r.run.scores.high_obstacle_as_ground, 25u);
+}
+
+TEST(HardScenes, OffRoadTallGrassShrubsAndRocks) {
+    tallGrassShrubsAndRocks(0.0, 0.989, 0.950, 480, 70);
+}
+
+TEST(HardScenes, OffRoadTallGrassShrubsAndRocksPitchedMount) {
+    tallGrassShrubsAndRocks(6.0, 0.989, 0.928, 480, 70);
+}
+
+// Farm fences (posts every 3 m, four wires 1.5 cm thick from 0.2 m up) across 0.15 m grass.
+// Measured: precision 0.9998, recall 0.9756 (the canopy: 1,398 of the 1,450 missed points),
+// post points as ground 4, wire 8.
+TEST(HardScenes, OffRoadFenceLinesInGrass) {
+    const sim::Scene scene = sim::offRoadFenceLines();
+    const OffRoadRun r =
+        segmentOffRoad(scene, vehicleSensorPose(scene, 0.0, 0.0, sim::kOffRoadSensorHeight));
+    const OffRoadCauses c = offRoadCauses(
+        r, [](uint32_t id) { return id <= 45 ? std::string("post") : std::string("wire"); }, soil);
+    print("fence_lines", r, c);
+    EXPECT_GE(r.run.scores.precision(), 0.999);
+    EXPECT_GE(r.run.scores.f1(), 0.985);
+    EXPECT_LE(sumOf(c.as_ground, "post") + sumOf(c.as_ground, "wire"), 25u);
+}
+
+// A track with ruts and puddles between ditches 0.6 m (20 deg sides) and 0.4 m deep (15 deg),
+// grass beside it. The nodes at a ditch's bottom are reached and fit its bottom, but TTMF's
+// corners average their planes with the track's and the field's (eq. 1), which lifts them
+// 0.3-0.6 m: without onOwnPlaneOnly's lower side (GroundLabelling.cpp) the bottom lies more than
+// outlier_dist below the refitted plane: outliers (left ditch 868 points, right 35; recall
+// 0.9400, F1 0.9689). With it: outliers 4 and 1, recall 0.9585, F1 0.9787, precision 0.9998
+// either way. Not fixed: the canopy (2,194 missed), the mirrored returns of the water that lie
+// within 0.3 m below it (5 of 5 labelled ground; not scored: SemanticKITTI's outliers).
+TEST(HardScenes, OffRoadTrackWithDitchesRutsAndPuddles) {
+    const sim::Scene scene = sim::offRoadTrackWithDitchesRutsAndPuddles();
+    const OffRoadRun r =
+        segmentOffRoad(scene, vehicleSensorPose(scene, 0.0, 0.0, sim::kOffRoadSensorHeight));
+    const auto region = [&](const Eigen::Vector3d& p) {
+        for (const sim::Puddle& puddle : scene.puddles)
+            if ((p.head<2>() - puddle.centre).norm() < puddle.radius + 0.5) return "puddle";
+        const double y = p.y();
+        if (y > 3.4 && y < 7.7) return "ditch_left";
+        if (y < -3.4 && y > -7.2) return "ditch_right";
+        if (std::abs(y) > 0.55 && std::abs(y) < 1.0) return "rut";
+        return std::abs(y) < 3.4 ? "track" : "field";
+    };
+    const OffRoadCauses c = offRoadCauses(
+        r, [](uint32_t id) { return id <= 3 ? std::string("bush") : std::string("trunk"); },
+        region);
+    print("track_ditch_ruts_puddles", r, c);
+    std::size_t ditch_outliers = 0;
+    for (const auto& [key, count] : c.missed)
+        ditch_outliers +=
+            key.rfind("ditch", 0) == 0 && key.find("/outlier") != std::string::npos ? count : 0;
+    EXPECT_LE(ditch_outliers, 20u);
+    EXPECT_GE(r.run.scores.recall(), 0.955);
+    EXPECT_GE(r.run.scores.precision(), 0.999);
+    EXPECT_LE(sumOf(c.as_ground, "bush") + sumOf(c.as_ground, "trunk"), 25u);
+    EXPECT_GT(c.reflections, 0u);
+    EXPECT_LE(c.reflections_as_ground, 10u);
+}
+
+// The vehicle on a 20 deg grassy hillside with bushes, trunks and rocks, facing up the slope
+// and across it (the attitude given). Measured (up / across): precision 0.9945 / 0.9934,
+// recall 0.9529 / 0.9734 (without onOwnPlaneOnly's lower side 0.9507 / 0.9718: the bottoms of
+// hollows between the bumps, below their lifted refitted planes, are outliers); rock points as
+// ground 257 / 324, bush and trunk 58 / 66; the misses are the canopy (1,771 / 1,080) and soil
+// 20 m and farther (853 / 349).
+void twentyDegreeHillside(double yaw_deg) {
+    const sim::Scene scene = sim::offRoadHillside(20.0);
+    const OffRoadRun r =
+        segmentOffRoad(scene, vehicleSensorPose(scene, yaw_deg, 0.0, sim::kOffRoadSensorHeight));
+    const OffRoadCauses c = offRoadCauses(r, meadowGroup, soil);
+    std::printf("hillside20_yaw%.0f", yaw_deg);
+    print("", r, c);
+    EXPECT_GE(r.run.scores.precision(), 0.992);
+    EXPECT_GE(r.run.scores.recall(), 0.948);
+    EXPECT_LE(sumOf(c.as_ground, "rock"), 400u);
+    EXPECT_LE(sumOf(c.as_ground, "bush") + sumOf(c.as_ground, "trunk"), 90u);
+    EXPECT_LE(r.run.scores.high_obstacle_as_ground, 35u);
+}
+
+TEST(HardScenes, OffRoadTwentyDegreeHillsideUpTheSlope) {
+    twentyDegreeHillside(0.0);
+}
+
+TEST(HardScenes, OffRoadTwentyDegreeHillsideAcrossTheSlope) {
+    twentyDegreeHillside(90.0);
 }
 
 TEST(HardScenes, CarTwoMetresFromA64And128BeamSensor) {

@@ -482,4 +482,71 @@ TEST(Sim, MarchMatchesBruteForce) {
     }
 }
 
+// Grass (a GroundCover) is terrain: its returns are Ground at heights within its canopy, about
+// return_fraction of them off the soil; outside it the terrain is bare.
+TEST(Sim, GroundCoverReturnsFromItsCanopy) {
+    Scene scene = travel::sim::flatGround();
+    travel::sim::GroundCover grass;
+    grass.lo = {2.0, -30.0};
+    grass.hi = {30.0, 30.0};
+    grass.height = 0.4;
+    grass.return_fraction = 0.5;
+    scene.covers.push_back(grass);
+    const Eigen::Isometry3d pose = levelPose(scene);
+    const Scan s = scan(scene, LidarModel::vlp16(900), pose);
+    std::size_t inside = 0, in_canopy = 0;
+    for (std::size_t i = 0; i < s.cloud.size(); ++i) {
+        const Eigen::Vector3d p = pose * sensorPoint(s, i);
+        ASSERT_EQ(s.gt.cls[i], GtClass::Ground);
+        const float h = s.gt.height_above_ground[i];
+        EXPECT_NEAR(h, p.z(), 1e-4);
+        const bool covered = p.x() > 2.05 && p.x() < 29.95 && std::abs(p.y()) < 29.95;
+        if (!covered && (p.x() < 1.95 || p.x() > 30.05 || std::abs(p.y()) > 30.05)) {
+            EXPECT_NEAR(h, 0.0, 1e-6);
+            continue;
+        }
+        if (!covered) continue;
+        ++inside;
+        EXPECT_GE(h, -1e-6);
+        EXPECT_LE(h, 0.4 + 1e-6);
+        in_canopy += h > 0.01f;
+    }
+    ASSERT_GT(inside, 500u);
+    EXPECT_NEAR(static_cast<double>(in_canopy) / inside, 0.5, 0.1);
+}
+
+// A puddle returns nothing from its water but the rays it mirrors onto something in range (a
+// trunk beyond it): those are placed along the original ray, below the water (Reflection).
+TEST(Sim, PuddleMirrorsOrSwallowsTheRays) {
+    Scene scene = travel::sim::flatGround();
+    travel::sim::Puddle puddle;
+    puddle.centre = {6.0, 0.0};
+    puddle.radius = 2.0;
+    puddle.depth = 0.1;
+    puddle.rim_height = 0.03;
+    puddle.mirror_fraction = 0.5;
+    scene.puddles.push_back(puddle);
+    travel::sim::Pole trunk;
+    trunk.centre = {9.0, 0.0};
+    trunk.radius = 0.4;
+    trunk.height = 4.0;
+    scene.poles.push_back(trunk);
+    const double level = scene.waterLevel(0);
+    EXPECT_NEAR(level, -0.03, 1e-12);
+    const Eigen::Isometry3d pose = levelPose(scene);
+    const Scan s = scan(scene, LidarModel::hdl64(), pose);
+    std::size_t mirrored = 0;
+    for (std::size_t i = 0; i < s.cloud.size(); ++i) {
+        const Eigen::Vector3d p = pose * sensorPoint(s, i);
+        const double from_centre = (p.head<2>() - puddle.centre).norm();
+        // The bowl lies below the water within 1.67 m of the centre: no terrain is seen there.
+        if (s.gt.cls[i] == GtClass::Ground) EXPECT_GT(from_centre, 1.6);
+        if (s.gt.cls[i] != GtClass::Reflection) continue;
+        ++mirrored;
+        EXPECT_LT(p.z(), level);
+        EXPECT_EQ(s.gt.instance[i], 0u);
+    }
+    EXPECT_GT(mirrored, 20u);
+}
+
 }  // namespace

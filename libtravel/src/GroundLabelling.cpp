@@ -33,6 +33,11 @@
 // trunk's straight below its face, a car's sills and tyres under its body; a verge a metre
 // from a sign post, a tree or a parked car is not the base of anything (the dev frames' missed
 // sidewalk and terrain in such nodes stand next to poles, signs and other structures).
+// The own plane's band reaches below the refitted plane too (onOwnPlaneOnly, off-road ditches): a
+// point the refitted plane puts more than outlier_dist below it is ground when it lies within
+// [-outlier_dist, eps3) of its node's own plane, where that plane may label. TTMF lifts the
+// refitted plane of a node at a ditch's bottom toward the track beside it; the outlier band is
+// for returns from under a surface the scan sees, and the verified own plane is one.
 #include "travel/GroundLabelling.hpp"
 
 #include <algorithm>
@@ -58,6 +63,31 @@ TRAVEL_INTO_CALLER LaneMask classifyLanes(const Lanes& e, float ground_dist, flo
     const LaneMask ground = LaneMask{} + static_cast<int32_t>(PointClass::Ground);
     const LaneMask non_ground = LaneMask{} + static_cast<int32_t>(PointClass::NonGround);
     return e < -outlier_dist ? outlier : e < ground_dist ? ground : non_ground;
+}
+
+// True where the node's own plane, verified by the search (eq. 2), puts a point on the ground,
+// -outlier_dist <= e_own < eps3, and the refitted plane does not: above its eps3, or more than
+// outlier_dist below it. Below: the outlier band is for returns from under a surface the scan
+// sees (reflections, multipath), and the own plane is such a surface; TTMF's corners average
+// it with the neighbours' planes (eq. 1), which lift a node at a ditch's bottom toward the
+// track or field beside it by 0.3-0.6 m.
+template <typename T>
+TRAVEL_INTO_CALLER auto onOwnPlaneOnly(const T& e_refit, const T& e_own, float ground_dist,
+                                       float outlier_dist) {
+    return (e_own >= -outlier_dist) & (e_own < ground_dist) &
+           ((e_refit >= ground_dist) | (e_refit < -outlier_dist));
+}
+
+// eq. 5's signed distance of a point of a clear reached node (label_with_node_plane): e_own
+// where the own plane lies lower (min(e, e_own): a point on either surface is ground) or where
+// only it makes the point ground (onOwnPlaneOnly); else the refitted plane's e. e_own is
+// ignored below -outlier_dist.
+template <typename T>
+TRAVEL_INTO_CALLER T foldOwnPlane(const T& e_refit, const T& e_own, float ground_dist,
+                                  float outlier_dist) {
+    const auto own_lower = (e_own >= -outlier_dist) & (e_own < e_refit);
+    const auto own_only = onOwnPlaneOnly(e_refit, e_own, ground_dist, outlier_dist);
+    return own_lower | own_only ? e_own : e_refit;
 }
 
 thread_local std::vector<uint8_t> clear_scratch;     // per node, reused across frames
@@ -334,7 +364,7 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
     const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z(), od = node.d;
     own_only.clear();
     // The refitted plane's class for every point; the points that only the own plane makes
-    // Ground (min(e, e_own) in labelPoints: -outlier_dist <= e_own < eps3 <= e) are listed.
+    // Ground (onOwnPlaneOnly, as foldOwnPlane in labelPoints) are listed.
     const uint32_t end = node.begin + node.count;
     tall_blocks.resize(node.count / kLanes);
     uint32_t i = node.begin;
@@ -347,8 +377,7 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
         for (int l = 0; l < kLanes; ++l) labels[order[i + l]] = static_cast<PointClass>(label[l]);
         if (heights)
             for (int l = 0; l < kLanes; ++l) (*heights)[order[i + l]] = e[l];
-        const LaneMask own_only_lanes =
-            (e_own >= -outlier_dist) & (e_own < ground_dist) & (e >= ground_dist);
+        const LaneMask own_only_lanes = onOwnPlaneOnly(e, e_own, ground_dist, outlier_dist);
         if (anyLane(own_only_lanes))
             for (int l = 0; l < kLanes; ++l)
                 if (own_only_lanes[l]) own_only.push_back({i + l, e_own[l]});
@@ -358,8 +387,7 @@ void labelWithLocalClearance(const TriGridField& field, const TerrainModel& mode
         const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
         labels[order[i]] = classifyByPlaneDistance(e, ground_dist, outlier_dist);
         if (heights) (*heights)[order[i]] = e;
-        if (e_own >= -outlier_dist && e_own < ground_dist && e >= ground_dist)
-            own_only.push_back({i, e_own});
+        if (onOwnPlaneOnly(e, e_own, ground_dist, outlier_dist)) own_only.push_back({i, e_own});
     }
     if (own_only.empty()) return;
     Eigen::Vector2f lo(sx[own_only[0].first], sy[own_only[0].first]), hi = lo;
@@ -427,7 +455,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         const float s0 = ground->normal.x(), s1 = ground->normal.y();
         const float s2 = ground->normal.z(), d = ground->d;
         // The node's own plane, when the search verified it: a point on either surface is
-        // ground. Its signed distance is folded in as min(e, e_own) unless e_own says outlier.
+        // ground (foldOwnPlane).
         const float o0 = node.normal.x(), o1 = node.normal.y(), o2 = node.normal.z();
         const uint32_t end = node.begin + node.count;
         const bool own = clear[k] != 0;
@@ -447,7 +475,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
             const Lanes x = loadLanes(sx + i), y = loadLanes(sy + i), z = loadLanes(sz + i);
             const Lanes e_refit = s0 * x + s1 * y + s2 * z + d;
             const Lanes e_own = o0 * x + o1 * y + o2 * z + od;
-            const Lanes e = e_own >= -outlier_dist ? (e_own < e_refit ? e_own : e_refit) : e_refit;
+            const Lanes e = foldOwnPlane(e_refit, e_own, ground_dist, outlier_dist);
             const LaneMask label = classifyLanes(e, ground_dist, outlier_dist);
             // Most blocks have no point for the neighbours' planes: a plain scatter of labels.
             bool ask = false;
@@ -474,7 +502,7 @@ std::array<std::size_t, 4> labelPoints(const TriGridField& field, const AlignedC
         for (; i < end; ++i) {
             const float e_refit = s0 * sx[i] + s1 * sy[i] + s2 * sz[i] + d;
             const float e_own = o0 * sx[i] + o1 * sy[i] + o2 * sz[i] + od;
-            const float e = e_own >= -outlier_dist ? std::min(e_refit, e_own) : e_refit;
+            const float e = foldOwnPlane(e_refit, e_own, ground_dist, outlier_dist);
             PointClass label = classifyByPlaneDistance(e, ground_dist, outlier_dist);
             if (own && label == PointClass::NonGround &&
                 onClearNeighbourPlane(field, model, clear, k, sx[i], sy[i], sz[i], ground_dist,

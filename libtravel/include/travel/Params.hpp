@@ -161,7 +161,8 @@ struct AutoReal {
       "Each face foot joins the object cluster of its face (else it is left unclustered: on "     \
       "SemanticKITTI the feet at car sills are often labelled road/parking, see docs)")           \
     X(double, outlier_dist, 0.3, "m", 0.0, 100.0,                                                 \
-      "Points more than this below the refitted plane are outliers (below-ground noise)")         \
+      "Points more than this below the refitted plane are outliers (below-ground noise), "        \
+      "unless the own plane of their reached node makes them ground (a ditch's bottom)")          \
     /* ---- Range image (Sec. IV-A) ---- */                                                       \
     X(std::string, ring_source, "auto", "auto|field|scan_order|table", 0, 0,                      \
       "Where a point's ring comes from: the input's ring field, the scan order (a ring ends "     \

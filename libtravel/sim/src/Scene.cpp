@@ -66,6 +66,19 @@ double roughnessWavenumber(const Roughness& roughness) {
     return 2.0 * kPi / roughness.wavelength;
 }
 
+// The depth a puddle's bowl presses the terrain at (x, y): depth * (1 - d^2 / radius^2) inside.
+double bowlDepth(const Puddle& puddle, double x, double y) {
+    const double dx = x - puddle.centre.x(), dy = y - puddle.centre.y();
+    const double d2 = (dx * dx + dy * dy) / (puddle.radius * puddle.radius);
+    return d2 < 1.0 ? puddle.depth * (1.0 - d2) : 0.0;
+}
+
+// Whether two axis-aligned rectangles meet.
+bool rectanglesMeet(const Eigen::Vector2d& lo_a, const Eigen::Vector2d& hi_a,
+                    const Eigen::Vector2d& lo_b, const Eigen::Vector2d& hi_b) {
+    return (lo_a.array() <= hi_b.array()).all() && (lo_b.array() <= hi_a.array()).all();
+}
+
 void require(bool condition, const std::string& what) {
     if (!condition) throw std::invalid_argument("travel::sim::Scene: " + what);
 }
@@ -102,7 +115,14 @@ double Scene::terrainHeight(double x, double y) const {
         const double k = roughnessWavenumber(roughness);
         height += roughness.amplitude * std::sin(k * x) * std::cos(k * y);
     }
+    for (const Puddle& puddle : puddles) height -= bowlDepth(puddle, x, y);
     return height;
+}
+
+double Scene::waterLevel(std::size_t k) const {
+    const Puddle& puddle = puddles.at(k);
+    // The bowl presses `depth` at the centre (puddles do not overlap).
+    return terrainHeight(puddle.centre.x(), puddle.centre.y()) + puddle.depth - puddle.rim_height;
 }
 
 Eigen::Vector2d Scene::terrainGradient(double x, double y) const {
@@ -128,6 +148,11 @@ Eigen::Vector2d Scene::terrainGradient(double x, double y) const {
         gradient += Eigen::Vector2d(a * std::cos(k * x) * std::cos(k * y),
                                     -a * std::sin(k * x) * std::sin(k * y));
     }
+    for (const Puddle& puddle : puddles) {
+        const Eigen::Vector2d d(x - puddle.centre.x(), y - puddle.centre.y());
+        const double r2 = puddle.radius * puddle.radius;
+        if (d.squaredNorm() < r2) gradient += 2.0 * puddle.depth / r2 * d;
+    }
     return gradient;
 }
 
@@ -140,7 +165,9 @@ double Scene::terrainUpperBound() const {
     for (const Ramp& ramp : ramps) bound += std::max(0.0, ramp.topHeight());
     for (const Step& step : steps) bound += std::max(0.0, step.height);
     for (const Bump& bump : bumps) bound += std::max(0.0, bump.amplitude);
-    return bound;
+    double canopy = 0.0;
+    for (const GroundCover& cover : covers) canopy = std::max(canopy, cover.height);
+    return bound + canopy;
 }
 
 double Scene::terrainUpperBound(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const {
@@ -168,7 +195,10 @@ double Scene::terrainUpperBound(const Eigen::Vector2d& lo, const Eigen::Vector2d
         const double dy = std::max({lo.y() - bump.centre.y(), 0.0, bump.centre.y() - hi.y()});
         bound += bump.amplitude * std::exp(-(dx * dx + dy * dy) / (2.0 * bump.sigma * bump.sigma));
     }
-    return bound;
+    double canopy = 0.0;
+    for (const GroundCover& cover : covers)
+        if (rectanglesMeet(cover.lo, cover.hi, lo, hi)) canopy = std::max(canopy, cover.height);
+    return bound + canopy;
 }
 
 ZRange Scene::placement(const Box& box) const {
@@ -236,6 +266,18 @@ void Scene::validate() const {
     }
     require(roughness.amplitude == 0.0 || roughness.wavelength > 0.0,
             "roughness wavelength must be > 0");
+    for (const Puddle& puddle : puddles) {
+        require(puddle.radius > 0.0 && puddle.depth >= 0.0,
+                "puddle radius must be > 0, depth >= 0");
+        require(puddle.mirror_fraction >= 0.0 && puddle.mirror_fraction <= 1.0,
+                "puddle mirror_fraction must be in [0, 1]");
+    }
+    for (const GroundCover& cover : covers) {
+        require((cover.lo.array() < cover.hi.array()).all() && cover.height >= 0.0,
+                "cover needs lo < hi and height >= 0");
+        require(cover.return_fraction >= 0.0 && cover.return_fraction <= 1.0,
+                "cover return_fraction must be in [0, 1]");
+    }
     for (const Box& box : boxes) {
         require(box.id > 0, "box instance id must be > 0");
         require(box.length > 0.0 && box.width > 0.0 && box.height > 0.0,

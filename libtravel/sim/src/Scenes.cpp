@@ -234,6 +234,175 @@ Scene offRoadMeadow() {
     return scene;
 }
 
+namespace {
+
+// SemanticKITTI labels the whole of a meadow, a hillside or a ditch terrain, whatever the slope
+// its roughness makes locally (5 cm on 1.2 m waves reach 15 deg, 30-40 deg on a 20 deg hill).
+constexpr double kWholeTerrainIsGround = 90.0;
+
+GroundCover grass(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double height,
+                  double return_fraction) {
+    GroundCover cover;
+    cover.lo = lo;
+    cover.hi = hi;
+    cover.height = height;
+    cover.return_fraction = return_fraction;
+    return cover;
+}
+
+// offRoadMeadow's terrain (bumps, roughness) under grass of `height` everywhere within 80 m.
+Scene grassyMeadow(double height) {
+    Scene scene = offRoadMeadow();
+    scene.boxes.clear(), scene.poles.clear();
+    scene.covers.push_back(grass({-80.0, -80.0}, {80.0, 80.0}, height, 0.5));
+    scene.max_ground_slope_deg = kWholeTerrainIsGround;
+    return scene;
+}
+
+// Rocks 0.2-0.6 m (ids 31-38): boxes resting on (and sunk into) the terrain.
+void addRocks(Scene& scene) {
+    const double rocks[8][4] = {{5, 3, 0.5, 0.3},    {-4, -5, 0.8, 0.45}, {11, -1, 0.6, 0.2},
+                                {-8, 1, 1.0, 0.6},   {2, 7, 0.4, 0.25},   {16, 10, 0.9, 0.5},
+                                {-13, -9, 0.7, 0.4}, {8, -12, 0.5, 0.35}};
+    for (int k = 0; k < 8; ++k)
+        scene.boxes.push_back(box(static_cast<uint32_t>(31 + k), rocks[k][0], rocks[k][1],
+                                  rocks[k][2], 0.8 * rocks[k][2], rocks[k][3], 35.0 * k));
+}
+
+// offRoadMeadow's bushes (ids 1-8) with foliage returning 70 % of the rays, and its trunks.
+void addBushesAndTrunks(Scene& scene) {
+    const Scene meadow = offRoadMeadow();
+    for (Box bush : meadow.boxes) {
+        bush.return_fraction = 0.7;
+        scene.boxes.push_back(bush);
+    }
+    scene.poles.insert(scene.poles.end(), meadow.poles.begin(), meadow.poles.end());
+}
+
+// A fence of posts every 3 m from a to b, four wires between them (one id per span).
+void addFarmFence(Scene& scene, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                  uint32_t first_post_id, uint32_t first_span_id) {
+    const Eigen::Vector2d along = b - a;
+    const int spans = static_cast<int>(std::lround(along.norm() / 3.0));
+    const double yaw = std::atan2(along.y(), along.x()) / kDegToRad;
+    for (int k = 0; k <= spans; ++k) {
+        const Eigen::Vector2d p = a + along * (static_cast<double>(k) / spans);
+        scene.poles.push_back(
+            pole(first_post_id + static_cast<uint32_t>(k), p.x(), p.y(), 0.06, 1.3));
+        if (k == spans) break;
+        const Eigen::Vector2d mid = a + along * ((k + 0.5) / spans);
+        for (double height : {0.2, 0.55, 0.9, 1.25}) {
+            Box wire = box(first_span_id + static_cast<uint32_t>(k), mid.x(), mid.y(),
+                           along.norm() / spans - 0.12, 0.015, 0.015, yaw);
+            wire.clearance = height;
+            wire.return_fraction = 0.6;
+            scene.boxes.push_back(wire);
+        }
+    }
+}
+
+// A ditch along x on one side (outward +1: towards +y), from |y| = y_start: sides of slope_deg
+// down to `depth`, a flat bottom `bottom` wide, and up again.
+void addDitch(Scene& scene, double y_start, double outward, double depth, double slope_deg,
+              double bottom) {
+    const double side = depth / std::tan(slope_deg * kDegToRad);
+    Ramp down;
+    down.start = {0.0, y_start};
+    down.direction = {0.0, outward};
+    down.length = side;
+    down.width = 400.0;
+    down.slope_deg = -slope_deg;
+    Ramp up = down;
+    up.start = {0.0, y_start + outward * (side + bottom)};
+    up.slope_deg = slope_deg;
+    scene.ramps.push_back(down);
+    scene.ramps.push_back(up);
+}
+
+}  // namespace
+
+Scene offRoadTallGrassAndRocks() {
+    Scene scene = grassyMeadow(0.12);
+    scene.covers.push_back(grass({4.0, -10.0}, {12.0, -2.0}, 0.3, 0.6));
+    scene.covers.push_back(grass({-10.0, -14.0}, {-2.0, -6.0}, 0.3, 0.6));
+    scene.covers.push_back(grass({9.0, 2.0}, {15.0, 8.0}, 0.5, 0.7));
+    scene.covers.push_back(grass({-13.0, 1.0}, {-7.0, 7.0}, 0.5, 0.7));
+    scene.covers.push_back(grass({0.0, 11.0}, {6.0, 17.0}, 0.5, 0.7));
+    addBushesAndTrunks(scene);
+    const double shrubs[6][4] = {{6, 0, 0.8, 0.4},    {-3, 9, 0.6, 0.3},  {12, -8, 1.0, 0.5},
+                                 {-9, -3, 0.7, 0.35}, {17, 3, 0.9, 0.45}, {-15, 6, 0.8, 0.4}};
+    for (int k = 0; k < 6; ++k) {
+        Box shrub = box(static_cast<uint32_t>(21 + k), shrubs[k][0], shrubs[k][1], shrubs[k][2],
+                        shrubs[k][2], shrubs[k][3], 25.0 * k);
+        shrub.return_fraction = 0.6;
+        scene.boxes.push_back(shrub);
+    }
+    addRocks(scene);
+    return scene;
+}
+
+Scene offRoadFenceLines() {
+    Scene scene = grassyMeadow(0.15);
+    addFarmFence(scene, {-24.0, 6.0}, {24.0, 6.0}, 1, 101);
+    addFarmFence(scene, {14.0, -21.0}, {14.0, 21.0}, 31, 201);
+    return scene;
+}
+
+Scene offRoadTrackWithDitchesRutsAndPuddles() {
+    Scene scene;
+    scene.roughness.amplitude = 0.03;
+    scene.roughness.wavelength = 1.0;
+    scene.max_ground_slope_deg = kWholeTerrainIsGround;
+    for (double side : {1.0, -1.0}) {
+        Step rut;
+        rut.start = {0.0, 0.6 * side};
+        rut.direction = {0.0, side};
+        rut.height = -0.1;
+        rut.length = 0.35;
+        rut.width = 400.0;
+        scene.steps.push_back(rut);
+    }
+    const double puddles[5][4] = {{6.0, 0.78, 1.0, 0.12},
+                                  {12.0, -0.2, 1.8, 0.1},
+                                  {-8.0, 0.0, 1.6, 0.12},
+                                  {20.0, 0.78, 1.2, 0.1},
+                                  {-15.0, -0.78, 1.0, 0.12}};
+    for (const auto& p : puddles) {
+        Puddle puddle;
+        puddle.centre = {p[0], p[1]};
+        puddle.radius = p[2];
+        puddle.depth = p[3];
+        scene.puddles.push_back(puddle);
+    }
+    addDitch(scene, 3.5, 1.0, 0.6, 20.0, 0.8);
+    addDitch(scene, -3.5, -1.0, 0.4, 15.0, 0.6);
+    scene.covers.push_back(grass({-80.0, -0.5}, {80.0, 0.5}, 0.1, 0.4));
+    scene.covers.push_back(grass({-80.0, 3.2}, {80.0, 80.0}, 0.2, 0.5));
+    scene.covers.push_back(grass({-80.0, -80.0}, {80.0, -3.2}, 0.2, 0.5));
+    scene.poles = {pole(11, 5.0, 7.0, 0.2, 4.0), pole(12, 14.0, 7.5, 0.25, 4.0),
+                   pole(13, -10.0, 7.2, 0.15, 4.0)};
+    for (uint32_t k = 0; k < 3; ++k) {
+        Box bush = box(k + 1, -6.0 + 9.0 * k, -7.5, 1.2, 1.0, 1.0, 30.0 * k);
+        bush.return_fraction = 0.7;
+        scene.boxes.push_back(bush);
+    }
+    return scene;
+}
+
+Scene offRoadHillside(double slope_deg) {
+    Scene scene = grassyMeadow(0.15);
+    Ramp hill;
+    hill.start = {-40.0, 0.0};
+    hill.direction = {1.0, 0.0};
+    hill.length = 80.0;
+    hill.width = 400.0;
+    hill.slope_deg = slope_deg;
+    scene.ramps.push_back(hill);
+    addBushesAndTrunks(scene);
+    addRocks(scene);
+    return scene;
+}
+
 Scene carBesideSensor(double gap) {
     Scene scene;
     scene.boxes = {car(1, 0.0, gap + 0.9, 0.0)};

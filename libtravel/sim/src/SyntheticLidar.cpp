@@ -45,6 +45,13 @@ struct ObjectHit {
     double return_fraction = 1.0;
 };
 
+// Salts of rayHash for the ground covers and the puddles (object ids stay below them).
+constexpr uint32_t kCoverSalt = 0xC0000000u;
+constexpr uint32_t kPuddleSalt = 0xD0000000u;
+// At most this many ground covers are read per ray (the per-ray canopy heights live on the
+// stack).
+constexpr std::size_t kMaxCovers = 64;
+
 // A fixed pseudo-random number in [0, 1) for a ray and an object (splitmix64 finaliser).
 double rayHash(int ring, int column, uint32_t id) {
     uint64_t z = (uint64_t(uint32_t(ring)) << 40) ^ (uint64_t(uint32_t(column)) << 16) ^ id;
@@ -219,6 +226,7 @@ struct PreparedScene {
     const Scene& scene;
     std::vector<PlacedBox> boxes;
     std::vector<PlacedPole> poles;
+    std::vector<double> water_levels;
     TerrainBounds bounds;
 
     PreparedScene(const Scene& world, const Eigen::Vector3d& sensor_position, double max_range)
@@ -240,6 +248,8 @@ struct PreparedScene {
         for (const Pole& pole : world.poles) {
             poles.push_back({pole.id, pole.centre, pole.radius, world.placement(pole)});
         }
+        for (std::size_t k = 0; k < world.puddles.size(); ++k)
+            water_levels.push_back(world.waterLevel(k));
         bounds.build(world, sensor_position.head<2>(), max_range);
     }
 
@@ -257,16 +267,43 @@ struct PreparedScene {
         return hit;
     }
 
-    // Ray height above the terrain at t: > 0 above, <= 0 at or below.
-    double clearance(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t) const {
-        return origin.z() + t * dir.z() -
-               scene.terrainHeight(origin.x() + t * dir.x(), origin.y() + t * dir.y());
+    // Ray height above the surface it returns from at t: > 0 above, <= 0 at or below. The
+    // surface is the terrain, raised inside each ground cover k by this ray's canopy[k] (the
+    // height of the blade it returns from there; 0 when it reaches the soil).
+    double clearance(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t,
+                     const double* canopy) const {
+        const double x = origin.x() + t * dir.x(), y = origin.y() + t * dir.y();
+        double raised = 0.0;
+        for (std::size_t k = 0; k < scene.covers.size(); ++k) {
+            const GroundCover& cover = scene.covers[k];
+            if (canopy[k] > raised && x >= cover.lo.x() && x <= cover.hi.x() && y >= cover.lo.y() &&
+                y <= cover.hi.y())
+                raised = canopy[k];
+        }
+        return origin.z() + t * dir.z() - scene.terrainHeight(x, y) - raised;
+    }
+
+    // The first puddle's water the ray reaches before t_end: its index and t, or -1.
+    int firstWater(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t_end,
+                   double& t_water) const {
+        int first = -1;
+        if (!(dir.z() < 0.0)) return first;
+        for (std::size_t k = 0; k < scene.puddles.size(); ++k) {
+            const double t = (water_levels[k] - origin.z()) / dir.z();
+            if (!(t > 0.0) || t >= t_end) continue;
+            const Eigen::Vector2d xy = (origin + t * dir).head<2>();
+            const Puddle& puddle = scene.puddles[k];
+            if ((xy - puddle.centre).squaredNorm() > puddle.radius * puddle.radius) continue;
+            t_end = t_water = t;
+            first = static_cast<int>(k);
+        }
+        return first;
     }
 
     // First terrain crossing in [0, t_end]. The returned t is on the near (above) side of the
     // crossing, so a hit on a vertical face reports the xy of its lower side.
     bool marchTerrain(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t_end,
-                      double& t_hit) const {
+                      const double* canopy, double& t_hit) const {
         const double global_bound = bounds.globalBound();
         double t = 0.0;
         if (origin.z() > global_bound) {
@@ -277,7 +314,7 @@ struct PreparedScene {
             t_end = std::min(t_end, (global_bound - origin.z()) / dir.z());
         }
         if (t > t_end) return false;
-        if (clearance(origin, dir, t) <= 0.0) {  // sensor at or under the surface
+        if (clearance(origin, dir, t, canopy) <= 0.0) {  // sensor at or under the surface
             t_hit = t;
             return true;
         }
@@ -297,11 +334,11 @@ struct PreparedScene {
             // Finer steps near the sensor, where the geometry subtends larger angles.
             const double step = std::clamp(0.01 * t, 0.02, 0.25);
             const double t_next = std::min(t + step, t_end);
-            if (clearance(origin, dir, t_next) <= 0.0) {
+            if (clearance(origin, dir, t_next, canopy) <= 0.0) {
                 double above = t, below = t_next;
                 for (int i = 0; i < kMaxBisections && below - above > kBisectionTolerance; ++i) {
                     const double mid = 0.5 * (above + below);
-                    if (clearance(origin, dir, mid) > 0.0) {
+                    if (clearance(origin, dir, mid, canopy) > 0.0) {
                         above = mid;
                     } else {
                         below = mid;
@@ -401,6 +438,9 @@ void scanColumns(const Scene& scene, const LidarModel& model,
                  const std::vector<Eigen::Isometry3d>* column_poses, Scan& out) {
     model.validate();
     scene.validate();
+    if (scene.covers.size() > kMaxCovers)
+        throw std::invalid_argument("travel::sim::scan: more than " + std::to_string(kMaxCovers) +
+                                    " ground covers");
 
     Eigen::Vector3d origin = sensor_pose_in_world.translation();
     Eigen::Matrix3d rotation = sensor_pose_in_world.linear();
@@ -452,16 +492,48 @@ void scanColumns(const Scene& scene, const LidarModel& model,
         const double time_in_sweep =
             model.sweep_period * column / static_cast<double>(model.columns);
         const ObjectHit object = world.nearestObject(origin, dir, time_in_sweep);
-        double t_hit = kInfinity;
+        // The blade of each ground cover this ray returns from (0: it reaches the soil).
+        std::array<double, kMaxCovers> canopy{};
+        for (std::size_t k = 0; k < scene.covers.size(); ++k) {
+            const GroundCover& cover = scene.covers[k];
+            const double q = rayHash(ring, column, kCoverSalt + static_cast<uint32_t>(k));
+            if (q < cover.return_fraction)
+                canopy[k] = cover.height * (1.0 - q / cover.return_fraction);
+        }
+        double t_hit = kInfinity, t_water = kInfinity;
+        const int puddle =
+            world.firstWater(origin, dir, std::min(object.t, model.max_range), t_water);
         uint8_t cls = NoReturn;
         uint32_t instance = 0;
         float intensity = 0.f;
-        if (world.marchTerrain(origin, dir, std::min(object.t, model.max_range), t_hit)) {
+        if (world.marchTerrain(origin, dir, std::min({object.t, model.max_range, t_water}),
+                               canopy.data(), t_hit)) {
             const Eigen::Vector3d hit = origin + t_hit * dir;
             const bool traversable =
                 scene.terrainSlopeDeg(hit.x(), hit.y()) <= scene.max_ground_slope_deg;
             cls = traversable ? Ground : NonGround;
             intensity = kTerrainIntensity;
+        } else if (puddle >= 0) {
+            // Specular water: the ray returns only when mirrored onto something within range;
+            // the sensor places that return along the original ray, at the path's length.
+            const Puddle& water = scene.puddles[static_cast<std::size_t>(puddle)];
+            const double q = rayHash(ring, column, kPuddleSalt + static_cast<uint32_t>(puddle));
+            if (q < water.mirror_fraction) {
+                const Eigen::Vector3d surface = origin + t_water * dir;
+                const Eigen::Vector3d mirrored(dir.x(), dir.y(), -dir.z());
+                const double reach = model.max_range - t_water;
+                const ObjectHit seen = world.nearestObject(surface, mirrored, time_in_sweep);
+                double t_seen = kInfinity;
+                if (!world.marchTerrain(surface, mirrored, std::min(seen.t, reach), canopy.data(),
+                                        t_seen) &&
+                    seen.t <= reach && rayHash(ring, column, seen.id) < seen.return_fraction)
+                    t_seen = seen.t;
+                if (t_seen < kInfinity) {
+                    t_hit = t_water + t_seen;
+                    cls = Reflection;
+                    intensity = kTerrainIntensity;
+                }
+            }
         } else if (object.t <= model.max_range) {
             t_hit = object.t;
             cls = NonGround;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -88,6 +89,34 @@ struct Wall {
     double height = 2.0;
 };
 
+/// Grass or other horizontally spreading low vegetation on a rectangle of the terrain (axis
+/// aligned, [lo, hi]): SemanticKITTI's
+/// "terrain" class (grass, soil), so its returns are ground truth Ground, instance 0, whatever
+/// their height in the canopy (isolated bushes and shrubs are "vegetation": model them as Boxes
+/// with a return_fraction). A ray crossing the canopy returns from a blade with probability
+/// `return_fraction`, at a depth uniform in [0, height] below the canopy's top (a fixed hash of
+/// ring, column and cover: deterministic); the other rays reach the soil.
+struct GroundCover {
+    Eigen::Vector2d lo{-5.0, -5.0};  ///< [m] corner with the smallest x and y
+    Eigen::Vector2d hi{5.0, 5.0};    ///< [m] corner with the largest x and y
+    double height = 0.3;             ///< [m] canopy top above the terrain
+    double return_fraction = 0.6;    ///< share of the rays returned by the blades
+};
+
+/// A puddle: a bowl pressed `depth` metres into the terrain at its centre (0 at the rim,
+/// `radius` away) filled with water up to `rim_height` below the unpressed terrain at the
+/// centre. Water reflects specularly: a ray that reaches it returns nothing, except a share
+/// `mirror_fraction` (a fixed hash) that the surface reflects onto what lies beyond (terrain,
+/// objects); the sensor reports those at the range of the whole path along the original ray,
+/// below the water: ground truth Reflection, instance 0.
+struct Puddle {
+    Eigen::Vector2d centre{0.0, 0.0};
+    double radius = 1.5;           ///< [m]
+    double depth = 0.15;           ///< [m] of the bowl at its centre
+    double rim_height = 0.03;      ///< [m] water level below the unpressed terrain at the centre
+    double mirror_fraction = 0.3;  ///< share of the rays reaching the water that are mirrored
+};
+
 /// World z range occupied by a placed object.
 struct ZRange {
     double bottom = 0.0;
@@ -101,6 +130,8 @@ struct Scene {
     std::vector<Step> steps;
     std::vector<Bump> bumps;
     Roughness roughness;
+    std::vector<Puddle> puddles;      ///< their bowls are part of h; their water is not
+    std::vector<GroundCover> covers;  ///< above h: not part of it
 
     // ---- Objects ----
     std::vector<Box> boxes;
@@ -116,9 +147,13 @@ struct Scene {
     /// Angle of the local terrain surface from horizontal [deg], from the analytic gradient.
     double terrainSlopeDeg(double x, double y) const;
 
-    /// Scene-wide upper bound of h (every positive contribution at its maximum).
+    /// Water level of puddle k (world z).
+    double waterLevel(std::size_t k) const;
+
+    /// Scene-wide upper bound of h (every positive contribution at its maximum), covers included.
     double terrainUpperBound() const;
-    /// Upper bound of h over the axis-aligned rectangle [lo, hi] (conservative, not tight).
+    /// Upper bound of h over the axis-aligned rectangle [lo, hi] (conservative, not tight),
+    /// the covers' canopies included.
     double terrainUpperBound(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const;
 
     /// Vertical extent of an object once placed on the terrain. Unless floating (clearance > 0),

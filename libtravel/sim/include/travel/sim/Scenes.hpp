@@ -75,6 +75,37 @@ Scene vergesWithStreetFurniture();
 Scene offRoadMeadow();
 constexpr double kOffRoadSensorHeight = 1.3;
 
+// Harsher off-road scenes (grass, puddles, ditches, fences, rocks, slopes) for the OS1-64 1.3 m
+// up. Grass (GroundCover) is SemanticKITTI's terrain: ground truth Ground at any height in its
+// canopy; bushes and low shrubs are vegetation and rocks objects: NonGround.
+
+/// offRoadMeadow's terrain under grass 0.12 m tall everywhere (half of the rays return from its
+/// blades) with patches of 0.3 m (x 4..12, y -10..-2 and -10..-2, -14..-6) and 0.5 m grass (x
+/// 9..15, y 2..8; -13..-7, 1..7; 0..6, 11..17); its bushes (ids 1-8, foliage: 70 % of the rays
+/// return) and trunks (ids 11-16); low shrubs 0.3-0.5 m high (ids 21-26, 60 %) and rocks
+/// 0.2-0.6 m (ids 31-38).
+Scene offRoadTallGrassAndRocks();
+
+/// offRoadMeadow's terrain under grass 0.15 m tall everywhere (half of the rays return) and two
+/// farm fences: along y = 6 from x = -24 to 24 (wooden posts 0.06 m in radius, 1.3 m, every
+/// 3 m: ids 1-17) and along x = 14 from y = -21 to 21 (ids 31-45); between the posts four
+/// horizontal wires 1.5 cm thick at 0.2, 0.55, 0.9 and 1.25 m, 60 % of the rays that hit them
+/// returned (one id per span: 101- and 201-).
+Scene offRoadFenceLines();
+
+/// A dirt track along +x, 3 cm roughness: two ruts 0.1 m deep, 0.35 m wide (|y| 0.6..0.95) with
+/// grass 0.1 m between them; puddles in and between the ruts (x = 6, 12, -8, 20, -15; radius
+/// 1-1.8 m, 0.1-0.12 m deep, 30 % of the rays mirrored); on the left a ditch 0.6 m deep with
+/// 20 deg sides from y = 3.5 (bottom 0.8 m wide), on the right one 0.4 m deep with 15 deg sides
+/// from y = -3.5 (bottom 0.6 m); grass 0.2 m tall beyond |y| = 3.2 (ditches included); trunks
+/// beyond the left ditch (ids 11-13), bushes beyond the right one (ids 1-3, foliage 70 %).
+Scene offRoadTrackWithDitchesRutsAndPuddles();
+
+/// A hillside rising `slope_deg` along +x from x = -40 m for 80 m (the sensor stands on it at
+/// x = 0), with offRoadMeadow's bumps and roughness, grass 0.15 m tall everywhere, its bushes
+/// (ids 1-8, foliage 70 %) and trunks (ids 11-16), and rocks 0.2-0.6 m (ids 31-38).
+Scene offRoadHillside(double slope_deg);
+
 /// Flat ground and one 4.5 x 1.8 x 1.5 m car (id 1) parked beside the sensor along +x, its
 /// near side `gap` metres from the sensor (y = gap .. gap + 1.8).
 Scene carBesideSensor(double gap);

@@ -64,6 +64,9 @@ enum GtClass : uint8_t {
     NoReturn = 0,   ///< the ray hit nothing within [min_range, max_range]; point is (0,0,0)
     Ground = 1,     ///< terrain (vertical kerb/step faces included) no steeper than the limit
     NonGround = 2,  ///< an object (instance = its id), or too-steep terrain (instance 0)
+    /// A ray mirrored by a puddle's water (Scene::puddles): reported below the water, where
+    /// no surface is (SemanticKITTI: outlier; not ground, nor an object)
+    Reflection = 3,
 };
 
 /// Per-point ground truth, parallel to the cloud.
