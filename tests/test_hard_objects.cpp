@@ -484,3 +484,271 @@ TEST(HardObjects, ObjectRightBehindACarStaysApart) {
 
 }  // namespace
 }  // namespace travel
+
+#include "travel/eval/ObjectMetrics.hpp"
+
+namespace travel {
+namespace {
+
+// ---- Purity in urban streets (issue 14): a thing's cluster holding its instance and more ----
+// Scenes of SemanticKITTI-like streets (the road along +x, parked cars on its left, centres
+// `d` metres from the sensor), scored with the instance evaluator (evaluateObjects: coverage
+// and purity of the thing instances, every point of the best cluster counted, ground and stuff
+// included), the synthetic ground truth given SemanticKITTI labels: car 10, person 30,
+// bicyclist 31 (things), vegetation 70, trunk 71, building 50, pole 80, traffic sign 81 (stuff,
+// instance 0), ground 40.
+struct StreetScene {
+    sim::Scene scene;
+    std::map<uint32_t, uint32_t> semantic;  // sim instance -> SemanticKITTI class
+};
+
+constexpr uint32_t kCar = 10, kPerson = 30, kBicyclist = 31, kBuilding = 50, kVegetation = 70,
+                   kTrunk = 71, kPoleClass = 80, kSign = 81;
+
+void addCar(StreetScene& s, uint32_t id, const Eigen::Vector2d& centre, double yaw_deg = 0.0) {
+    const std::vector<sim::Box> parts = sim::realisticCar(id, centre, yaw_deg);
+    s.scene.boxes.insert(s.scene.boxes.end(), parts.begin(), parts.end());
+    s.semantic[id] = kCar;
+}
+
+sim::Box standingBox(uint32_t id, double x, double y, double length, double width, double height,
+                     double clearance = 0.0) {
+    sim::Box b;
+    b.id = id, b.centre = {x, y}, b.length = length, b.width = width, b.height = height;
+    b.clearance = clearance;
+    return b;
+}
+
+// Parked cars nose to tail 0.4-1.0 m apart (sim::parkedCarRow).
+StreetScene carRow(double d, double gap) {
+    StreetScene s;
+    s.scene = sim::parkedCarRow(d, gap);
+    for (uint32_t id = 1; id <= 4; ++id) s.semantic[id] = kCar;
+    return s;
+}
+
+// A street tree on the sidewalk beyond a parked car: trunk (0.15 m radius) `trunk_gap` beyond
+// the car's far side, a 4 x 4 m, 2.5 m deep crown from `crown_bottom` up, over the car's far half.
+StreetScene carUnderTree(double d, double crown_bottom, double trunk_gap = 0.6) {
+    StreetScene s;
+    addCar(s, 1, {0.0, d});
+    const double trunk_y = d + 0.9 + trunk_gap + 0.15;
+    sim::Pole trunk;
+    trunk.id = 2, trunk.centre = {0.3, trunk_y}, trunk.radius = 0.15,
+    trunk.height = crown_bottom + 0.5;
+    s.scene.poles.push_back(trunk);
+    s.scene.boxes.push_back(standingBox(3, 0.3, trunk_y, 4.0, 4.0, 2.5, crown_bottom));
+    s.semantic[2] = kTrunk, s.semantic[3] = kVegetation;
+    return s;
+}
+
+// A parked car with a hedge (1 m thick, 1.8 m high, vegetation) or a wall (0.25 m, 2.5 m,
+// building) running along its far side `gap` metres away.
+StreetScene carBesideHedgeOrWall(double d, double gap, bool wall) {
+    StreetScene s;
+    addCar(s, 1, {0.0, d});
+    sim::Wall w;
+    w.id = 2;
+    w.thickness = wall ? 0.25 : 1.0;
+    w.height = wall ? 2.5 : 1.8;
+    const double y = d + 0.9 + gap + 0.5 * w.thickness;
+    w.a = {-10.0, y}, w.b = {10.0, y};
+    s.scene.walls.push_back(w);
+    s.semantic[2] = wall ? kBuilding : kVegetation;
+    return s;
+}
+
+// A person (0.5 x 0.35 x 1.75 m) `gap` beyond a parked car's front bumper and another `gap` in
+// front of its near side (sim::personBesideCar), or a cyclist (1.8 x 0.6 x 1.7 m) riding past
+// the car `gap` from its near side.
+StreetScene personOrCyclistBesideCar(double d, double gap, bool cyclist) {
+    StreetScene s;
+    if (!cyclist) {
+        s.scene = sim::personBesideCar(d, gap);
+        s.semantic = {{1, kCar}, {2, kPerson}, {3, kPerson}};
+        return s;
+    }
+    addCar(s, 1, {0.0, d});
+    s.scene.boxes.push_back(standingBox(2, 0.5, d - 0.9 - gap - 0.3, 1.8, 0.6, 1.7));
+    s.semantic[2] = kBicyclist;
+    return s;
+}
+
+// A person `gap` from a street-light pole (0.1 m radius, 4 m high) on the near side of the
+// sidewalk, both `d` metres away.
+StreetScene personBesidePole(double d, double gap) {
+    StreetScene s;
+    sim::Pole pole;
+    pole.id = 1, pole.centre = {0.0, d}, pole.radius = 0.1, pole.height = 4.0;
+    s.scene.poles.push_back(pole);
+    s.scene.boxes.push_back(standingBox(2, 0.1 + gap + 0.25, d, 0.5, 0.35, 1.75));
+    s.semantic = {{1, kPoleClass}, {2, kPerson}};
+    return s;
+}
+
+// A sign post (0.04 m radius, 2.6 m) with a 0.6 x 0.6 m plate from 2.0 m up, `gap` beyond a
+// parked car's far side (the sidewalk's edge) near its front, or `gap` ahead of its front bumper.
+StreetScene carBesideSignPost(double d, double gap, bool ahead) {
+    StreetScene s;
+    addCar(s, 1, {0.0, d});
+    const Eigen::Vector2d post =
+        ahead ? Eigen::Vector2d(2.25 + gap + 0.04, d) : Eigen::Vector2d(1.5, d + 0.9 + gap + 0.04);
+    sim::Pole p;
+    p.id = 2, p.centre = post, p.radius = 0.04, p.height = 2.6;
+    s.scene.poles.push_back(p);
+    s.scene.boxes.push_back(standingBox(3, post.x(), post.y() - 0.06, 0.6, 0.04, 0.6, 2.0));
+    s.semantic = {{1, kCar}, {2, kPoleClass}, {3, kSign}};
+    return s;
+}
+
+struct StreetFigures {
+    double coverage = 0, worst_purity = 1;  // over the scene's thing instances
+    std::size_t instances = 0;
+};
+
+// HDL-64E 1.73 m up, level or on KITTI's mount (roll 1.6, pitch 0.6 deg, not given to the
+// pipeline, as on the dev frames).
+StreetFigures streetFigures(const StreetScene& s, bool tilted, const Params& params,
+                            bool explain = false) {
+    sim::LidarModel model = sim::LidarModel::hdl64();
+    model.range_noise_sigma = 0.01;
+    model.seed = 7;
+    model.max_range = params.max_range;
+    const sim::Scan scan = sim::scan(s.scene, model,
+                                     sim::sensorPoseAt(s.scene, 0, 0, sim::kSensorHeight,
+                                                       tilted ? 1.6 : 0.0, tilted ? 0.6 : 0.0, 0));
+    Result result;
+    Pipeline(params).process(scan.cloud, {}, result);
+    std::vector<uint32_t> labels(scan.gt.size(), 0);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const uint32_t id = scan.gt.instance[i];
+        if (scan.gt.cls[i] == sim::Ground) {
+            labels[i] = 40;
+        } else if (id != 0) {
+            const uint32_t semantic = s.semantic.at(id);
+            labels[i] = semantic <= 32 ? (semantic | id << 16) : semantic;
+        }
+    }
+    const ObjectScores scores =
+        evaluateObjects(result.cluster_id, result.labels, labels, scan.cloud);
+    StreetFigures f;
+    for (const InstanceScore& i : scores.instances) {
+        f.coverage += i.coverage / double(scores.instances.size());
+        f.worst_purity = std::min(f.worst_purity, i.purity);
+    }
+    f.instances = scores.instances.size();
+    if (explain && f.worst_purity < 0.99)
+        for (const eval::MergedPart& m :
+             eval::mergedParts(result.cluster_id, labels, scan.cloud, params))
+            std::printf(
+                "    part %s in %s: %zu points at %.1f m, %s, link %.2f m, depth jump %.2f, rows "
+                "%d\n",
+                eval::semanticName(m.part_semantic).c_str(),
+                eval::semanticName(m.owner_semantic).c_str(), m.part_points, m.range,
+                eval::toString(m.rule), m.link_distance, m.depth_jump, m.row_gap);
+    return f;
+}
+
+Params streetParams() {
+    Params p;
+    p.sensor_height = sim::kSensorHeight;
+    return p;
+}
+
+struct StreetCase {
+    const char* kind;
+    double distance, gap;
+    StreetScene (*make)(double, double);
+};
+
+std::vector<StreetCase> streetGrid() {
+    std::vector<StreetCase> cases;
+    for (const double d : {8.0, 15.0, 22.0}) {
+        for (const double gap : {0.4, 0.6, 0.8, 1.0}) cases.push_back({"car_row", d, gap, carRow});
+        for (const double bottom : {1.8, 2.2, 2.6})
+            cases.push_back({"car_under_tree", d, bottom,
+                             [](double dd, double b) { return carUnderTree(dd, b); }});
+        for (const double gap : {0.2, 0.4, 0.7}) {
+            cases.push_back({"car_hedge", d, gap, [](double dd, double g) {
+                                 return carBesideHedgeOrWall(dd, g, false);
+                             }});
+            cases.push_back({"car_wall", d, gap, [](double dd, double g) {
+                                 return carBesideHedgeOrWall(dd, g, true);
+                             }});
+        }
+        for (const double gap : {0.3, 0.45, 0.6}) {
+            cases.push_back({"person_car", d, gap, [](double dd, double g) {
+                                 return personOrCyclistBesideCar(dd, g, false);
+                             }});
+            cases.push_back({"cyclist_car", d, gap, [](double dd, double g) {
+                                 return personOrCyclistBesideCar(dd, g, true);
+                             }});
+        }
+        for (const double gap : {0.2, 0.35, 0.5})
+            cases.push_back({"person_pole", d, gap, personBesidePole});
+        for (const double gap : {0.2, 0.4, 0.7}) {
+            cases.push_back({"car_signpost_side", d, gap,
+                             [](double dd, double g) { return carBesideSignPost(dd, g, false); }});
+            cases.push_back({"car_signpost_ahead", d, gap,
+                             [](double dd, double g) { return carBesideSignPost(dd, g, true); }});
+        }
+    }
+    return cases;
+}
+
+// The whole grid: 84 scenes, level and tilted, 168 scans (about 15 s: run by hand with
+// --gtest_also_run_disabled_tests). It prints each scene's figures and, for an impure one, the
+// parts of the merged clusters with the rule that can link them (eval::mergedParts). The table
+// is in docs/results.md ("Purity in urban streets").
+TEST(StreetPurity, DISABLED_Grid) {
+    const Params params = streetParams();
+    double sum_cov[2] = {}, sum_pur[2] = {};
+    for (const StreetCase& c : streetGrid()) {
+        const StreetScene s = c.make(c.distance, c.gap);
+        for (const bool tilted : {false, true}) {
+            const StreetFigures f = streetFigures(s, tilted, params, true);
+            std::printf("%-20s d %4.1f gap %.2f %-6s coverage %.3f worst purity %.3f (%zu)\n",
+                        c.kind, c.distance, c.gap, tilted ? "tilted" : "level", f.coverage,
+                        f.worst_purity, f.instances);
+            sum_cov[tilted] += f.coverage, sum_pur[tilted] += f.worst_purity;
+            EXPECT_GT(f.instances, 0u);
+        }
+    }
+    const double n = double(streetGrid().size());
+    std::printf("mean coverage level %.4f tilted %.4f, mean worst purity level %.4f tilted %.4f\n",
+                sum_cov[0] / n, sum_cov[1] / n, sum_pur[0] / n, sum_pur[1] / n);
+}
+
+// One scene of each kind that stays apart today, at the distance where it is closest to joining,
+// on one mount each (level or KITTI's tilt; both give the same verdicts on these scenes): each
+// thing instance keeps its cluster to itself (worst purity >= 0.99; 1.000 on both mounts now)
+// and the scene's mean coverage is >= 0.90 (0.916-0.967 now). The joins the grid shows (a car
+// 0.2-0.4 m before a hedge or a wall at 8 m, a person 0.3 m from a car at 8 m, cars 0.4 m apart,
+// a person 0.2 m from a pole) are the open purity cases of docs/results.md.
+TEST(StreetPurity, ObjectsThatStayApart) {
+    const Params params = streetParams();
+    struct Case {
+        const char* what;
+        StreetScene scene;
+        bool tilted;
+    };
+    for (const Case& c :
+         {Case{"car_row_8m_gap0.6", carRow(8.0, 0.6), false},
+          Case{"car_wall_8m_gap0.7", carBesideHedgeOrWall(8.0, 0.7, true), true},
+          Case{"car_hedge_15m_gap0.2", carBesideHedgeOrWall(15.0, 0.2, false), true},
+          Case{"person_car_8m_gap0.45", personOrCyclistBesideCar(8.0, 0.45, false), false},
+          Case{"person_pole_15m_gap0.35", personBesidePole(15.0, 0.35), true},
+          Case{"car_under_tree_15m_crown1.8", carUnderTree(15.0, 1.8), false},
+          Case{"car_signpost_15m_gap0.2", carBesideSignPost(15.0, 0.2, false), true}}) {
+        SCOPED_TRACE(c.what);
+        const StreetFigures f = streetFigures(c.scene, c.tilted, params);
+        std::printf("%-28s %-6s coverage %.3f worst purity %.3f\n", c.what,
+                    c.tilted ? "tilted" : "level", f.coverage, f.worst_purity);
+        EXPECT_GE(f.instances, 1u);
+        EXPECT_GE(f.coverage, 0.90);
+        EXPECT_GE(f.worst_purity, 0.99);
+    }
+}
+
+}  // namespace
+}  // namespace travel
