@@ -618,7 +618,8 @@ StreetFigures streetFigures(const StreetScene& s, bool tilted, const Params& par
                                      sim::sensorPoseAt(s.scene, 0, 0, sim::kSensorHeight,
                                                        tilted ? 1.6 : 0.0, tilted ? 0.6 : 0.0, 0));
     Result result;
-    Pipeline(params).process(scan.cloud, {}, result);
+    Pipeline pipeline(params);
+    pipeline.process(scan.cloud, {}, result);
     std::vector<uint32_t> labels(scan.gt.size(), 0);
     for (std::size_t i = 0; i < labels.size(); ++i) {
         const uint32_t id = scan.gt.instance[i];
@@ -639,7 +640,7 @@ StreetFigures streetFigures(const StreetScene& s, bool tilted, const Params& par
     f.instances = scores.instances.size();
     if (explain && f.worst_purity < 0.99)
         for (const eval::MergedPart& m :
-             eval::mergedParts(result.cluster_id, labels, scan.cloud, params))
+             eval::mergedParts(result.cluster_id, labels, scan.cloud, pipeline))
             std::printf(
                 "    part %s in %s: %zu points at %.1f m, %s, link %.2f m, depth jump %.2f, rows "
                 "%d\n",
