@@ -172,14 +172,16 @@ TEST(MrptSampleRawlogs, FloorAroundTheSensorIsGroundAndRaisedStructureIsNot) {
 TEST(MrptSampleRawlogs, SummaryIsPinned) {
     SKIP_WITHOUT_SAMPLES();
     // Measured on the landed code (Release, this config; ground +2.7 % with the own and
-    // neighbour planes of clear nodes, issue 14); the tolerances leave room for
+    // neighbour planes of clear nodes, issue 14; outliers 46 / 44 -> 23 with the ditch rule of
+    // 9b2ae7c: 22 floor points 12-14 m out, within a few cm of their node's own plane, and one
+    // 0.3 m below a raised floor, are ground); the tolerances leave room for
     // deliberate algorithm changes of a few per cent, not for a regression.
     struct Expected {
         const std::string& path;
         std::size_t ground, nonground, outlier, invalid, clusters;
     };
-    for (const Expected& e : {Expected{travel_test::kVlp16Rawlog, 2810, 8373, 46, 76, 66},
-                              Expected{travel_test::kRotScanRawlog, 2794, 8391, 44, 76, 65}}) {
+    for (const Expected& e : {Expected{travel_test::kVlp16Rawlog, 2834, 8372, 23, 76, 66},
+                              Expected{travel_test::kRotScanRawlog, 2815, 8391, 23, 76, 65}}) {
         SCOPED_TRACE(e.path);
         const auto run = runFilter(e.path);
         const auto& f = run->frame;
