@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The README's test command, and what CI runs (.ci/run). Every test runs once, in the build that
-# can run it:
+# The README's test command, and what CI runs (.ci/run). Each test runs in the builds that can
+# run it: the unit tests once, under the sanitizers; the apps' scripted checks in both builds
+# (the Release apps are what users run; the sanitizers check their memory); the rest in one:
 #   1. scripts/setup.sh --no-unit-tests: installs the missing Debian packages and builds ./build
 #      (Release: the libraries, apps, plugin, Python module and benchmarks; of the tests, those
 #      that need this build: see 2)
@@ -10,8 +11,9 @@
 #      (closed-loop navigation, the real drive's tracking and registration)
 #   3. the unit tests and the apps' scripted checks under AddressSanitizer +
 #      UndefinedBehaviorSanitizer (./build-asan, -Og; MRPT itself is not instrumented), then the
-#      Release build's labels compared byte for byte with the sanitizer build's (the thresholds
-#      checked under the sanitizers hold for the -O3 binaries), and the multi-threaded test under
+#      Release build's labels compared byte for byte with the sanitizer build's (one scan of
+#      every scene the unit tests use, and the real scans: the unit tests do not run on the -O3
+#      library, this shows that their thresholds carry over), and the multi-threaded test under
 #      ThreadSanitizer (./build-tsan)
 #   4. libFuzzer targets, 10 s each (TRAVEL_FUZZ_SECONDS), built with clang (scripts/run-fuzzers.sh)
 #   5. clang-format check of every C++ file, when clang-format is installed
@@ -46,7 +48,8 @@ log "sanitizer build (build-asan/: address,undefined)"
 # its automaton); the plain build keeps the warning.
 asan=(cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=address,undefined
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-Og -g1 -DNDEBUG -Wno-maybe-uninitialized" -DTRAVEL_TEST_COMPILE_OPTIONS= -DTRAVEL_BUILD_MRPT=ON
-      -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF -DTRAVEL_BUILD_FIGURE_TESTS=OFF)
+      -DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_UNIT_TESTS=ON -DTRAVEL_BUILD_FIGURE_TESTS=OFF
+      -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
 [[ -f build-asan/CMakeCache.txt ]] || asan+=(-G Ninja)
 "${asan[@]}" >/dev/null
 cmake --build build-asan -j2
@@ -75,7 +78,7 @@ asan_env=(env LSAN_OPTIONS=suppressions="$ROOT_DIR/tests/lsan.supp"
           UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1)
 "${asan_env[@]}" ctest --test-dir build-asan -j2 --output-on-failure -E "$ASAN_SKIP"
 
-log "Release labels = sanitizer build's labels (synthetic scans; real scans when TRAVEL_DATA_DIR holds them)"
+log "Release labels = sanitizer build's labels (synthetic scenes; real scans when TRAVEL_DATA_DIR holds them)"
 "${asan_env[@]}" cmake -DRELEASE_KITTI=build/apps/travel-kitti -DCHECKED_KITTI=build-asan/apps/travel-kitti \
   -DMAKE_SCANS=build/tests/make_synthetic_scans -DWORK_DIR="$ROOT_DIR/build/same_labels_across_builds" \
   -DDATA_DIR="$(sed -n 's/^TRAVEL_DATA_DIR:PATH=//p' build/CMakeCache.txt)" \

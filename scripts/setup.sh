@@ -93,7 +93,7 @@ else
   # Test sources at -O1 (TRAVEL_TEST_COMPILE_OPTIONS): the libraries, apps and benchmarks they
   # exercise stay Release (-O3); -O3 on the tests' own code only costs build time.
   configure+=(-DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_UNIT_TESTS=$unit_tests
-              -DTRAVEL_BUILD_BENCHMARKS=ON -DTRAVEL_BUILD_PYTHON=ON
+              -DTRAVEL_BUILD_FIGURE_TESTS=ON -DTRAVEL_BUILD_BENCHMARKS=ON -DTRAVEL_BUILD_PYTHON=ON
               -DTRAVEL_TEST_COMPILE_OPTIONS=-O1)
 fi
 # The generator of an existing build directory cannot change; choose Ninja only for a new one.
