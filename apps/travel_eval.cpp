@@ -371,6 +371,9 @@ int run(int argc, char** argv) {
     for (const std::string& name : names) {
         // Throws, listing the valid names.
         const auto segmenter = travel::eval::makeSegmenter(name, params);
+        if (is_merges && !params.cluster_objects)
+            throw travel::apps::usageError(
+                "merges diagnoses the object stage, which cluster_objects=false turns off");
         if (is_merges && !segmenter->objectPipeline())
             throw travel::apps::usageError(
                 "merges names the linkage rules of TRAVEL's object stage: --method travel or "

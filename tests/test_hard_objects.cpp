@@ -17,7 +17,7 @@
 #include <map>
 #include <vector>
 
-#include "MergeDiagnosticRows.hpp"
+#include "MergeDiagnosticPairs.hpp"
 #include "SceneMetrics.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
@@ -380,12 +380,14 @@ TEST(HardObjects, MergeDiagnosticNamesTheLinkingRule) {
     EXPECT_EQ(p.row_gap, 0);
     EXPECT_GT(p.range, 20.f);
     EXPECT_LT(p.range, 26.f);
+    EXPECT_GE(test::expectPairsSatisfyTheirRule(parts, cluster, pipeline), 1u);
 }
 
-// The diagnosis reads the rows the object stage linked on (MergeDiagnosticRows.hpp), on the
-// 64- and the 128-beam preset (rows from the scan order and from the os128 table): parked cars at
-// 20-25 m, every clustered point put in one cluster so that every GT object is a part of it.
-TEST(HardObjects, MergeDiagnosticReadsTheClusteringRows) {
+// The diagnosis names pairs that satisfy their rule on what the object stage linked on
+// (MergeDiagnosticPairs.hpp), on the 64- and the 128-beam preset (rows from the scan order and from
+// the os128 table): parked cars at 20-25 m, every clustered point put in one cluster so that every
+// GT object is a part of it.
+TEST(HardObjects, MergeDiagnosticPairsSatisfyTheirRule) {
     for (const Sensor& sensor : {hdl64(), os128()}) {
         SCOPED_TRACE(sensor.name);
         const ObjectRun r = run(sim::parkedCarsAt20To25Metres(), sensor);
@@ -401,7 +403,7 @@ TEST(HardObjects, MergeDiagnosticReadsTheClusteringRows) {
         pipeline.process(r.scan.cloud, {}, result);
         const std::vector<eval::MergedPart> parts =
             eval::mergedParts(cluster, labels, r.scan.cloud, pipeline);
-        const std::size_t checked = test::expectPartsOnTheClusteringRows(parts, pipeline);
+        const std::size_t checked = test::expectPairsSatisfyTheirRule(parts, cluster, pipeline);
         std::printf("%s: %zu parts, %zu linking pairs checked\n", sensor.name, parts.size(),
                     checked);
         EXPECT_GE(checked, 2u);

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "MergeDiagnosticRows.hpp"
+#include "MergeDiagnosticPairs.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/eval/KittiIO.hpp"
@@ -111,10 +111,11 @@ TEST(RealKitti, ObjectsCoverageAndPurityMeetTheTargets) {
     EXPECT_GE(s.mean_purity, 0.99);
 }
 
-// travel-eval merges' diagnosis reads the rows the object stage linked on
-// (MergeDiagnosticRows.hpp): on real frames the pipeline's validity mask (min_range, the self
-// box) and its rows' elevations over the clustered points are not those of all finite points.
-TEST(RealKitti, MergeDiagnosticReadsTheClusteringRows) {
+// travel-eval merges' diagnosis names pairs that satisfy their rule on what the object stage
+// linked on (MergeDiagnosticPairs.hpp): on real frames the pipeline's validity mask (min_range,
+// the self box) and its rows' elevations over the clustered points are not those of all finite
+// points.
+TEST(RealKitti, MergeDiagnosticPairsSatisfyTheirRule) {
     if (!fs::exists(kSequence / "labels" / "000000.label"))
         GTEST_SKIP() << "SemanticKITTI frames not found in " << kSequence
                      << " (../shared/data is not part of the repository)";
@@ -125,7 +126,8 @@ TEST(RealKitti, MergeDiagnosticReadsTheClusteringRows) {
     pipeline.process(cloud, {}, result);
     const std::vector<eval::MergedPart> parts =
         eval::mergedParts(result.cluster_id, gt, cloud, pipeline);
-    const std::size_t checked = test::expectPartsOnTheClusteringRows(parts, pipeline);
+    const std::size_t checked =
+        test::expectPairsSatisfyTheirRule(parts, result.cluster_id, pipeline);
     std::printf("frame 000000: %zu parts, %zu linking pairs checked\n", parts.size(), checked);
     EXPECT_GE(checked, 10u);
 }

@@ -1,6 +1,7 @@
 # Command-line contract of travel-eval: bad methods and sweep specs are errors naming them; with
 # the real SemanticKITTI frames, a report writes both protocols' tables and one CSV row per
-# (method, frame), and a sweep writes its CSV and three non-empty PNG plots.
+# (method, frame), a sweep writes its CSV and three non-empty PNG plots, and merges its tables
+# and one CSV row per part.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR}/scans ${WORK_DIR}/labels)
 
@@ -35,6 +36,9 @@ expect_failure_mentioning("tgf_resolution" ${TRAVEL_EVAL} sweep ${io} --sweep tg
 # Unknown leave-one-out score; --loo-score outside sweep
 expect_failure_mentioning("coverage" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=2,4 --loo-score nope)
 expect_failure_mentioning("--loo-score is for sweep" ${TRAVEL_EVAL} report ${io} --loo-score f1a)
+# merges diagnoses TRAVEL's object stage: not a baseline's, not with the stage off
+expect_failure_mentioning("--method travel or travel-no-ttmf, not 'gpf'" ${TRAVEL_EVAL} merges ${io} --method gpf)
+expect_failure_mentioning("cluster_objects=false" ${TRAVEL_EVAL} merges ${io} --set cluster_objects=false)
 # Unknown subcommand; no scan; missing directory
 expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
 expect_failure_mentioning("no scans" ${TRAVEL_EVAL} report ${io})
@@ -76,6 +80,26 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
   if(NOT n EQUAL 5)
     message(FATAL_ERROR "sweep_tgf_resolution_loo.csv has ${n} lines, expected 5:\n${rows}")
   endif()
+
+  # merges: the three tables, and one CSV row per part whose rule is one of the six names.
+  run_ok(${TRAVEL_EVAL} merges ${real} -o ${WORK_DIR}/merges)
+  file(READ ${WORK_DIR}/merges/merges.md md)
+  foreach(needle "| linkage rule | parts |" "| owner + part class | parts |" "| horizontal |")
+    string(FIND "${md}" "${needle}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "merges.md does not contain '${needle}':\n${md}")
+    endif()
+  endforeach()
+  file(STRINGS ${WORK_DIR}/merges/merges.csv rows)
+  list(POP_FRONT rows header)
+  if(NOT header MATCHES "^frame,cluster,.*,rule,link_distance,depth_jump,row_gap$" OR NOT rows)
+    message(FATAL_ERROR "merges.csv: header '${header}', ${rows}")
+  endif()
+  foreach(row ${rows})
+    if(NOT row MATCHES "^00/000000,[0-9]+,.*,(horizontal|vertical|range-scaled vertical|occlusion|seam|indirect),[0-9.e-]+,[0-9.e-]+,[0-9]+$")
+      message(FATAL_ERROR "merges.csv: unexpected row '${row}'")
+    endif()
+  endforeach()
 else()
   message(STATUS "SemanticKITTI frames not found in ${seq}: real-data part skipped")
 endif()

@@ -105,6 +105,10 @@ std::vector<MergedPart> mergedParts(const std::vector<uint32_t>& cluster_id,
     const RunClustering& clustering = pipeline.clustering();
     const AlignedCloud& aligned = pipeline.aligned();
     const Params& params = pipeline.params();
+    if (!params.cluster_objects)
+        throw std::invalid_argument(
+            "travel::eval::mergedParts: the pipeline's object stage is off (cluster_objects): "
+            "there is no linkage to diagnose");
     if (aligned.x.size() != n || image.row().size() != n ||
         clustering.rowElevations().size() != static_cast<std::size_t>(image.rows()))
         throw std::invalid_argument(
