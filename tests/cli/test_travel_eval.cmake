@@ -14,6 +14,17 @@ function(run_ok)
   endif()
 endfunction()
 
+# Every needle after `path` is in the file.
+function(expect_file_contains path)
+  file(READ ${path} text)
+  foreach(needle ${ARGN})
+    string(FIND "${text}" "${needle}" pos)
+    if(pos EQUAL -1)
+      message(FATAL_ERROR "${path} does not contain '${needle}':\n${text}")
+    endif()
+  endforeach()
+endfunction()
+
 function(expect_nonempty_file path)
   if(NOT EXISTS ${path})
     message(FATAL_ERROR "missing output ${path}")
@@ -50,13 +61,8 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
   set(real -i ${seq} --max-frames 1)  # labels/ found beside velodyne/
 
   run_ok(${TRAVEL_EVAL} report ${real} -o ${WORK_DIR}/report --methods travel,gpf)
-  file(READ ${WORK_DIR}/report/report.md md)
-  foreach(needle "A (Patchwork benchmark)" "B (Patchwork++)" "| travel |" "| gpf |")
-    string(FIND "${md}" "${needle}" pos)
-    if(pos EQUAL -1)
-      message(FATAL_ERROR "report.md does not contain '${needle}':\n${md}")
-    endif()
-  endforeach()
+  expect_file_contains(${WORK_DIR}/report/report.md
+                       "A (Patchwork benchmark)" "B (Patchwork++)" "| travel |" "| gpf |")
   # Header + one row per (method, frame): 2 methods x 1 frame.
   file(STRINGS ${WORK_DIR}/report/frames.csv rows)
   list(LENGTH rows n)
@@ -83,13 +89,8 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
 
   # merges: the three tables, and one CSV row per part whose rule is one of the six names.
   run_ok(${TRAVEL_EVAL} merges ${real} -o ${WORK_DIR}/merges)
-  file(READ ${WORK_DIR}/merges/merges.md md)
-  foreach(needle "| linkage rule | parts |" "| owner + part class | parts |" "| horizontal |")
-    string(FIND "${md}" "${needle}" pos)
-    if(pos EQUAL -1)
-      message(FATAL_ERROR "merges.md does not contain '${needle}':\n${md}")
-    endif()
-  endforeach()
+  expect_file_contains(${WORK_DIR}/merges/merges.md
+                       "| linkage rule | parts |" "| owner + part class | parts |" "| horizontal |")
   file(STRINGS ${WORK_DIR}/merges/merges.csv rows)
   list(POP_FRONT rows header)
   if(NOT header MATCHES "^frame,cluster,.*,rule,link_distance,depth_jump,row_gap$" OR NOT rows)
