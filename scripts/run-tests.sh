@@ -58,8 +58,9 @@ cmake --build build-asan -j2
 # under ASan by the obstacle-source and map tests. IndependentRegistration (travel-kitti --track
 # and MRPT's ICP over the 22-frame drive) is a figure, not a code path: plain suite only.
 # Neither is even built here (TRAVEL_BUILD_FIGURE_TESTS=OFF saves minutes of ASan compilation);
-# the filter stays for a build-asan/ configured by hand with them (and TrackingReal, in the
-# unit-test executable test_tracking_sequences, runs in the Release suite).
+# the filter stays for a build-asan/ configured by hand with them. test_tracking_sequences is
+# built in both: its TrackingSynthetic runs here, its TrackingReal in the Release suite (a
+# build without the unit tests registers only that one: tests/CMakeLists.txt).
 # The apps' common-flag checks (the one flag dialect: parsing and messages, all code paths the
 # apps' own CLI tests run under ASan too) and the installed package's consumer build (CMake, no
 # TRAVEL code runs) are plain suite only as well: ~2 minutes of CI's 30. So are the apps' -j
