@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's test command, and what CI runs (.ci/run). Each test runs in the builds that can
-# run it: the unit tests once, under the sanitizers; the apps' scripted checks in both builds
-# (the Release apps are what users run; the sanitizers check their memory); the rest in one:
+# run it: the unit tests under the sanitizers (the multi-threaded one also under
+# ThreadSanitizer); the apps' scripted checks, the plugin's round trip and map-by-path checks and
+# the docs checks in both builds (the Release binaries are what users run; the sanitizers check
+# their memory); the rest in one:
 #   1. scripts/setup.sh --no-unit-tests: installs the missing Debian packages and builds ./build
 #      (Release: the libraries, apps, plugin, Python module and benchmarks; of the tests, those
 #      that need this build: see 2)
@@ -88,7 +90,7 @@ log "Release labels = sanitizer build's labels (synthetic scenes; real scans whe
 log "thread sanitizer build (build-tsan/): one Pipeline per thread, identical results"
 tsan=(cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAVEL_SANITIZE=thread
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-Og -g1 -DNDEBUG"
-      -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
+      -DTRAVEL_BUILD_TESTS=ON -DTRAVEL_BUILD_UNIT_TESTS=ON -DTRAVEL_BUILD_MRPT=OFF -DTRAVEL_BUILD_BENCHMARKS=OFF -DTRAVEL_BUILD_PYTHON=OFF)
 [[ -f build-tsan/CMakeCache.txt ]] || tsan+=(-G Ninja)
 "${tsan[@]}" >/dev/null
 cmake --build build-tsan -j2 --target test_robustness

@@ -5,9 +5,10 @@
 // HDL-64E, the sensor 1.73 m up and 0.5 m further along x on every frame, with 2 cm range
 // noise: a scan sequence for command-line tests that need no real data.
 // make_synthetic_scans --scenes OUT_DIR: one scan of every scene in travel/sim/Scenes.hpp (the
-// geometry the unit tests check thresholds on), HDL-64E from a level mount 1.73 m up (1.3 m in
-// the off-road scenes), and the mixed scene from a tilted mount and with an OS1-128;
-// OUT_DIR/scenes.txt names each file's scene.
+// geometry the unit tests check thresholds on, though not every pose, sensor and parameter set
+// they try): HDL-64E from a level mount 1.73 m up, the off-road scenes with an OS1-64 1.3 m up,
+// the mixed scene also from a tilted mount (the tilt not given to the pipeline) and with an
+// OS1-128; OUT_DIR/scenes.txt names each file's scene.
 // The Release-vs-sanitizer label comparison (tests/cli/test_same_labels_across_builds.cmake)
 // replays them in both builds.
 #include <cstdio>
@@ -36,7 +37,7 @@ struct CatalogueScan {
     double roll_deg = 0, pitch_deg = 0;
 };
 
-// Every scene of Scenes.hpp once, with the parameters of the unit tests' hardest cases.
+// Every scene of Scenes.hpp once; parameterised scenes with values the unit tests use.
 std::vector<CatalogueScan> catalogue() {
     const sim::LidarModel hdl64 = sim::LidarModel::hdl64();
     std::vector<CatalogueScan> c;
@@ -46,7 +47,7 @@ std::vector<CatalogueScan> catalogue() {
         c.push_back({std::move(name), std::move(scene), std::move(lidar), roll, pitch});
     };
     add("flatGround", sim::flatGround());
-    add("slope(15)", sim::slope(15));
+    add("slope(20)", sim::slope(20));
     add("kerbsAndSteps", sim::kerbsAndSteps());
     add("bumpyTerrain", sim::bumpyTerrain());
     add("urbanObjects", sim::urbanObjects());
@@ -57,11 +58,14 @@ std::vector<CatalogueScan> catalogue() {
     add("meshFencesOnRoughVerges", sim::meshFencesOnRoughVerges());
     add("grassVerges", sim::grassVerges());
     add("vergesWithStreetFurniture", sim::vergesWithStreetFurniture());
-    add("offRoadMeadow", sim::offRoadMeadow());
-    add("offRoadTallGrassAndRocks", sim::offRoadTallGrassAndRocks());
-    add("offRoadFenceLines", sim::offRoadFenceLines());
-    add("offRoadTrackWithDitchesRutsAndPuddles", sim::offRoadTrackWithDitchesRutsAndPuddles());
-    add("offRoadHillside(15)", sim::offRoadHillside(15));
+    // OS1-64 (share/presets/os64.yaml), as the off-road tests use it.
+    const sim::LidarModel os64 = sim::LidarModel::uniform(64, -16.6, 16.6, 2048);
+    add("offRoadMeadow, OS1-64", sim::offRoadMeadow(), os64);
+    add("offRoadTallGrassAndRocks, OS1-64", sim::offRoadTallGrassAndRocks(), os64);
+    add("offRoadFenceLines, OS1-64", sim::offRoadFenceLines(), os64);
+    add("offRoadTrackWithDitchesRutsAndPuddles, OS1-64",
+        sim::offRoadTrackWithDitchesRutsAndPuddles(), os64);
+    add("offRoadHillside(20), OS1-64", sim::offRoadHillside(20), os64);
     add("carBesideSensor(2)", sim::carBesideSensor(2));
     add("realisticCarBesideSensor(2)", sim::realisticCarBesideSensor(2));
     add("realisticCarBesideEgoVehicle(2)", sim::realisticCarBesideEgoVehicle(2));

@@ -49,7 +49,7 @@ expect_failure_mentioning("coverage" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_reso
 expect_failure_mentioning("--loo-score is for sweep" ${TRAVEL_EVAL} report ${io} --loo-score f1a)
 # merges diagnoses TRAVEL's object stage: not a baseline's, not with the stage off
 expect_failure_mentioning("--method travel or travel-no-ttmf, not 'gpf'" ${TRAVEL_EVAL} merges ${io} --method gpf)
-expect_failure_mentioning("cluster_objects=false" ${TRAVEL_EVAL} merges ${io} --set cluster_objects=false)
+expect_failure_mentioning("merges diagnoses the object stage" ${TRAVEL_EVAL} merges ${io} --set cluster_objects=false)
 # Unknown subcommand; no scan; missing directory
 expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
 expect_failure_mentioning("no scans" ${TRAVEL_EVAL} report ${io})
