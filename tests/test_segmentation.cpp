@@ -285,6 +285,27 @@ TEST(Determinism, TwoRunsAndTwoInstancesGiveIdenticalOutput) {
     }
 }
 
+// A cloud in a base frame (origin on the ground under the sensor, sensor_height 0) gets the
+// labels of the same cloud in the sensor frame: the ground stage reads heights relative to the
+// ground only. (The object stage measures ranges and ring elevations from the origin, so its
+// clusters do change: docs/input-contract.md, "Coordinate frame".)
+TEST(Frames, BaseFrameCloudGetsTheSensorFrameLabels) {
+    for (const sim::Scene& scene : {sim::mixed(), sim::kerbsAndSteps(), sim::bumpyTerrain()}) {
+        const sim::Scan scan =
+            sim::scan(scene, testLidar(), sim::sensorPoseAt(scene, 0, 0, kSensorHeight, 0, 0, 0));
+        PointCloud base = scan.cloud;
+        for (float& z : base.z) z += static_cast<float>(kSensorHeight);
+        Params base_params = testParams();
+        base_params.sensor_height = 0.0;
+        Pipeline in_sensor_frame(testParams()), in_base_frame(base_params);
+        Result a, b;
+        in_sensor_frame.process(scan.cloud, {}, a);
+        in_base_frame.process(base, {}, b);
+        EXPECT_GT(a.count(PointClass::Ground), scan.cloud.size() / 2);
+        EXPECT_EQ(a.labels, b.labels);
+    }
+}
+
 TEST(TerrainModel, FlatGroundModelIsLevelAtSensorHeight) {
     const SceneRun run = segment(sim::flatGround(), testParams());
     const TerrainModel& model = run.result.terrain;
