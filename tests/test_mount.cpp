@@ -183,6 +183,42 @@ TEST(MountCheck, TrueHeightDoesNotWarn) {
     }
 }
 
+// A cloud in a base frame (origin on the ground under the sensor): the ground labels are those
+// of the sensor frame, the clusters are not (docs/input-contract.md), so the first frame warns,
+// with a fixed sensor_height 0 and with `auto` (which then takes 0 m, the ground's height).
+TEST(MountCheck, BaseFrameCloudWarns) {
+    const sim::Scan scan = scanFrom(sim::urbanObjects(), {1.73, 0, 0});
+    PointCloud base = scan.cloud;
+    for (float& z : base.z) z += 1.73f;
+    Params fixed;
+    fixed.sensor_height = 0.0;
+    fixed.min_range = 1.0;
+    Params automatic = fixed;
+    automatic.sensor_height = AutoReal::makeAuto(1.73);
+    for (const Params& params : {fixed, automatic}) {
+        Pipeline pipeline(params);
+        Result result;
+        pipeline.process(base, {}, result);
+        ASSERT_EQ(result.mount.kind, MountNote::Kind::Mismatch) << result.mount.message;
+        EXPECT_NE(result.mount.message.find("within 0.20 m of the ground"), std::string::npos)
+            << result.mount.message;
+        EXPECT_NE(result.mount.message.find("give the points in the sensor frame"),
+                  std::string::npos);
+        EXPECT_GE(double(pipeline.params().sensor_height), 0.0);
+        EXPECT_LT(double(pipeline.params().sensor_height), 0.05);
+        EXPECT_EQ(params.sensor_height.isAuto(),
+                  result.mount.message.find("sensor_height auto: 0.0") != std::string::npos)
+            << result.mount.message;
+    }
+    // The same scan in the sensor frame, and a sensor 0.5 m up, do not warn
+    // (MountCheck.TrueHeightDoesNotWarn): the bound lies below any vehicle's LiDAR.
+    Params sensor_frame = fixed;
+    sensor_frame.sensor_height = 1.73;
+    Result result;
+    Pipeline(sensor_frame).process(scan.cloud, {}, result);
+    EXPECT_EQ(result.mount.kind, MountNote::Kind::None) << result.mount.message;
+}
+
 TEST(MountCheck, WrongTiltWarnsWithTheAnglesToSet) {
     const sim::Scan scan = scanFrom(sim::flatGround(), {1.73, 0, 6});
     Result result;

@@ -158,6 +158,7 @@ std::string grouped(std::size_t value) {
 }
 
 std::string fixed2(double value) {
+    if (std::fabs(value) < 0.005) value = 0.0;  // "0.00", not "-0.00"
     char text[32];
     std::snprintf(text, sizeof(text), "%.2f", value);
     return text;
@@ -174,7 +175,7 @@ MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate
     std::string what;
     const auto add = [&](const std::string& text) { what += (what.empty() ? "" : ", ") + text; };
     if (configured.sensor_height.isAuto())
-        add("sensor_height auto: " + fixed2(ground.height) + " m");
+        add("sensor_height auto: " + fixed2(std::max(0.0, ground.height)) + " m");
     if (configured.mount_roll_deg.isAuto())
         add("mount_roll_deg auto: " + fixed2(ground.roll_deg) + " deg");
     if (configured.mount_pitch_deg.isAuto())
@@ -224,6 +225,13 @@ MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& 
                     " deg, pitch " + fixed2(ground.pitch_deg) + " deg" +
                     (angles.remedy.empty() ? "" : ", or " + angles.remedy);
         }
+    }
+    if (ground.height < kBaseFrameMaxHeight) {
+        what += std::string(what.empty() ? "" : "; ") + "the points' origin is within " +
+                fixed2(kBaseFrameMaxHeight) + " m of the ground (" + fixed2(ground.height) +
+                " m above it): a base frame, not the sensor's; objects split there, since their "
+                "ranges and ring elevations are measured from the origin: give the points in the "
+                "sensor frame and its height above the ground as sensor_height";
     }
     if (what.empty()) return note;
     note.kind = MountNote::Kind::Mismatch;
@@ -331,7 +339,9 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
         if (normal.dot(up) < 0) normal = -normal;
         if (normal.dot(up) < min_up) continue;
         const double d = -normal.dot(a);
-        if (!(d > 0)) continue;  // the sensor must be above the ground
+        // The origin above the ground, or near it (a base frame, which the check reports:
+        // kBaseFrameMaxHeight), not under it.
+        if (!(d > -kBaseFrameMaxHeight)) continue;
         const std::size_t count =
             countWithin(candidate_x_.data(), candidate_y_.data(), candidate_z_.data(),
                         num_candidates, normal.data(), d, kRansacInlierDist);
@@ -364,7 +374,7 @@ GroundPlaneEstimate MountEstimator::estimate(const PointCloud& cloud,
     out.num_inliers = count;
     out.stride = stride;
     mountAnglesFromNormal(best_n, out.roll_deg, out.pitch_deg);
-    out.found = count * stride >= kMinInliers && best_d > 0;
+    out.found = count * stride >= kMinInliers && best_d > -kBaseFrameMaxHeight;
     return out;
 }
 

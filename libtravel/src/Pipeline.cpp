@@ -134,7 +134,8 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     }
     mount_done_ = true;
     if (hasAutoMount(configured_)) {
-        if (params_.sensor_height.isAuto()) params_.sensor_height = ground.height;
+        // A base frame's origin may lie a little under its ground (the check says so).
+        if (params_.sensor_height.isAuto()) params_.sensor_height = std::max(0.0, ground.height);
         if (params_.mount_roll_deg.isAuto()) params_.mount_roll_deg = ground.roll_deg;
         if (params_.mount_pitch_deg.isAuto()) params_.mount_pitch_deg = ground.pitch_deg;
         applyFirstGroundRing();
@@ -143,8 +144,9 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     const MountNote check = checkedMountNote(configured_, ground, alignmentRotation(params_, input),
                                              frame, angles_source_);
     if (!check) return;
-    if (note) {
+    if (note) {  // the estimate, then what it asks the user to correct
         note.message += "; " + check.message;
+        note.kind = check.kind;
     } else {
         note = check;
     }

@@ -28,7 +28,9 @@ struct GroundPlaneEstimate {
     bool found = false;
     /// Unit normal of the ground plane in the sensor frame, pointing to the sensor's side.
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-    double height = 0.0;     ///< distance of the sensor origin above the plane [m]
+    /// Distance of the sensor origin above the plane [m]; down to -kBaseFrameMaxHeight (the
+    /// origin of a base frame, just under its ground).
+    double height = 0.0;
     double roll_deg = 0.0;   ///< mount roll that makes the plane level (vehicle standing level)
     double pitch_deg = 0.0;  ///< mount pitch, likewise
     std::size_t num_candidates = 0;  ///< lowest points of the polar bins
@@ -97,6 +99,11 @@ struct MountAnglesSource {
 /// A configured mount farther than this from the measured ground draws a MountNote::Mismatch.
 constexpr double kMountHeightTolerance = 0.3;  // m
 constexpr double kMountTiltToleranceDeg = 5.0;
+/// A ground nearer than this below the points' origin (or above it) draws a MountNote::Mismatch
+/// whatever sensor_height says: a spinning LiDAR stands higher on any vehicle, so the cloud is
+/// in a base frame, and the object stage measures ranges and ring elevations from the origin
+/// (docs/input-contract.md, "Coordinate frame": its clusters split).
+constexpr double kBaseFrameMaxHeight = 0.2;  // m
 
 /// The note for the `auto` values of `configured`, estimated as `ground` on `frame`.
 MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
@@ -106,7 +113,8 @@ MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate
 MountNote notFoundMountNote(const Params& configured, std::size_t frame);
 /// Kind::Mismatch when a fixed value of `configured` is farther than the tolerances from
 /// `ground` (height: distance to the plane; tilt: angle between the plane's normal taken by
-/// `sensor_to_aligned` and vertical), else Kind::None. `angles` names where the fixed angles
+/// `sensor_to_aligned` and vertical), or when the ground is within kBaseFrameMaxHeight of the
+/// origin, else Kind::None. `angles` names where the fixed angles
 /// come from (MountAnglesSource).
 MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
                            const Eigen::Matrix3d& sensor_to_aligned, std::size_t frame,
