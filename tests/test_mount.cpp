@@ -188,35 +188,49 @@ TEST(MountCheck, TrueHeightDoesNotWarn) {
 // with a fixed sensor_height 0 and with `auto` (which then takes 0 m, the ground's height).
 TEST(MountCheck, BaseFrameCloudWarns) {
     const sim::Scan scan = scanFrom(sim::urbanObjects(), {1.73, 0, 0});
-    PointCloud base = scan.cloud;
-    for (float& z : base.z) z += 1.73f;
     Params fixed;
     fixed.sensor_height = 0.0;
     fixed.min_range = 1.0;
     Params automatic = fixed;
     automatic.sensor_height = AutoReal::makeAuto(1.73);
-    for (const Params& params : {fixed, automatic}) {
+    Params sensor_height_given = fixed;
+    sensor_height_given.sensor_height = 1.73;
+    // The first frame's note for `params` on the scan with its origin `down` below the sensor,
+    // and the sensor_height then used.
+    const auto firstNote = [&](const Params& params, float down, double& height_used) {
+        PointCloud cloud = scan.cloud;
+        for (float& z : cloud.z) z += down;
         Pipeline pipeline(params);
         Result result;
-        pipeline.process(base, {}, result);
-        ASSERT_EQ(result.mount.kind, MountNote::Kind::Mismatch) << result.mount.message;
-        EXPECT_NE(result.mount.message.find("within 0.20 m of the ground"), std::string::npos)
-            << result.mount.message;
-        EXPECT_NE(result.mount.message.find("give the points in the sensor frame"),
-                  std::string::npos);
-        EXPECT_GE(double(pipeline.params().sensor_height), 0.0);
-        EXPECT_LT(double(pipeline.params().sensor_height), 0.05);
+        pipeline.process(cloud, {}, result);
+        height_used = pipeline.params().sensor_height;
+        return result.mount;
+    };
+    double height = -1.0;
+    for (const Params& params : {fixed, automatic}) {
+        const MountNote note = firstNote(params, 1.73f, height);
+        ASSERT_EQ(note.kind, MountNote::Kind::Mismatch) << note.message;
+        EXPECT_NE(note.message.find("within 0.20 m of the ground"), std::string::npos)
+            << note.message;
+        EXPECT_NE(note.message.find("give the points in the sensor frame"), std::string::npos);
+        EXPECT_GE(height, 0.0);
+        EXPECT_LT(height, 0.05);
         EXPECT_EQ(params.sensor_height.isAuto(),
-                  result.mount.message.find("sensor_height auto: 0.0") != std::string::npos)
-            << result.mount.message;
+                  note.message.find("sensor_height auto: 0.0") != std::string::npos)
+            << note.message;
     }
-    // The same scan in the sensor frame, and a sensor 0.5 m up, do not warn
-    // (MountCheck.TrueHeightDoesNotWarn): the bound lies below any vehicle's LiDAR.
-    Params sensor_frame = fixed;
-    sensor_frame.sensor_height = 1.73;
-    Result result;
-    Pipeline(sensor_frame).process(scan.cloud, {}, result);
-    EXPECT_EQ(result.mount.kind, MountNote::Kind::None) << result.mount.message;
+    // The ground 0.1 m above the origin (a base frame's origin under its ground): found, `auto`
+    // takes 0 m, and a fixed 1.73 m is not told to become the base frame's height.
+    for (const Params& params : {automatic, sensor_height_given}) {
+        const MountNote note = firstNote(params, 1.83f, height);
+        ASSERT_EQ(note.kind, MountNote::Kind::Mismatch) << note.message;
+        EXPECT_NE(note.message.find("(-0.10 m above it)"), std::string::npos) << note.message;
+        EXPECT_EQ(note.message.find("set sensor_height"), std::string::npos) << note.message;
+        EXPECT_EQ(height, params.sensor_height.isAuto() ? 0.0 : 1.73);
+    }
+    // The scan in its sensor frame does not warn (nor a sensor 0.5 m up:
+    // MountCheck.TrueHeightDoesNotWarn).
+    EXPECT_EQ(firstNote(sensor_height_given, 0.f, height).kind, MountNote::Kind::None);
 }
 
 TEST(MountCheck, WrongTiltWarnsWithTheAnglesToSet) {

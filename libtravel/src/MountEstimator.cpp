@@ -204,7 +204,9 @@ MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& 
     if (!ground.found) return note;
     std::string what;
     const AutoReal& h = configured.sensor_height;
-    if (!h.isAuto() && std::fabs(ground.height - h.value) > kMountHeightTolerance) {
+    // A base frame is said below; a height to set would be the base frame's (0 or less).
+    const bool base_frame = ground.height < kBaseFrameMaxHeight;
+    if (!base_frame && !h.isAuto() && std::fabs(ground.height - h.value) > kMountHeightTolerance) {
         what = "sensor_height is " + fixed2(h.value) + " m but the ground is " +
                fixed2(ground.height) +
                " m below the sensor: set sensor_height: " + fixed2(ground.height) + " or auto";
@@ -226,7 +228,7 @@ MountNote checkedMountNote(const Params& configured, const GroundPlaneEstimate& 
                     (angles.remedy.empty() ? "" : ", or " + angles.remedy);
         }
     }
-    if (ground.height < kBaseFrameMaxHeight) {
+    if (base_frame) {
         what += std::string(what.empty() ? "" : "; ") + "the points' origin is within " +
                 fixed2(kBaseFrameMaxHeight) + " m of the ground (" + fixed2(ground.height) +
                 " m above it): a base frame, not the sensor's; objects split there, since their "

@@ -8,7 +8,8 @@
 // Fit (deterministic): the lowest point of each polar bin around the sensor (2 deg x 1 m, up to
 // 40 m) is a ground candidate (the foot of a wall or a car is ground, its top is not); RANSAC
 // with a fixed seed picks the plane through 3 candidates, within 30 deg of the prior up
-// direction and below the sensor, that holds the most candidates within 0.1 m; then two
+// direction and below the sensor (or less than kBaseFrameMaxHeight above its origin: a base
+// frame, which the check reports), that holds the most candidates within 0.1 m; then two
 // least-squares (PCA) refits on ALL points within 0.1 m, then 0.06 m, of the plane remove the
 // downward bias of taking minima (about 1-2 sigma of the range noise).
 #pragma once
@@ -73,7 +74,10 @@ struct MountNote {
         None,       ///< nothing new
         Estimated,  ///< `auto` values were estimated (and are kept from now on)
         NotFound,   ///< `auto` values could not be estimated in the first frames: fallbacks kept
-        Mismatch,   ///< configured values disagree with the ground (> 0.3 m or 5 deg)
+        /// configured values disagree with the ground (> 0.3 m or 5 deg), or the ground lies
+        /// within kBaseFrameMaxHeight of the origin (a base frame); also an estimate (as
+        /// Estimated) whose check found either
+        Mismatch,
     };
     Kind kind = Kind::None;
     std::size_t frame = 0;  ///< index of the frame (0 = first processed by this pipeline)
