@@ -34,6 +34,7 @@ struct CatalogueScan {
     std::string name;
     sim::Scene scene;
     sim::LidarModel lidar;
+    double height = sim::kSensorHeight;  // of the sensor above the terrain under it [m]
     double roll_deg = 0, pitch_deg = 0;
 };
 
@@ -42,9 +43,9 @@ std::vector<CatalogueScan> catalogue() {
     const sim::LidarModel hdl64 = sim::LidarModel::hdl64();
     std::vector<CatalogueScan> c;
     const auto add = [&](std::string name, sim::Scene scene, sim::LidarModel lidar = {},
-                         double roll = 0, double pitch = 0) {
+                         double height = sim::kSensorHeight, double roll = 0, double pitch = 0) {
         if (lidar.elevations_deg.empty()) lidar = hdl64;
-        c.push_back({std::move(name), std::move(scene), std::move(lidar), roll, pitch});
+        c.push_back({std::move(name), std::move(scene), std::move(lidar), height, roll, pitch});
     };
     add("flatGround", sim::flatGround());
     add("slope(20)", sim::slope(20));
@@ -52,20 +53,21 @@ std::vector<CatalogueScan> catalogue() {
     add("bumpyTerrain", sim::bumpyTerrain());
     add("urbanObjects", sim::urbanObjects());
     add("mixed", sim::mixed());
-    add("mixed, mount rolled 3 deg, pitched 5 deg", sim::mixed(), hdl64, 3, 5);
+    add("mixed, mount rolled 3 deg, pitched 5 deg", sim::mixed(), hdl64, sim::kSensorHeight, 3, 5);
     add("mixed, OS1-128", sim::mixed(), sim::LidarModel::os128());
     add("fencesAndWalls", sim::fencesAndWalls());
     add("meshFencesOnRoughVerges", sim::meshFencesOnRoughVerges());
     add("grassVerges", sim::grassVerges());
     add("vergesWithStreetFurniture", sim::vergesWithStreetFurniture());
-    // OS1-64 (share/presets/os64.yaml), as the off-road tests use it.
+    // OS1-64 (share/presets/os64.yaml) 1.3 m up, as the off-road tests use it.
     const sim::LidarModel os64 = sim::LidarModel::uniform(64, -16.6, 16.6, 2048);
-    add("offRoadMeadow, OS1-64", sim::offRoadMeadow(), os64);
-    add("offRoadTallGrassAndRocks, OS1-64", sim::offRoadTallGrassAndRocks(), os64);
-    add("offRoadFenceLines, OS1-64", sim::offRoadFenceLines(), os64);
+    const double off_road = sim::kOffRoadSensorHeight;
+    add("offRoadMeadow, OS1-64", sim::offRoadMeadow(), os64, off_road);
+    add("offRoadTallGrassAndRocks, OS1-64", sim::offRoadTallGrassAndRocks(), os64, off_road);
+    add("offRoadFenceLines, OS1-64", sim::offRoadFenceLines(), os64, off_road);
     add("offRoadTrackWithDitchesRutsAndPuddles, OS1-64",
-        sim::offRoadTrackWithDitchesRutsAndPuddles(), os64);
-    add("offRoadHillside(20), OS1-64", sim::offRoadHillside(20), os64);
+        sim::offRoadTrackWithDitchesRutsAndPuddles(), os64, off_road);
+    add("offRoadHillside(20), OS1-64", sim::offRoadHillside(20), os64, off_road);
     add("carBesideSensor(2)", sim::carBesideSensor(2));
     add("realisticCarBesideSensor(2)", sim::realisticCarBesideSensor(2));
     add("realisticCarBesideEgoVehicle(2)", sim::realisticCarBesideEgoVehicle(2));
@@ -83,16 +85,14 @@ std::vector<CatalogueScan> catalogue() {
 void writeCatalogue(const std::filesystem::path& dir) {
     std::ofstream index(dir / "scenes.txt");
     if (!index) throw std::runtime_error("cannot write " + (dir / "scenes.txt").string());
-    const std::vector<CatalogueScan> scans = catalogue();
+    std::vector<CatalogueScan> scans = catalogue();
     for (std::size_t i = 0; i < scans.size(); ++i) {
-        CatalogueScan s = scans[i];
+        CatalogueScan& s = scans[i];
         s.lidar.range_noise_sigma = 0.02;
         s.lidar.seed = static_cast<uint32_t>(i + 1);
-        const double height =
-            s.name.rfind("offRoad", 0) == 0 ? sim::kOffRoadSensorHeight : sim::kSensorHeight;
         const travel::PointCloud cloud =
             sim::scan(s.scene, s.lidar,
-                      sim::sensorPoseAt(s.scene, 0, 0, height, s.roll_deg, s.pitch_deg, 0))
+                      sim::sensorPoseAt(s.scene, 0, 0, s.height, s.roll_deg, s.pitch_deg, 0))
                 .cloud;
         char name[32];
         std::snprintf(name, sizeof name, "%06zu.bin", i);
