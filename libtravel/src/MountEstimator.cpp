@@ -175,7 +175,7 @@ MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate
     std::string what;
     const auto add = [&](const std::string& text) { what += (what.empty() ? "" : ", ") + text; };
     if (configured.sensor_height.isAuto())
-        add("sensor_height auto: " + fixed2(std::max(0.0, ground.height)) + " m");
+        add("sensor_height auto: " + fixed2(autoSensorHeight(ground)) + " m");
     if (configured.mount_roll_deg.isAuto())
         add("mount_roll_deg auto: " + fixed2(ground.roll_deg) + " deg");
     if (configured.mount_pitch_deg.isAuto())

@@ -134,8 +134,7 @@ void Pipeline::updateMount(const PointCloud& cloud, const FrameInput& input, Mou
     }
     mount_done_ = true;
     if (hasAutoMount(configured_)) {
-        // A base frame's origin may lie a little under its ground (the check says so).
-        if (params_.sensor_height.isAuto()) params_.sensor_height = std::max(0.0, ground.height);
+        if (params_.sensor_height.isAuto()) params_.sensor_height = autoSensorHeight(ground);
         if (params_.mount_roll_deg.isAuto()) params_.mount_roll_deg = ground.roll_deg;
         if (params_.mount_pitch_deg.isAuto()) params_.mount_pitch_deg = ground.pitch_deg;
         applyFirstGroundRing();

@@ -109,6 +109,12 @@ constexpr double kMountTiltToleranceDeg = 5.0;
 /// (docs/input-contract.md, "Coordinate frame": its clusters split).
 constexpr double kBaseFrameMaxHeight = 0.2;  // m
 
+/// The sensor_height an `auto` value takes from `ground`: its height, 0 when a base frame's
+/// origin lies under its ground (the check reports the base frame).
+inline double autoSensorHeight(const GroundPlaneEstimate& ground) {
+    return ground.height > 0.0 ? ground.height : 0.0;
+}
+
 /// The note for the `auto` values of `configured`, estimated as `ground` on `frame`.
 MountNote estimatedMountNote(const Params& configured, const GroundPlaneEstimate& ground,
                              std::size_t frame);
