@@ -10,6 +10,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -41,6 +42,11 @@ inline std::string oneLine(const std::string& text) {
         const auto start = line.find_first_not_of(" \t\r");
         if (start == std::string::npos) continue;
         line = line.substr(start);
+        // Neither the banner ("==== MRPT exception ====") nor a call stack says what went wrong.
+        if (line.rfind("====", 0) == 0 || line.rfind("Call stack backtrace:", 0) == 0 ||
+            (line.size() > 1 && line[0] == '[' &&
+             std::isdigit(static_cast<unsigned char>(line[1]))))
+            continue;
         if (first.empty()) first = line;
         if (line.rfind("Message:", 0) == 0) message = line.substr(line.find_first_not_of(' ', 8));
     }

@@ -1,13 +1,15 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
-// The apps' outputs: AppError (a failure naming the file it concerns) and the folders outputs go
-// to, created here with one message for every app ("cannot create folder X: reason").
+// The apps' outputs: AppError (a failure naming the file it concerns), the folders outputs go
+// to, created here with one message for every app ("cannot create folder X: reason"), and the
+// check that no output is an input or another output.
 #pragma once
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace travel::apps {
 
@@ -27,6 +29,68 @@ inline void createFolder(const std::string& folder) {
 /// Creates the folder that will hold the file `path`.
 inline void createParentFolder(const std::string& path) {
     createFolder(std::filesystem::path(path).parent_path().string());
+}
+
+/// Throws AppError unless `path`, given with `flag`, can name a file to write: not an existing
+/// folder, not ending in '/'.
+inline void requireFileName(const std::string& flag, const std::string& path) {
+    std::error_code ec;
+    if (!path.empty() && (path.back() == '/' || std::filesystem::is_directory(path, ec)))
+        throw AppError(flag + " " + path + ": a folder; give the name of the file to write");
+}
+
+/// Moves the finished `part` to `path` (one folder: the move is atomic). On failure removes
+/// `part` and throws AppError with the reason: no orphaned part file is left behind.
+inline void movePartInPlace(const std::string& part, const std::string& path) {
+    std::error_code ec;
+    std::filesystem::rename(part, path, ec);
+    if (!ec) return;
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
+    throw AppError(path + ": cannot write (moving " + part + " there: " + ec.message() + ")");
+}
+
+/// Whether `a` and `b` name the same file or folder: the same file-system entry when both exist
+/// (hard links too), else the same absolute path once symlinks, ".", ".." and a trailing '/'
+/// are resolved.
+inline bool samePath(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec)) {
+        const bool same = fs::equivalent(a, b, ec);
+        if (!ec) return same;
+    }
+    const auto resolved = [](const std::string& path) {
+        std::error_code error;
+        fs::path p = fs::absolute(path, error).lexically_normal();
+        if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();  // "dir/"
+        const fs::path canonical = fs::weakly_canonical(p, error);
+        return error ? p : canonical;
+    };
+    return resolved(a) == resolved(b);
+}
+
+/// A path given on the command line and the flag (or role) that gave it, for messages.
+struct NamedPath {
+    std::string flag, path;
+};
+
+/// Before anything is written: throws AppError when an output is one of the inputs (writing it
+/// would destroy the input) or the same file as another output. Empty paths are not given.
+inline void checkOutputsApart(const std::vector<NamedPath>& inputs,
+                              const std::vector<NamedPath>& outputs) {
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+        const NamedPath& out = outputs[k];
+        if (out.path.empty()) continue;
+        for (const NamedPath& in : inputs)
+            if (!in.path.empty() && samePath(out.path, in.path))
+                throw AppError(out.flag + " " + out.path + ": the same path as " + in.flag + " " +
+                               in.path + ", an input (writing it would destroy it)");
+        for (std::size_t j = 0; j < k; ++j)
+            if (!outputs[j].path.empty() && samePath(out.path, outputs[j].path))
+                throw AppError(out.flag + " " + out.path + ": the same path as " + outputs[j].flag +
+                               " " + outputs[j].path + " (give each output its own path)");
+    }
 }
 
 }  // namespace travel::apps

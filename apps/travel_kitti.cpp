@@ -9,8 +9,10 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -185,7 +187,22 @@ int run(int argc, char** argv) {
     const travel::ScanList scans = travel::listScans(flags.inputPath(), format);
     std::vector<std::string> files = scans.files;
     const std::string labels_dir = labels.isSet() ? labels.getValue() : scans.labels_dir;
+    if (labels.isSet()) travel::requireDirectory(labels_dir, "--labels directory");
     max_frames.keepFirst(files);
+    // Label files found up front: the workers only read them.
+    std::vector<std::string> label_paths(files.size());
+    std::size_t unlabelled_frames = 0;
+    for (std::size_t f = 0; f < files.size() && !labels_dir.empty(); ++f) {
+        const std::string stem = fs::path(files[f]).stem().string();
+        label_paths[f] = (fs::path(labels_dir) / (stem + ".label")).string();
+        if (!fs::exists(label_paths[f])) {
+            label_paths[f].clear();
+            ++unlabelled_frames;
+        }
+    }
+    if (labels.isSet() && unlabelled_frames == files.size())
+        throw travel::InputError("--labels " + labels_dir + ": no <stem>.label for any of the " +
+                                 std::to_string(files.size()) + " scans");
     Tracking tracking;
     if (track.getValue()) {
         if (method.getValue() != "travel" && method.getValue() != "travel-no-ttmf")
@@ -198,7 +215,20 @@ int run(int argc, char** argv) {
                                      " poses for " + std::to_string(files.size()) + " scans");
         tracking.tracker = std::make_unique<travel::FrameTracker>(configuration.tracking);
     }
+    // No output may be an input: the scans, the ground truth (-o its folder: the predicted
+    // labels would replace it), the sequence's poses (--track writes OUT/poses.txt).
+    std::vector<travel::apps::NamedPath> inputs = {{"the labels folder", labels_dir}};
+    if (tracking.given) inputs.push_back({"the sequence's", scans.sequence_dir + "/poses.txt"});
+    for (const std::string& scan : files) inputs.push_back({"the scan", scan});
+    for (const std::string& label : label_paths) inputs.push_back({"the labels", label});
+    const std::string poses_out = track.getValue() ? (fs::path(out) / "poses.txt").string() : "";
+    travel::apps::checkOutputsApart(inputs, {{"-o", out},
+                                             {"-o", poses_out},
+                                             {"--csv", csv.getValue()},
+                                             {"--track-png", track_png.getValue()}});
     travel::apps::createFolder(out);
+    travel::apps::createParentFolder(csv.getValue());
+    travel::apps::createParentFolder(track_png.getValue());
     // -j N: the other workers' segmenters, at most one per further scan (one scan builds one
     // pipeline), are built on their own threads while the first frame settles the mount.
     const auto workers =
@@ -214,7 +244,9 @@ int run(int argc, char** argv) {
     std::ofstream csv_out;
     if (csv.isSet()) {
         csv_out.open(csv.getValue());
-        if (!csv_out) throw travel::InputError("cannot write " + csv.getValue());
+        if (!csv_out)
+            throw travel::InputError("cannot write " + csv.getValue() + ": " +
+                                     std::strerror(errno));
         csv_out << "frame,points,invalid,ground,nonground,outlier,"
                    "A_precision,A_recall,A_f1,A_accuracy,B_precision,B_recall,B_f1,B_accuracy,"
                    "clusters,OSE_sum,USE_sum,OSE_mean,USE_mean,instances,mean_coverage,"
@@ -234,7 +266,6 @@ int run(int argc, char** argv) {
         {"total", {}}};
     const int kNumStages = static_cast<int>(stages.size());
     constexpr int kObjectsStage = 11;  // "objects_total"
-    std::size_t unlabelled_frames = 0;
     const travel::apps::Verbosity verbosity =
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
     const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
@@ -247,16 +278,6 @@ int run(int argc, char** argv) {
                     "clust", "ms", "ground A: P R F1 Acc", "ground B: P R F1 Acc",
                     "objects: OSE USE (sums) coverage purity");
 
-    // Label files found up front: the workers only read them.
-    std::vector<std::string> label_paths(files.size());
-    for (std::size_t f = 0; f < files.size() && !labels_dir.empty(); ++f) {
-        const std::string stem = fs::path(files[f]).stem().string();
-        label_paths[f] = (fs::path(labels_dir) / (stem + ".label")).string();
-        if (!fs::exists(label_paths[f])) {
-            label_paths[f].clear();
-            ++unlabelled_frames;
-        }
-    }
     // -j N: worker w segments with segmenters[w] (built with the first one, given its state
     // once its mount is settled); frames are consumed here, in input order.
     std::vector<std::unique_ptr<travel::eval::Segmenter>> segmenters;

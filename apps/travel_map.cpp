@@ -210,10 +210,12 @@ int run(int argc, char** argv) {
         written = travel_mrpt::exportAll(map, prefix);
         mrpt::io::CFileGZOutputStream out;
         const std::string path = prefix + ".travelmap";
+        travel::apps::PartialOutput part_guard(path + ".part");
         if (!out.open(path + ".part")) throw std::runtime_error(path + ": cannot write");
         mrpt::serialization::archiveFrom(out) << map;
         out.close();
-        fs::rename(path + ".part", path);
+        travel::apps::movePartInPlace(path + ".part", path);
+        part_guard.commit();
         written.push_back(path);
     }
     const double export_seconds =

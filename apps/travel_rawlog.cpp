@@ -410,9 +410,11 @@ int run(int argc, char** argv) {
     travel_mrpt::registerClasses();
     const travel_mrpt::TravelFilterOptions filter_options =
         travel::apps::filterOptionsFrom(configuration);
-    if (fs::exists(options.output) && fs::exists(options.input) &&
-        fs::equivalent(options.input, options.output))
-        throw AppError(options.output + ": output would overwrite the input");
+    travel::apps::requireFileName("-o", options.output);
+    travel::apps::checkOutputsApart({{"-i", options.input}},
+                                    {{"-o", options.output},
+                                     {"--csv", options.csv},
+                                     {"--label-reference", options.label_reference}});
 
     auto reader = openInput(options);
     // The CSV and the label reference are written in place (RawlogSegmenter's constructor
@@ -445,10 +447,7 @@ int run(int argc, char** argv) {
         throw;
     }
     out_file.close();
-    std::error_code ec;
-    fs::rename(partial, options.output, ec);
-    if (ec)
-        throw AppError(options.output + ": cannot rename from " + partial + ": " + ec.message());
+    travel::apps::movePartInPlace(partial, options.output);
 
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!options.quiet) printSummary(options, segmenter.totals(), reader.index(), seconds);

@@ -86,6 +86,8 @@ Options parseCommandLine(int argc, char** argv) {
                        " has " + std::to_string(scans.files.size()) + " scans");
     o.scan = scans.files[frame.getValue()];
     o.out = flags.outputPath();
+    travel_mrpt::requirePictureName(o.out);
+    travel::apps::checkOutputsApart({{"-i", o.scan}}, {{"-o", o.out}});
     o.quiet = flags.quiet();
     for (const std::string& m : travel::eval::splitList(methods.getValue(), ','))
         if (!m.empty()) o.methods.push_back(m);

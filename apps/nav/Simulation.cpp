@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "Interrupt.hpp"
+#include "OutputFolder.hpp"
 #include "nav/Collision.hpp"
 #include "travel/EnumNames.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
@@ -441,6 +442,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
 
 void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
     const std::string part = path + ".part";
+    apps::PartialOutput part_guard(part);  // removed on a write error
     {
         std::ofstream f(part);
         if (!f) throw std::runtime_error(path + ": cannot write the trajectory CSV");
@@ -462,7 +464,8 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
         }
         if (!f) throw std::runtime_error(path + ": write error");
     }
-    fs::rename(part, path);
+    apps::movePartInPlace(part, path);
+    part_guard.commit();
 }
 
 }  // namespace travel::navsim

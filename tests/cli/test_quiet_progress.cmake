@@ -85,8 +85,9 @@ if(EXISTS ${SAMPLE})
   # A truncated rawlog: the same message as travel-rawlog's (one reader).
   execute_process(COMMAND head -c 30000 ${SAMPLE} OUTPUT_FILE ${WORK_DIR}/cut.rawlog)
   foreach(app ${TRAVEL_MAP} ${TRAVEL_RAWLOG})
+    get_filename_component(name ${app} NAME)  # travel-map's -o is a folder, travel-rawlog's a file
     expect_failure_mentioning("cut.rawlog: record 0: truncated (end of file inside the record)"
-      ${app} -i ${WORK_DIR}/cut.rawlog -o ${WORK_DIR}/cut_out -q)
+      ${app} -i ${WORK_DIR}/cut.rawlog -o ${WORK_DIR}/cut_${name} -q)
   endforeach()
 else()
   message(STATUS "${SAMPLE} not found: travel-rawlog/travel-map part skipped")

@@ -81,8 +81,7 @@ std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
             throw InputError(inputs[s] +
                              ": no labels folder (a KITTI sequence folder has labels/ "
                              "beside velodyne/; else give --labels DIR)");
-        if (!fs::is_directory(labels_dir))
-            throw InputError("labels directory " + labels_dir + " does not exist");
+        requireDirectory(labels_dir, "labels directory");
         labels_dirs.push_back(labels_dir);
         const std::string seq = sequenceName(scans.scans_dir);
         for (const std::string& scan : scans.files) {

@@ -44,12 +44,16 @@ bool isDirectory(const fs::path& path) {
 
 }  // namespace
 
-std::vector<std::string> listFiles(const std::string& dir, const std::string& extension) {
+void requireDirectory(const std::string& dir, const std::string& what) {
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) {
-        throw InputError("directory " + inQuotes(dir) +
+    if (!fs::is_directory(dir, ec))
+        throw InputError(what + " " + inQuotes(dir) +
                          (fs::exists(dir, ec) ? " is not a directory" : " does not exist"));
-    }
+}
+
+std::vector<std::string> listFiles(const std::string& dir, const std::string& extension) {
+    requireDirectory(dir, "directory");
+    std::error_code ec;
     const std::string wanted =
         extension.empty() || extension.front() == '.' ? extension : "." + extension;
     std::vector<std::string> files;

@@ -4,7 +4,9 @@
 #include <mrpt/img/CImage.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace travel_mrpt {
@@ -56,8 +58,25 @@ void sideBySide(const CImage& a, const CImage& b, const std::string& title_a,
     }
 }
 
+void requirePictureName(const std::string& path) {
+    // OpenCV picks the format by the extension and throws (or fails) on any other name.
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png" && extension != ".jpg" && extension != ".jpeg")
+        throw std::runtime_error(path +
+                                 ": not a picture name (the format is told by the extension: "
+                                 ".png, .jpg or .jpeg)");
+}
+
 void savePicture(const CImage& image, const std::string& path) {
-    if (!image.saveToFile(path)) throw std::runtime_error(path + ": cannot write picture");
+    requirePictureName(path);
+    bool written = false;
+    try {
+        written = image.saveToFile(path);
+    } catch (const std::exception&) {
+    }
+    if (!written) throw std::runtime_error(path + ": cannot write picture");
 }
 
 }  // namespace travel_mrpt

@@ -37,8 +37,11 @@ void renderBirdsEye(const travel::AlignedCloud& points,
 void sideBySide(const mrpt::img::CImage& a, const mrpt::img::CImage& b, const std::string& title_a,
                 const std::string& title_b, mrpt::img::CImage& out);
 
-/// Writes `image` as PNG (or any format saveToFile knows by extension); throws
-/// std::runtime_error naming `path` on failure.
+/// Throws std::runtime_error unless `path` ends in .png, .jpg or .jpeg (any case): the names
+/// savePicture() can write.
+void requirePictureName(const std::string& path);
+/// Writes `image` to `path` (PNG or JPEG by its extension); std::runtime_error naming `path` on
+/// failure.
 void savePicture(const mrpt::img::CImage& image, const std::string& path);
 
 }  // namespace travel_mrpt

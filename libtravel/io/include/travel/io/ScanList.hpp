@@ -13,6 +13,10 @@
 
 namespace travel {
 
+/// Throws InputError naming `dir` as `what` ("labels directory 'x' does not exist", "... is not
+/// a directory") unless it is a directory.
+void requireDirectory(const std::string& dir, const std::string& what);
+
 /// Regular files in `dir` whose extension is `extension` ("bin" or ".bin"; empty = all), as
 /// full paths sorted by name (KITTI names are zero-padded, so this is frame order). Throws
 /// InputError if `dir` is not a directory.
