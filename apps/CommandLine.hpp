@@ -14,9 +14,11 @@
 #include <cmath>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "CommandLineParser.hpp"
@@ -297,11 +299,22 @@ struct MemoryLimitFlag {
                   std::to_string(kDefaultMemoryLimitMiB),
               false, static_cast<long>(kDefaultMemoryLimitMiB), "MIB", cmd) {}
     std::size_t mib() const {
-        if (arg.getValue() < 0 || (arg.getValue() > 0 && arg.getValue() < 256))
-            throw usageError("--max-memory must be 0 (no limit) or at least 256 MiB");
+        // At most 2^30 MiB (1 PiB): the ceiling in bytes must fit the 64-bit rlim_t.
+        if (arg.getValue() < 0 || (arg.getValue() > 0 && arg.getValue() < 256) ||
+            arg.getValue() > (1L << 30))
+            throw usageError(
+                "--max-memory must be 0 (no limit) or 256 to 1073741824 MiB (the default " +
+                std::to_string(kDefaultMemoryLimitMiB) + " suits every rawlog we know)");
         return static_cast<std::size_t>(arg.getValue());
     }
 };
+
+/// After an allocation or a thread start failed: the address-space ceiling, when one is set.
+inline std::string memoryLimitNote() {
+    if (applied_memory_limit_mib == 0) return "";
+    return " (out of memory within --max-memory " + std::to_string(applied_memory_limit_mib) +
+           " MiB of address space: raise it, or give 0 for no ceiling)";
+}
 
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
@@ -324,6 +337,13 @@ int runMain(const char* name, Run&& run, int argc, char** argv, int error_code =
                   << " --help' for the flags and examples.\n";
     } catch (const ConfigError& e) {
         std::cerr << name << ": configuration error: " << oneLine(e.what()) << "\n";
+    } catch (const std::bad_alloc& e) {
+        std::cerr << name << ": error: " << e.what() << memoryLimitNote() << "\n";
+    } catch (const std::system_error& e) {  // a thread that cannot start, among others
+        std::cerr << name << ": error: " << oneLine(e.what())
+                  << (e.code() == std::errc::resource_unavailable_try_again ? memoryLimitNote()
+                                                                            : "")
+                  << "\n";
     } catch (const std::exception& e) {
         std::cerr << name << ": error: " << oneLine(e.what()) << "\n";
     } catch (...) {

@@ -40,6 +40,7 @@ std::string applyMemoryLimit(std::size_t mib) {
         limit.rlim_cur = limit.rlim_max;
     if (setrlimit(RLIMIT_AS, &limit) != 0)
         return std::string("setrlimit(RLIMIT_AS): ") + std::strerror(errno);
+    applied_memory_limit_mib = static_cast<std::size_t>(limit.rlim_cur >> 20);
     return {};
 }
 

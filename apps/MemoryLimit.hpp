@@ -20,8 +20,13 @@
 namespace travel::apps {
 
 /// Default ceiling of the apps' address space [MiB]: far above what a real rawlog needs
-/// (travel-rawlog runs the VLP-16 sample within 256 MiB; a 2-million-point cloud needs ~300 MB).
+/// (travel-rawlog on the VLP-16 sample maps ~420 MiB with -j 1, ~660 MiB with -j 2, for 125 MB
+/// resident: shared libraries, thread stacks and malloc's per-thread arenas count too).
 constexpr std::size_t kDefaultMemoryLimitMiB = 4096;
+
+/// The ceiling applyMemoryLimit() set [MiB], 0 when none: runMain() names it when an
+/// allocation or a thread start fails.
+inline std::size_t applied_memory_limit_mib = 0;
 
 /// Caps the process's address space at `mib` MiB (0 = no limit). Returns a note for the user
 /// when the limit cannot be applied (sanitizer builds reserve terabytes of address space for

@@ -327,7 +327,16 @@ elseif(FUZZ_CORPUS)
       endif()
     endforeach()
   endforeach()
-  # The ceiling's own argument is checked.
-  expect_failure_mentioning("--max-memory" ${TRAVEL_RAWLOG} -i ${dir}/good.rawlog
-                            -o ${dir}/x.rawlog --max-memory 10)
+  # The ceiling's own argument is checked (2^44 MiB would wrap to 0 bytes); a ceiling that a
+  # good rawlog's run does not fit in (256 MiB: shared libraries, stacks and arenas alone take
+  # more) is named in the error, with -j 1 (an allocation) and -j 2 (a thread start); where the
+  # reader meets it first, its record is reported as larger than --max-memory allows.
+  foreach(mib 10 17592186044416)
+    expect_failure_mentioning("--max-memory must be 0 (no limit) or 256 to" ${TRAVEL_RAWLOG}
+                              -i ${dir}/good.rawlog -o ${dir}/x.rawlog --max-memory ${mib})
+  endforeach()
+  foreach(jobs 1 2)
+    expect_failure_mentioning("--max-memory" ${TRAVEL_RAWLOG}
+                              -i ${dir}/good.rawlog -o ${dir}/x.rawlog --max-memory 256 -j ${jobs})
+  endforeach()
 endif()
