@@ -183,6 +183,22 @@ TEST(Preprocessing, AttitudeAlignmentLevelsATiltedSensor) {
     preprocess(cloud, Params{}, input, out);
     for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(out.z[i], -1.5, 1e-4);
     EXPECT_NEAR(out.x[0], 2.0, 1e-4);
+    // An attitude that is no rotation is not used (NaN coordinates kept valid, or every point
+    // at the origin, before): the points are as without one, and a valid gravity still levels.
+    AlignedCloud plain;
+    preprocess(cloud, Params{}, FrameInput{}, plain);
+    const Eigen::Matrix3d nan_matrix = Eigen::Matrix3d::Constant(std::nan(""));
+    const Eigen::Matrix3d reflection = Eigen::Vector3d(1, 1, -1).asDiagonal();
+    for (const Eigen::Matrix3d& bad : {nan_matrix, Eigen::Matrix3d::Zero().eval(), reflection}) {
+        input.vehicle_attitude = bad;
+        input.gravity_in_sensor.reset();
+        preprocess(cloud, Params{}, input, out);
+        EXPECT_EQ(out.num_valid, cloud.size());
+        for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_EQ(out.z[i], plain.z[i]);
+        input.gravity_in_sensor = tilt.transpose() * Eigen::Vector3d(0, 0, -9.81);
+        preprocess(cloud, Params{}, input, out);
+        for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(out.z[i], -1.5, 1e-4);
+    }
 }
 
 TEST(Preprocessing, DeskewUndoesConstantVelocityMotion) {

@@ -289,6 +289,13 @@ TEST(ParamsText, StructureErrors) {
     EXPECT_CONTAINS(configErrorOf([] { fromText("eps1: 0.1\n  eps2: 0.1\n"); }), "test.yaml:");
     EXPECT_CONTAINS(configErrorOf([] { fromText("travel:\n eps1: 0.1\neps2: 0.1\n  ttmf: 0\n"); }),
                     "test.yaml:4:");
+    // A second YAML document was ignored, keys, typos and out-of-range values alike; an
+    // explicit start marker and an empty document after an end marker are still one.
+    const std::string second = configErrorOf([] { fromText("eps1: 0.1\n---\nfoo: 1\n"); });
+    EXPECT_CONTAINS(second, "test.yaml:3:");
+    EXPECT_CONTAINS(second, "a second YAML document");
+    EXPECT_DOUBLE_EQ(fromText("---\neps1: 0.25\n...\n").eps1, 0.25);
+    EXPECT_DOUBLE_EQ(fromText("eps1: 0.25\n---\n").eps1, 0.25);
 }
 
 // ---- Files, presets, overrides ---------------------------------------------------------------
@@ -590,6 +597,11 @@ TEST(ConfigSections, PrintedConfigLoadsBackIdentically) {
     EXPECT_EQ(back.filter.sensor_label, c.filter.sensor_label);
     EXPECT_EQ(back.nav.memory_seconds, c.nav.memory_seconds);
     EXPECT_CONTAINS(printed, "# [deg] A cell whose terrain model is steeper");
+    // Texts that YAML reads as null when bare.
+    for (const char* text : {"null", "Null", "NULL"}) {
+        c.filter.sensor_label = text;
+        EXPECT_EQ(configFrom(travel::configToYaml(c)).filter.sensor_label, text);
+    }
 }
 
 namespace {

@@ -182,6 +182,26 @@ TEST(Robustness, AllPointsInvalid) {
     EXPECT_EQ(result.terrain.seed_node, -1);
 }
 
+// A frame without a valid point (empty, or every point NaN) is no error whatever the ring
+// source, an explicit field or scan order included (they threw "no ring field" / "no point has
+// an azimuth" there, stopping an app at a sensor dropout).
+TEST(Robustness, NoValidPointUnderEveryRingSource) {
+    PointCloud empty, all_nan;
+    for (int k = 0; k < 50; ++k) all_nan.push_back(kNaN, 0.f, -1.f);
+    all_nan.ring.assign(all_nan.size(), 3);
+    for (const char* source : {"auto", "field", "scan_order", "table"}) {
+        Params params = testParams();
+        params.ring_source = source;
+        for (const PointCloud* cloud : {&empty, &all_nan}) {
+            Result result;
+            ASSERT_NO_THROW(Pipeline(params).process(*cloud, {}, result)) << source;
+            expectConsistent(*cloud, result);
+            EXPECT_EQ(result.count(PointClass::Invalid), cloud->size()) << source;
+            EXPECT_TRUE(result.clusters.empty()) << source;
+        }
+    }
+}
+
 TEST(Robustness, FivePercentNaNChangesNoOtherLabel) {
     const sim::Scan scan = urbanScan();
     const Result clean = run(scan.cloud);
@@ -373,6 +393,20 @@ TEST(Robustness, UnsortedAndNaNTimesWithDeskew) {
     const Result d = run(absolute, testParams(), input);
     expectConsistent(absolute, d);
     EXPECT_EQ(d.count(PointClass::Invalid), absolute.size());
+
+    // A point moved inside min_range (onto the origin here) has left the range window too.
+    PointCloud two;
+    two.push_back(10.f, 0.f, -1.73f), two.push_back(10.f, 5.f, -1.73f);
+    two.time = {0.05f, 0.f};
+    FrameInput fast;
+    fast.linear_velocity = Eigen::Vector3d(-200.0, 0.0, 34.6);  // 10 m, 1.73 m in 0.05 s
+    fast.angular_velocity = Eigen::Vector3d::Zero();
+    const Params params = testParams();
+    ASSERT_GT(params.min_range, 1.0);
+    const Result e = run(two, params, fast);
+    expectConsistent(two, e);
+    EXPECT_EQ(e.labels[0], PointClass::Invalid);
+    EXPECT_NE(e.labels[1], PointClass::Invalid);
 }
 
 // ---- Parameters ----
@@ -403,6 +437,8 @@ TEST(Robustness, ParamsValidateRejectsOutOfRangeNamingTheKey) {
         {"sensor_height", [](Params& p) { p.sensor_height = std::nan(""); }},
         {"max_range", [](Params& p) { p.max_range = std::numeric_limits<double>::infinity(); }},
         {"ground_dist", [](Params& p) { p.ground_dist = -0.1; }},
+        // Above 64 the node fitting's LPR used 64 points whatever the value said.
+        {"lpr_num_points", [](Params& p) { p.lpr_num_points = 65; }},
     };
     for (const Case& c : cases) {
         Params params;
@@ -467,6 +503,24 @@ TEST(Robustness, HugeGridIsAConfigErrorNotAnAllocation) {
     EXPECT_TRUE(mentions(configErrorOf([&] { edge.validate(); }), "max_grid_cells_per_side"));
     std::printf("[ info ] peak RSS %.0f MB before, %.0f MB after the rejected grids\n", rss_before,
                 peakRssMb());
+}
+
+// Rings and columns each within their ranges can still ask for a 67-million-cell range image
+// (9 GB of buffers mapped by the constructor): a configuration error naming both keys.
+TEST(Robustness, HugeRangeImageIsAConfigErrorNotAnAllocation) {
+    Params params;
+    params.num_rings = 1024;
+    params.num_columns = 65536;
+    const std::string message = configErrorOf([&] { Pipeline pipeline(params); });
+    EXPECT_TRUE(mentions(message, "range image too large")) << message;
+    EXPECT_TRUE(mentions(message, "num_columns")) << message;
+    // The 128-beam table with 16384 columns is exactly at the limit; the presets are far below.
+    params.num_rings = 64;
+    params.elevation_table = "os128";
+    params.num_columns = 16384;
+    EXPECT_NO_THROW(params.validate());
+    params.num_columns = 16385;
+    EXPECT_TRUE(mentions(configErrorOf([&] { params.validate(); }), "range image too large"));
 }
 
 // ---- Resource limits ----

@@ -223,7 +223,9 @@ std::string format(const std::string& value) {
     const bool bare = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
     });
-    if (bare && !std::isdigit(static_cast<unsigned char>(value[0])) && value[0] != '-' &&
+    // Bare null / Null / NULL would read back as YAML's null, not as the text.
+    const bool null = value == "null" || value == "Null" || value == "NULL";
+    if (bare && !null && !std::isdigit(static_cast<unsigned char>(value[0])) && value[0] != '-' &&
         value[0] != '.') {
         return value;
     }

@@ -213,7 +213,7 @@ TRAVEL_INTO_CALLER float lowestMean(const float* z, uint32_t count) {
 
 // Mean of the k lowest values (LPR), k small.
 TRAVEL_INTO_CALLER float lowestPointRepresentative(const float* z, uint32_t count, int k) {
-    constexpr int kMax = 64;
+    constexpr int kMax = 64;  // lpr_num_points' upper bound (Params.hpp): the array below
     k = std::min({k, static_cast<int>(count), kMax});
     switch (k) {  // the usual lpr_num_points; the same values and sum as the loop below
         case 3:

@@ -1,6 +1,7 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/Params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <locale>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "travel/Config.hpp"
 #include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
+#include "travel/RangeImage.hpp"
 
 namespace travel {
 
@@ -59,6 +61,18 @@ void Params::validate() const {
         throw ConfigError(
             "min_cluster_size = " + formatForMessage(min_cluster_size) +
             " must not exceed max_cluster_size = " + formatForMessage(max_cluster_size));
+    }
+
+    // The range image's cell counters are cleared every frame, and the point buffers are sized
+    // for beams x num_columns points when a pipeline is built: bounded like the grid (the
+    // largest spinning LiDARs have 128 x 2048 = 262,144 cells).
+    const double beams = std::max<double>(num_rings, elevationTableDeg(*this).size());
+    if (beams * num_columns > kMaxRangeImageCells) {
+        throw ConfigError("range image too large: " + formatForMessage(beams) + " beams x " +
+                          formatForMessage(num_columns) +
+                          " num_columns = " + formatForMessage(beams * num_columns) +
+                          " cells, more than " + formatForMessage(kMaxRangeImageCells) +
+                          "; reduce num_columns (or num_rings)");
     }
 
     // The grid covers [-max_range, max_range] in x and y; a partial cell still costs a cell.

@@ -127,7 +127,14 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
     const Eigen::Matrix3d R_mount = mountRotation(params);
     Eigen::Matrix3d R_level = Eigen::Matrix3d::Identity();
     if (params.align_attitude) {
-        if (input.vehicle_attitude) {
+        // As a bad gravity vector below, an attitude that is no rotation (NaN, zero, a
+        // reflection) is not used: it would move every point, or all of them to the origin.
+        const auto isRotation = [](const Eigen::Matrix3d& R) {
+            return R.allFinite() &&
+                   (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-3 &&
+                   R.determinant() > 0;
+        };
+        if (input.vehicle_attitude && isRotation(*input.vehicle_attitude)) {
             R_level = withoutYaw(*input.vehicle_attitude);
         } else if (input.gravity_in_sensor && input.gravity_in_sensor->norm() > 0 &&
                    input.gravity_in_sensor->allFinite()) {
@@ -237,9 +244,10 @@ void preprocess(const PointCloud& cloud, const Params& params, const FrameInput&
         }
         if (deskew) {
             // A bad time (e.g. absolute instead of relative) can move a point anywhere: the
-            // moved point must still be inside the range window, else it is invalid.
+            // moved point must still be inside the range window [min_range, max_range] (and
+            // off the origin), else it is invalid.
             const float m2 = out.x[i] * out.x[i] + out.y[i] * out.y[i] + out.z[i] * out.z[i];
-            if (!(std::isfinite(m2) && m2 <= max_r2)) {
+            if (!(std::isfinite(m2) && m2 > 0.f && m2 >= min_r2 && m2 <= max_r2)) {
                 out.valid[i] = 0, --num_valid;
                 out.x[i] = out.y[i] = out.z[i] = 0.f;
             }

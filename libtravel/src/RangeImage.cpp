@@ -764,6 +764,13 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     }
     const int first_col = first_valid < n ? col_[first_valid] : -1;
 
+    // A frame without a valid point (empty, or a sensor dropout) has no row to find: a source
+    // given explicitly cannot be contradicted by it, so it is kept, not an error.
+    if (first_valid == n && !is_auto && (source == "field" || source == "scan_order")) {
+        source_ = source == "field" ? RingSource::Field : RingSource::ScanOrder;
+        rows_ = params.num_rings;
+        return;
+    }
     RowAssigner rows(cloud, valid, params, row_);
     std::string why;
     if (is_auto || source == "field") {

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 #include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
@@ -131,7 +132,13 @@ class Applier {
     void applyYaml(const std::string& text) {
         YAML::Node root;
         try {
-            root = YAML::Load(text);
+            // One document: a second one ('---') would be ignored by YAML::Load, keys and all.
+            const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+            for (std::size_t d = 1; d < documents.size(); ++d)
+                if (!documents[d].IsNull())
+                    fail(locationOf(documents[d].Mark()),
+                         "a second YAML document ('---'): a configuration is one document");
+            if (!documents.empty()) root = documents.front();
         } catch (const YAML::Exception& e) {
             failSyntax(text, locationOf(e.mark), e.msg);
         }

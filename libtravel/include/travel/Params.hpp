@@ -76,7 +76,7 @@ struct AutoReal {
       "Safety limit on 2 R / r; a larger grid is a configuration error, never an allocation. "    \
       "512 cells per side is about 207 MB (1 km at r = 4 m fits)")                                \
     /* ---- Node-wise terrain model (Sec. III-B) ---- */                                          \
-    X(int, lpr_num_points, 5, "", 1, 1000,                                                        \
+    X(int, lpr_num_points, 5, "", 1, 64,                                                          \
       "Number of lowest points whose mean z is the node's lowest point representative (LPR)")     \
     X(double, seed_margin_above_lpr, 0.2, "m", 0.0, 10.0,                                         \
       "Initial plane seeds: z < LPR + this (reference 0.5; 0.2 keeps the foot of steep slopes "   \
@@ -172,7 +172,8 @@ struct AutoReal {
       "Beam elevations used when rings come from the table: a sensor's (non-uniform for the "     \
       "HDL-64E) or num_rings uniform bins in [min_elevation_deg, max_elevation_deg]")             \
     X(int, num_rings, 64, "", 1, 1024, "Rows of the range image (laser rings)")                   \
-    X(int, num_columns, 2048, "", 16, 65536, "Columns of the range image (azimuth bins)")         \
+    X(int, num_columns, 2048, "", 16, 65536,                                                      \
+      "Columns of the range image (azimuth bins); beams x num_columns at most 2,097,152")         \
     X(int, scan_points, 0, "points", 0, 16777216,                                                 \
       "Points per scan the buffers are sized for when the pipeline is built (their pages are "    \
       "mapped then, not on the first frame); 0 = beams x num_columns. A larger scan still "       \
@@ -235,8 +236,12 @@ struct Params {
 #undef TRAVEL_DECLARE_PARAM
 
     /// Throws ConfigError naming the first parameter out of its documented range or
-    /// inconsistent with another one (e.g. min_range >= max_range).
+    /// inconsistent with another one (e.g. min_range >= max_range, or a range image of more
+    /// than kMaxRangeImageCells beams x num_columns cells).
     void validate() const;
+
+    /// The largest range image (beams x num_columns cells) accepted: 1024 x 2048, 128 x 16384.
+    static constexpr double kMaxRangeImageCells = 2097152;
 };
 
 /// Visit every parameter: v(name, value_ref, unit, min, max, description).

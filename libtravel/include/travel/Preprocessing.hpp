@@ -19,10 +19,11 @@ namespace travel {
 /// Per-frame information the caller may know about the platform. Everything is optional.
 struct FrameInput {
     /// Vehicle attitude: rotation from the vehicle frame to a gravity-aligned frame (only roll
-    /// and pitch matter; yaw is removed). Typically from an IMU or the robot pose.
+    /// and pitch matter; yaw is removed). Typically from an IMU or the robot pose. Not used
+    /// unless it is a rotation (finite, orthonormal within 1e-3, determinant > 0).
     std::optional<Eigen::Matrix3d> vehicle_attitude;
     /// Alternative to vehicle_attitude: the gravity direction measured in the sensor frame
-    /// (e.g. an accelerometer at rest reads -gravity). Any length > 0.
+    /// (e.g. an accelerometer at rest reads -gravity). Any finite length > 0; else not used.
     std::optional<Eigen::Vector3d> gravity_in_sensor;
     /// Constant velocity of the sensor during the sweep, in the sensor frame at the reference
     /// time: linear [m/s] and angular [rad/s]. Used with per-point times for deskew.
