@@ -75,13 +75,13 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     double read_ms = 0;  // reading since the last mapped frame
     Clock::time_point last_fused = Clock::now();
     // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
-    // the robot pose, anything else is a LiDAR candidate.
+    // the robot pose, LiDAR observations are mapped, anything else (cameras, TRAVEL's own outputs
+    // of a travel-rawlog run) is no LiDAR frame.
     const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
-        if (!obs || motion.process(*obs)) return;
+        if (!obs || motion.process(*obs) || !travel_mrpt::isLidarObservation(*obs)) return;
         // An untimed (KITTI) pose file is indexed by LiDAR frame: count every LiDAR observation,
         // also those without a pose or rejected, so one bad frame does not shift the rest.
-        const std::size_t frame = lidar_seen;
-        if (travel_mrpt::isLidarObservation(*obs)) ++lidar_seen;
+        const std::size_t frame = lidar_seen++;
         const std::optional<CPose3D> pose =
             pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), frame)
                       : motion.robotPose();

@@ -13,6 +13,8 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include "travel_mrpt/LabelledOutputs.hpp"
+
 namespace travel_mrpt {
 namespace {
 
@@ -33,10 +35,11 @@ void assignXYZ(const Vec& xs, const Vec& ys, const Vec& zs, travel::PointCloud& 
 
 bool isLidarObservation(const mrpt::obs::CObservation& obs) {
     using namespace mrpt::obs;
-    return dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
-           dynamic_cast<const CObservationRotatingScan*>(&obs) ||
-           dynamic_cast<const CObservationPointCloud*>(&obs) ||
-           dynamic_cast<const CObservation3DRangeScan*>(&obs);
+    return (dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
+            dynamic_cast<const CObservationRotatingScan*>(&obs) ||
+            dynamic_cast<const CObservationPointCloud*>(&obs) ||
+            dynamic_cast<const CObservation3DRangeScan*>(&obs)) &&
+           !isTravelOutput(obs);
 }
 
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,

@@ -15,6 +15,7 @@
 #include "travel/Preprocessing.hpp"
 #include "travel/tracking/FrameTracker.hpp"
 #include "travel_mrpt/Attitude.hpp"
+#include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
 namespace travel_mrpt {
@@ -143,6 +144,10 @@ bool TravelFilter::prepare(const mrpt::obs::CObservation& obs, TravelFrame& out,
         if (why_not) *why_not = reason;
         return false;
     };
+    if (isTravelOutput(obs))
+        return fail("'" + obs.sensorLabel +
+                    "' is a TRAVEL output (labels or a per-class cloud of travel-rawlog), not a "
+                    "LiDAR frame");
     if (!isLidarObservation(obs))
         return fail("'" + obs.sensorLabel + "' (" + obs.GetRuntimeClass()->className +
                     ") is not a 3-D LiDAR observation");
