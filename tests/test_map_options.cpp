@@ -12,9 +12,11 @@
 #include <fstream>
 
 #include <string>
+#include <utility>
 
 #include "map/MapTestScene.hpp"
 #include "travel/ConfigIO.hpp"
+#include "travel/ParamsIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
 namespace {
@@ -92,6 +94,42 @@ TEST(MapOptions, IniFileErrorsNameFileLineAndSection) {
     EXPECT_NE(message.find(path + ":5:3: section [m]: unknown key 'ray_strid'"), std::string::npos)
         << message;
     EXPECT_NE(message.find("did you mean 'ray_stride'"), std::string::npos) << message;
+}
+
+// A preset in the insertion section is the base of the creation section's keys too: they keep
+// their values (they were reset to the preset's when each section applied its own preset).
+TEST(MapOptions, PresetInEitherMapSectionIsTheBaseOfBoth) {
+    const travel::Params vlp16 = travel::loadPreset("vlp16");
+    ASSERT_NE(vlp16.max_range, travel::Params().max_range) << "a preset value to see";
+    const auto create = [](const std::string& creation, const std::string& insertion) {
+        mrpt::config::CConfigFileMemory ini(
+            "[MAP]\ntraversabilityMap_count=1\n"
+            "[MAP_traversabilityMap_00_creationOpts]\n" +
+            creation + "[MAP_traversabilityMap_00_insertOpts]\n" + insertion);
+        mrpt::maps::TSetOfMetricMapInitializers initializers;
+        initializers.loadFromConfigFile(ini, "MAP");
+        mrpt::maps::CMultiMetricMap maps(initializers);
+        return maps.mapByClass<travel_mrpt::CTraversabilityMap>()->options().travel.params;
+    };
+    for (const auto& [creation, insertion] :
+         {std::pair<std::string, std::string>{"sensor_height=1.8\nmax_slope_deg=33\n",
+                                              "preset=vlp16\n"},
+          {"preset=vlp16\nsensor_height=1.8\n", "max_slope_deg=33\n"}}) {
+        const travel::Params p = create(creation, insertion);
+        EXPECT_EQ(p.sensor_height, 1.8) << creation << insertion;
+        EXPECT_EQ(p.max_slope_deg, 33.0) << creation << insertion;
+        EXPECT_EQ(p.max_range, vlp16.max_range) << creation << insertion;
+    }
+    // Two presets: which one is the base would be a guess.
+    try {
+        create("preset=vlp16\n", "preset=hdl32\n");
+        FAIL() << "no error for two presets";
+    } catch (const std::exception& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("a second preset"), std::string::npos) << message;
+        EXPECT_NE(message.find("_creationOpts"), std::string::npos) << message;
+        EXPECT_NE(message.find("_insertOpts"), std::string::npos) << message;
+    }
 }
 
 TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {

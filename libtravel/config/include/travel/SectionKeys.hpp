@@ -36,11 +36,18 @@ inline std::string keyLocation(const std::vector<IniEntry>& lines, const std::st
 }
 
 /// `preset` first (replacing `params`), then every other key through travel::assignFlatKey on
-/// `sections...`; errors name where the key was written.
+/// `sections...`; errors name where the key was written. `keys` may come from several sections
+/// read as one (a CMultiMetricMap's creation and insertion sections): the preset is the base of
+/// them all, and a second `preset` is an error naming both places.
 template <class... Sections>
 void applySectionKeys(const std::vector<SectionKey>& keys, Params& params, Sections&... sections) {
+    const SectionKey* preset = nullptr;
     for (const auto& k : keys) {
         if (k.key != "preset") continue;
+        if (preset)
+            throw ConfigError(k.where + "a second preset (the first: " + preset->where +
+                              "preset=" + preset->value + "): give one, keys set the rest");
+        preset = &k;
         try {
             params = loadPreset(k.value);
         } catch (const std::exception& e) {
