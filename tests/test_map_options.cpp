@@ -132,6 +132,20 @@ TEST(MapOptions, PresetInEitherMapSectionIsTheBaseOfBoth) {
     }
 }
 
+// Quotes around a value are removed as in every other config file (the regex matched no label
+// with them kept).
+TEST(MapOptions, QuotedValuesAreReadWithoutTheQuotes) {
+    for (const char* written : {"\"Velodyne.*\"", "'Velodyne.*'", "\"Velodyne.*\"  # a regex"}) {
+        mrpt::config::CConfigFileMemory ini(std::string("[m]\nsensor_label=") + written + "\n");
+        TraversabilityMapOptions o;
+        o.loadFromConfigFile(ini, "m");
+        EXPECT_EQ(o.travel.sensor_label, "Velodyne.*") << written;
+    }
+    const std::string message = errorOf("[m]\nsensor_label=\"Velodyne.*\n", "m");
+    EXPECT_NE(message.find("sensor_label: unterminated quoted value"), std::string::npos)
+        << message;
+}
+
 TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {
     // A [map] section of the one configuration file gives the same options as the flat section.
     travel::Config config;

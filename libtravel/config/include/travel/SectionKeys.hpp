@@ -65,7 +65,7 @@ void applySectionKeys(const std::vector<SectionKey>& keys, Params& params, Secti
 }
 
 /// Calls write(name, text) for every key of `sections...`: the shortest exact text of its
-/// value, strings as they are (MRPT's ini reader keeps quotes).
+/// value, strings as they are.
 template <class Write, class... Sections>
 void forEachKeyText(Write&& write, const Sections&... sections) {
     (visitFields(sections,
