@@ -44,10 +44,11 @@ mrpt::obs::CObservationOdometry::Ptr odometry(double x) {
     return odo;
 }
 
-mrpt::obs::CActionCollection::Ptr moveBy(double dx) {
+mrpt::obs::CActionCollection::Ptr moveBy(double dx, mrpt::Clock::time_point t = INVALID_TIMESTAMP) {
     mrpt::obs::CActionRobotMovement2D move;
     move.computeFromOdometry(mrpt::poses::CPose2D(dx, 0, 0),
                              mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    move.timestamp = t;
     auto actions = mrpt::obs::CActionCollection::Create();
     actions->insert(move);
     return actions;
@@ -189,6 +190,29 @@ TEST(RawlogMotion, PoseFromActionsElseOdometry) {
     EXPECT_TRUE(motion.process(*moveBy(0.25)));
     EXPECT_EQ(motion.actions(), 2u);
     EXPECT_NEAR(motion.robotPose()->x(), 0.75, 1e-6);
+}
+
+// SensoryFrame rawlogs: timed odometry actions (increments without velocities, as most
+// odometry gives) are a velocity source by pose differences, as CObservationOdometry records.
+TEST(RawlogMotion, TimedActionsGiveVelocityByPoseDifferences) {
+    TravelFilterOptions o;
+    o.velocity_source = VelocitySource::Poses;
+    TravelFilter filter(o);
+    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    RawlogMotion motion(filter);
+    EXPECT_TRUE(motion.process(*moveBy(0.0, mrpt::Clock::fromDouble(10.0))));
+    EXPECT_TRUE(motion.process(*moveBy(1.0, mrpt::Clock::fromDouble(10.1))));
+    const auto m = filter.motionAt(mrpt::Clock::fromDouble(10.1));
+    ASSERT_TRUE(m.linear_velocity);
+    EXPECT_TRUE(m.linear_velocity->isApprox(Eigen::Vector3d(10, 0, 0), 1e-6))
+        << m.linear_velocity->transpose();
+    // Untimed actions still give the pose, never a velocity.
+    TravelFilter untimed_filter(o);
+    RawlogMotion untimed(untimed_filter);
+    untimed.process(*moveBy(0.0));
+    untimed.process(*moveBy(1.0));
+    EXPECT_NEAR(untimed.robotPose()->x(), 1.0, 1e-6);
+    EXPECT_FALSE(untimed_filter.motionAt(mrpt::Clock::fromDouble(10.1)).linear_velocity);
 }
 
 }  // namespace
