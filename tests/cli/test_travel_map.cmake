@@ -69,6 +69,17 @@ if(pos EQUAL -1)
   message(FATAL_ERROR "travel-rawlog output: TRAVEL's clouds mapped as LiDAR frames:\n${last_output}")
 endif()
 
+# A LiDAR frame that is not mapped says why, naming the record, once per reason (10 frames here,
+# all of another sensor).
+execute_process(COMMAND ${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street_nope
+  -p vlp16 --set sensor_label=NOPE RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX MATCHALL "street.rawlog: record [0-9]+: not mapped: sensor label 'VLP16' does not match"
+  notes "${out}${err}")
+list(LENGTH notes count)
+if(rc EQUAL 0 OR NOT count EQUAL 1)
+  message(FATAL_ERROR "rejected frames: ${count} notes (want 1), exit ${rc}:\n${out}${err}")
+endif()
+
 # The same rawlog with a TUM pose file (robot standing still at x = 1): used instead.
 file(WRITE ${WORK_DIR}/tum.txt
   "# t x y z qx qy qz qw\n999999999.5 1 0 0 0 0 0 1\n1000000000.5 1 0 0 0 0 0 1\n1000000001.5 1 0 0 0 0 0 1\n")
