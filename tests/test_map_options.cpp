@@ -62,7 +62,7 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
 TEST(MapOptions, BadKeysAreRejectedWithTheirName) {
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("unknown key 'resolutoin'"),
               std::string::npos);
-    EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("[m]"), std::string::npos);
+    EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("section 'm': "), std::string::npos);
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("did you mean 'resolution'"),
               std::string::npos);
     // The map's slope limit has its own name: the old one is libtravel's.
@@ -91,7 +91,7 @@ TEST(MapOptions, IniFileErrorsNameFileLineAndSection) {
         message = e.what();
     }
     std::remove(path.c_str());
-    EXPECT_NE(message.find(path + ":5:3: section [m]: unknown key 'ray_strid'"), std::string::npos)
+    EXPECT_NE(message.find(path + ":5:3: section 'm': unknown key 'ray_strid'"), std::string::npos)
         << message;
     EXPECT_NE(message.find("did you mean 'ray_stride'"), std::string::npos) << message;
 }
@@ -143,6 +143,27 @@ TEST(MapOptions, QuotedValuesAreReadWithoutTheQuotes) {
     }
     const std::string message = errorOf("[m]\nsensor_label=\"Velodyne.*\n", "m");
     EXPECT_NE(message.find("sensor_label: unterminated quoted value"), std::string::npos)
+        << message;
+}
+
+// Through CMultiMetricMap, MRPT's exception wrapper reads "...[x]..." as "file: [function]
+// message": the message must keep its file, line, section and key whole.
+TEST(MapOptions, ErrorsThroughCMultiMetricMapStayWhole) {
+    const std::string path = mrpt::system::getTempFileName() + "_map_errors.ini";
+    std::ofstream(path) << "[MAP]\ntraversabilityMap_count=1\n"
+                           "[MAP_traversabilityMap_00_creationOpts]\nresolutoin=0.2\n";
+    std::string message;
+    try {
+        mrpt::maps::TSetOfMetricMapInitializers initializers;
+        initializers.loadFromConfigFile(mrpt::config::CConfigFile(path), "MAP");
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    std::remove(path.c_str());
+    EXPECT_NE(
+        message.find(path + ":4:1: section 'MAP_traversabilityMap_00_creationOpts': unknown key "
+                            "'resolutoin'"),
+        std::string::npos)
         << message;
 }
 

@@ -20,7 +20,7 @@ void TraversabilityMapOptions::loadFromConfigSections(const mrpt::config::CConfi
     for (const std::string& section : sections) {
         const auto section_keys = config_text::readSection(source, section);
         keys.insert(keys.end(), section_keys.begin(), section_keys.end());
-        names += (names.empty() ? "" : " + ") + ("[" + section + "]");
+        names += (names.empty() ? "'" : " + '") + section + "'";  // no brackets: keyLocation
     }
     travel::applySectionKeys(keys, result.travel.params, result.map(),
                              static_cast<travel::FilterSection&>(result.travel),

@@ -18,8 +18,10 @@
 namespace travel {
 
 struct SectionKey {
-    /// `where` prefixes error messages: "<file>:<line>:<col>: section [<name>]: " when the
-    /// position is known, "section [<name>]: " otherwise.
+    /// `where` prefixes error messages: "<file>:<line>:<col>: section '<name>': " when the
+    /// position is known, "section '<name>': " otherwise, as travel's own config messages. No
+    /// brackets: MRPT's exception wrapper (errors raised through CMultiMetricMap) reads
+    /// "...[x]" as "file: [function]" and cuts the message there.
     std::string key, value, where;
 };
 
@@ -27,7 +29,7 @@ struct SectionKey {
 /// text was not read from a file).
 inline std::string keyLocation(const std::vector<IniEntry>& lines, const std::string& file,
                                const std::string& section, const std::string& key) {
-    std::string where = "section [" + section + "]: ";
+    std::string where = "section '" + section + "': ";
     for (const auto& e : lines)
         if (e.section == section && e.key == key)
             where =
