@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 #include <mutex>
+#include <set>
 
 #include "Interrupt.hpp"
 #include "OrderedWork.hpp"
@@ -61,6 +62,21 @@ void reportMount(const Options& o, const travel_mrpt::TravelFrame& frame, Progre
     if (note && o.verbosity != Verbosity::Quiet)
         progress.note(mountNoteLine("travel-map", "", note));
 }
+
+// Why a LiDAR frame was not mapped (map.lastRejection()), once per distinct reason, at the
+// first frame it happens to (`where`: the rawlog record or the scan file).
+class RejectionNotes {
+  public:
+    void note(const Options& o, const std::string& where, const std::string& reason,
+              ProgressLine& progress) {
+        if (o.verbosity == Verbosity::Quiet || !seen_.insert(reason).second) return;
+        progress.note("travel-map: note: " + where + ": not mapped: " + reason +
+                      " (not repeated for other frames)");
+    }
+
+  private:
+    std::set<std::string> seen_;
+};
 }  // namespace
 
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
@@ -71,17 +87,19 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     travel_mrpt::RawlogMotion motion(map.filter());
     ProgressLine progress("travel-map", 0, o.verbosity);
     bool warned_no_pose = false;
+    RejectionNotes rejections;
+    long record = -1;  // the index of the record being read
     std::size_t lidar_seen = 0;
     double read_ms = 0;  // reading since the last mapped frame
     Clock::time_point last_fused = Clock::now();
     // One observation, at top level or inside a SensoryFrame: motion records feed the filter and
-    // the robot pose, anything else is a LiDAR candidate.
+    // the robot pose, LiDAR observations are mapped, anything else (cameras, TRAVEL's own outputs
+    // of a travel-rawlog run) is no LiDAR frame.
     const auto observation = [&](const mrpt::obs::CObservation::Ptr& obs) {
-        if (!obs || motion.process(*obs)) return;
+        if (!obs || motion.process(*obs) || !travel_mrpt::isLidarObservation(*obs)) return;
         // An untimed (KITTI) pose file is indexed by LiDAR frame: count every LiDAR observation,
         // also those without a pose or rejected, so one bad frame does not shift the rest.
-        const std::size_t frame = lidar_seen;
-        if (travel_mrpt::isLidarObservation(*obs)) ++lidar_seen;
+        const std::size_t frame = lidar_seen++;
         const std::optional<CPose3D> pose =
             pose_file ? pose_file->at(mrpt::Clock::toDouble(obs->timestamp), frame)
                       : motion.robotPose();
@@ -105,20 +123,23 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             ++stats.lidar;
         } else {
             ++stats.rejected;
+            rejections.note(o, o.input + ": record " + std::to_string(record), map.lastRejection(),
+                            progress);
         }
     };
     while (!(o.max_frames > 0 && long(stats.inserted) >= o.max_frames)) {
         const auto read_start = Clock::now();
-        const auto record = reader.next();
+        const auto object = reader.next();
         read_ms += msSince(read_start);
-        if (!record) break;
+        if (!object) break;
+        record = reader.index() - 1;
         ++stats.records;
-        if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(record))
+        if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object))
             for (const auto& obs : *sf) observation(obs);
-        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(record))
+        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object))
             observation(obs);
         else
-            motion.process(*record);  // odometry actions
+            motion.process(*object);  // odometry actions
         // With --max-frames, the end may come before the end of the file.
         const double frames = o.max_frames > 0 ? double(stats.inserted) / double(o.max_frames) : 0;
         progress.update(stats.inserted, std::max(reader.fractionRead(), frames));
@@ -170,6 +191,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
         travel::RayEnds rays;            // filled by fuseGrid, for fuseVoxels
         std::optional<CPose3D> pose;
         enum class State { Skipped, NoPose, Rejected, Fused } state = State::Skipped;
+        std::string rejection;  // map.lastRejection() of a Rejected scan
         FrameTimes times;
         double produce_cpu_ms = 0;
     };
@@ -179,6 +201,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
     // Frames fused into the grid: with --max-frames the producing side decides where to stop
     // (it is ahead of the OctoMap). Guarded by the turns.
     long fused = 0;
+    RejectionNotes rejections;
     const auto produce = [&](unsigned, std::size_t k, Scan& scan) {
         {
             std::unique_lock<std::mutex> lock(turn_mutex);
@@ -221,6 +244,8 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
             scan.times.map.grid_ms = map.fuseGrid(scan.frame, pose, scan.rays);
             scan.state = State::Fused;
             ++fused;
+        } else {
+            scan.rejection = map.lastRejection();  // the next scan's segment() replaces it
         }
         scan.produce_cpu_ms = threadCpuMs() - cpu_start;
     };
@@ -244,8 +269,10 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
             scan.times.cpu_ms[1] = threadCpuMs() - cpu_start;
             stats.times.push_back(scan.times);
             ++stats.inserted;
-        } else
+        } else {
             ++stats.rejected;
+            rejections.note(o, files[k], scan.rejection, progress);
+        }
         progress.update(k + 1);
         throwIfInterrupted();  // nothing is written before the map is complete
     };

@@ -34,6 +34,7 @@ if(TARGET travel-map)
   add_test(NAME apps.travel_map_cli
     COMMAND ${CMAKE_COMMAND}
       -DTRAVEL_MAP=$<TARGET_FILE:travel-map>
+      -DTRAVEL_RAWLOG=$<TARGET_FILE:travel-rawlog>
       -DMAKE_SYNTHETIC=$<TARGET_FILE:make_synthetic_rawlog>
       -DSAMPLE=/usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog
       -DCONFIG=${PROJECT_SOURCE_DIR}/share/configs/mrpt_sample_vlp16.yaml

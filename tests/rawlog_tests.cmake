@@ -43,7 +43,8 @@ set_tests_properties(apps.travel_rawlog_mount_auto PROPERTIES TIMEOUT 120)
 
 # The one rawlog reader of travel-rawlog and travel-map: records, exact error messages, motion.
 travel_mrpt_test(test_rawlog_reader test_rawlog_reader.cpp)
-target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::io mrpt::serialization)
+target_link_libraries(test_rawlog_reader PRIVATE mrpt::obs mrpt::maps mrpt::img mrpt::io
+  mrpt::serialization)
 
 # Velodyne .pcap captures (MRPT's CVelodyneScanner) when mrpt-hwdrivers is installed.
 if(TARGET travel_mrpt_hwdrivers)

@@ -12,9 +12,11 @@
 #include <fstream>
 
 #include <string>
+#include <utility>
 
 #include "map/MapTestScene.hpp"
 #include "travel/ConfigIO.hpp"
+#include "travel/ParamsIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 
 namespace {
@@ -60,7 +62,7 @@ TEST(MapOptions, KeysOfMapFilterAndLibtravelAreRead) {
 TEST(MapOptions, BadKeysAreRejectedWithTheirName) {
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("unknown key 'resolutoin'"),
               std::string::npos);
-    EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("[m]"), std::string::npos);
+    EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("section 'm': "), std::string::npos);
     EXPECT_NE(errorOf("[m]\nresolutoin=0.5\n", "m").find("did you mean 'resolution'"),
               std::string::npos);
     // The map's slope limit has its own name: the old one is libtravel's.
@@ -89,9 +91,80 @@ TEST(MapOptions, IniFileErrorsNameFileLineAndSection) {
         message = e.what();
     }
     std::remove(path.c_str());
-    EXPECT_NE(message.find(path + ":5:3: section [m]: unknown key 'ray_strid'"), std::string::npos)
+    EXPECT_NE(message.find(path + ":5:3: section 'm': unknown key 'ray_strid'"), std::string::npos)
         << message;
     EXPECT_NE(message.find("did you mean 'ray_stride'"), std::string::npos) << message;
+}
+
+// A preset in the insertion section is the base of the creation section's keys too: they keep
+// their values (they were reset to the preset's when each section applied its own preset).
+TEST(MapOptions, PresetInEitherMapSectionIsTheBaseOfBoth) {
+    const travel::Params vlp16 = travel::loadPreset("vlp16");
+    ASSERT_NE(vlp16.max_range, travel::Params().max_range) << "a preset value to see";
+    const auto create = [](const std::string& creation, const std::string& insertion) {
+        mrpt::config::CConfigFileMemory ini(
+            "[MAP]\ntraversabilityMap_count=1\n"
+            "[MAP_traversabilityMap_00_creationOpts]\n" +
+            creation + "[MAP_traversabilityMap_00_insertOpts]\n" + insertion);
+        mrpt::maps::TSetOfMetricMapInitializers initializers;
+        initializers.loadFromConfigFile(ini, "MAP");
+        mrpt::maps::CMultiMetricMap maps(initializers);
+        return maps.mapByClass<travel_mrpt::CTraversabilityMap>()->options().travel.params;
+    };
+    for (const auto& [creation, insertion] :
+         {std::pair<std::string, std::string>{"sensor_height=1.8\nmax_slope_deg=33\n",
+                                              "preset=vlp16\n"},
+          {"preset=vlp16\nsensor_height=1.8\n", "max_slope_deg=33\n"}}) {
+        const travel::Params p = create(creation, insertion);
+        EXPECT_EQ(p.sensor_height, 1.8) << creation << insertion;
+        EXPECT_EQ(p.max_slope_deg, 33.0) << creation << insertion;
+        EXPECT_EQ(p.max_range, vlp16.max_range) << creation << insertion;
+    }
+    // Two presets: which one is the base would be a guess.
+    try {
+        create("preset=vlp16\n", "preset=hdl32\n");
+        FAIL() << "no error for two presets";
+    } catch (const std::exception& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("a second preset"), std::string::npos) << message;
+        EXPECT_NE(message.find("_creationOpts"), std::string::npos) << message;
+        EXPECT_NE(message.find("_insertOpts"), std::string::npos) << message;
+    }
+}
+
+// Quotes around a value are removed as in every other config file (the regex matched no label
+// with them kept).
+TEST(MapOptions, QuotedValuesAreReadWithoutTheQuotes) {
+    for (const char* written : {"\"Velodyne.*\"", "'Velodyne.*'", "\"Velodyne.*\"  # a regex"}) {
+        mrpt::config::CConfigFileMemory ini(std::string("[m]\nsensor_label=") + written + "\n");
+        TraversabilityMapOptions o;
+        o.loadFromConfigFile(ini, "m");
+        EXPECT_EQ(o.travel.sensor_label, "Velodyne.*") << written;
+    }
+    const std::string message = errorOf("[m]\nsensor_label=\"Velodyne.*\n", "m");
+    EXPECT_NE(message.find("sensor_label: unterminated quoted value"), std::string::npos)
+        << message;
+}
+
+// Through CMultiMetricMap, MRPT's exception wrapper reads "...[x]..." as "file: [function]
+// message": the message must keep its file, line, section and key whole.
+TEST(MapOptions, ErrorsThroughCMultiMetricMapStayWhole) {
+    const std::string path = mrpt::system::getTempFileName() + "_map_errors.ini";
+    std::ofstream(path) << "[MAP]\ntraversabilityMap_count=1\n"
+                           "[MAP_traversabilityMap_00_creationOpts]\nresolutoin=0.2\n";
+    std::string message;
+    try {
+        mrpt::maps::TSetOfMetricMapInitializers initializers;
+        initializers.loadFromConfigFile(mrpt::config::CConfigFile(path), "MAP");
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    std::remove(path.c_str());
+    EXPECT_NE(
+        message.find(path + ":4:1: section 'MAP_traversabilityMap_00_creationOpts': unknown key "
+                            "'resolutoin'"),
+        std::string::npos)
+        << message;
 }
 
 TEST(MapOptions, SameKeysAsTheMapSectionOfAConfigFile) {

@@ -4,11 +4,14 @@
 // travel-map: records of both formats, the exact error messages (file, record, what), and the
 // robot pose from odometry actions and odometry observations.
 #include <gtest/gtest.h>
+#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <unistd.h>
@@ -19,6 +22,7 @@
 
 #include "travel/Errors.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
@@ -44,10 +48,11 @@ mrpt::obs::CObservationOdometry::Ptr odometry(double x) {
     return odo;
 }
 
-mrpt::obs::CActionCollection::Ptr moveBy(double dx) {
+mrpt::obs::CActionCollection::Ptr moveBy(double dx, mrpt::Clock::time_point t = INVALID_TIMESTAMP) {
     mrpt::obs::CActionRobotMovement2D move;
     move.computeFromOdometry(mrpt::poses::CPose2D(dx, 0, 0),
                              mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    move.timestamp = t;
     auto actions = mrpt::obs::CActionCollection::Create();
     actions->insert(move);
     return actions;
@@ -189,6 +194,66 @@ TEST(RawlogMotion, PoseFromActionsElseOdometry) {
     EXPECT_TRUE(motion.process(*moveBy(0.25)));
     EXPECT_EQ(motion.actions(), 2u);
     EXPECT_NEAR(motion.robotPose()->x(), 0.75, 1e-6);
+}
+
+// A point cloud stored outside the rawlog, in "<name>_Images/" (as MRPT's tools write it): read
+// from there whatever the working directory, and a missing file names itself and the folder.
+TEST(RawlogReader, ExternallyStoredCloudsAreReadFromTheImagesFolder) {
+    const std::string path = testPath("ext.rawlog");
+    const std::string images = testPath("ext_Images");
+    fs::create_directories(images);
+    {
+        mrpt::img::CImage::setImagesPathBase(images);
+        auto cloud = mrpt::obs::CObservationPointCloud::Create();
+        cloud->sensorLabel = "EXT";
+        cloud->pointcloud = mrpt::maps::CSimplePointsMap::Create();
+        for (int k = 0; k < 10; ++k) cloud->pointcloud->insertPoint(float(k), 1.f, -1.f);
+        cloud->setAsExternalStorage(
+            "cloud.bin",
+            mrpt::obs::CObservationPointCloud::ExternalStorageFormat::MRPT_Serialization);
+        cloud->unload();
+        mrpt::io::CFileGZOutputStream file(path);
+        mrpt::serialization::archiveFrom(file) << *cloud;
+    }
+    mrpt::img::CImage::setImagesPathBase("/nonexistent");  // what a fresh process has: "."
+    const auto read = [&](std::string& why) {
+        RawlogReader reader(path);
+        const auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(reader.next());
+        EXPECT_TRUE(obs);
+        travel::PointCloud points;
+        mrpt::poses::CPose3D sensor_pose;
+        return obs && toTravelCloud(*obs, points, sensor_pose, &why) ? points.size() : 0u;
+    };
+    std::string why;
+    EXPECT_EQ(read(why), 10u) << why;
+    fs::remove(fs::path(images) / "cloud.bin");
+    EXPECT_EQ(read(why), 0u);
+    EXPECT_NE(why.find("externally stored"), std::string::npos) << why;
+    EXPECT_NE(why.find("ext_Images"), std::string::npos) << why;
+    EXPECT_NE(why.find("cloud.bin"), std::string::npos) << why;
+}
+
+// SensoryFrame rawlogs: timed odometry actions (increments without velocities, as most
+// odometry gives) are a velocity source by pose differences, as CObservationOdometry records.
+TEST(RawlogMotion, TimedActionsGiveVelocityByPoseDifferences) {
+    TravelFilterOptions o;
+    o.velocity_source = VelocitySource::Poses;
+    TravelFilter filter(o);
+    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    RawlogMotion motion(filter);
+    EXPECT_TRUE(motion.process(*moveBy(0.0, mrpt::Clock::fromDouble(10.0))));
+    EXPECT_TRUE(motion.process(*moveBy(1.0, mrpt::Clock::fromDouble(10.1))));
+    const auto m = filter.motionAt(mrpt::Clock::fromDouble(10.1));
+    ASSERT_TRUE(m.linear_velocity);
+    EXPECT_TRUE(m.linear_velocity->isApprox(Eigen::Vector3d(10, 0, 0), 1e-6))
+        << m.linear_velocity->transpose();
+    // Untimed actions still give the pose, never a velocity.
+    TravelFilter untimed_filter(o);
+    RawlogMotion untimed(untimed_filter);
+    untimed.process(*moveBy(0.0));
+    untimed.process(*moveBy(1.0));
+    EXPECT_NEAR(untimed.robotPose()->x(), 1.0, 1e-6);
+    EXPECT_FALSE(untimed_filter.motionAt(mrpt::Clock::fromDouble(10.1)).linear_velocity);
 }
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/containers/yaml.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/obs/CRawlog.h>
@@ -189,7 +191,7 @@ TEST(TravelFilterOptions, RejectsUnknownKeysNamingKeyAndSection) {
         o.loadFromConfigFile(ini, "lidar_front");
     });
     EXPECT_NE(ini_error.find("sensor_hieght"), std::string::npos) << ini_error;
-    EXPECT_NE(ini_error.find("[lidar_front]"), std::string::npos) << ini_error;
+    EXPECT_NE(ini_error.find("section 'lidar_front': "), std::string::npos) << ini_error;
     EXPECT_THROW(fromYaml("sensor_hieght: 2.0\n"), travel::ConfigError);
     // A filter key at the root (travel's keys) is named with its section.
     const std::string misplaced = errorOf([] { fromYaml("velocity_source: imu\n"); });
@@ -454,6 +456,29 @@ TEST(TravelFilter, RefusesNonLidarAndEmptyObservations) {
     EXPECT_FALSE(filter.filter(*empty, frame, &why));
     EXPECT_NE(why.find("without any return"), std::string::npos) << why;
     EXPECT_FALSE(filter.filter(imu, frame));  // why_not is optional
+}
+
+// travel-rawlog writes per-class clouds beside its labels ("<label>_ground" ...): reading such a
+// rawlog back, they are no LiDAR frames (isLidarObservation, hence the filter and the map).
+TEST(TravelFilter, SkipsTravelOutputClouds) {
+    TravelFilter filter;
+    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    travel_mrpt::TravelFrame frame;
+    std::string why;
+    auto cloud = mrpt::obs::CObservationPointCloud::Create();
+    cloud->pointcloud = mrpt::maps::CSimplePointsMap::Create();
+    for (float x = -20.f; x <= 20.f; x += 0.5f)
+        for (float y = -20.f; y <= 20.f; y += 0.5f) cloud->pointcloud->insertPoint(x, y, -1.73f);
+    for (const char* label : {"velodyne_ground", "velodyne_nonground", "velodyne_outlier"}) {
+        cloud->sensorLabel = label;
+        EXPECT_FALSE(travel_mrpt::isLidarObservation(*cloud)) << label;
+        EXPECT_FALSE(filter.filter(*cloud, frame, &why)) << label;
+        EXPECT_NE(why.find("is a TRAVEL output"), std::string::npos) << why;
+        EXPECT_NE(why.find(label), std::string::npos) << why;
+    }
+    cloud->sensorLabel = "velodyne";  // the same points from a sensor
+    EXPECT_TRUE(travel_mrpt::isLidarObservation(*cloud));
+    EXPECT_TRUE(filter.filter(*cloud, frame, &why)) << why;
 }
 
 // ---------------------------------------------------------------- motion inputs

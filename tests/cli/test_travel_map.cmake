@@ -1,6 +1,6 @@
 # travel-map command-line test (cmake -P): good inputs write every export; bad inputs fail with
 # a message naming the file (and line) or key at fault.
-# -DTRAVEL_MAP -DMAKE_SYNTHETIC -DSAMPLE -DCONFIG -DDATA_DIR -DWORK_DIR
+# -DTRAVEL_MAP -DTRAVEL_RAWLOG -DMAKE_SYNTHETIC -DSAMPLE -DCONFIG -DDATA_DIR -DWORK_DIR
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -51,6 +51,34 @@ foreach(word "LiDAR frames mapped: 10" "poses: odometry actions of the SensoryFr
     message(FATAL_ERROR "SensoryFrame/actions summary lacks '${word}':\n${last_output}")
   endif()
 endforeach()
+
+# travel-rawlog's output of that drive (labels and per-class clouds beside each scan): the same
+# 10 LiDAR frames, also for a KITTI pose file, which is indexed by LiDAR frame.
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street_labelled.rawlog
+  -p vlp16 --set sensor_height=1.8 --set min_range=2)
+set(kitti_poses "")
+foreach(i RANGE 9)
+  string(APPEND kitti_poses "1 0 0 ${i} 0 1 0 0 0 0 1 0\n")
+endforeach()
+file(WRITE ${WORK_DIR}/street_kitti.txt "${kitti_poses}")
+expect_success(${TRAVEL_MAP} -i ${WORK_DIR}/street_labelled.rawlog -o ${WORK_DIR}/street_labelled
+  -p vlp16 --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20"
+  --poses ${WORK_DIR}/street_kitti.txt)
+string(FIND "${last_output}" "LiDAR frames mapped: 10, rejected: 0\n" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "travel-rawlog output: TRAVEL's clouds mapped as LiDAR frames:\n${last_output}")
+endif()
+
+# A LiDAR frame that is not mapped says why, naming the record, once per reason (10 frames here,
+# all of another sensor).
+execute_process(COMMAND ${TRAVEL_MAP} -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street_nope
+  -p vlp16 --set sensor_label=NOPE RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX MATCHALL "street.rawlog: record [0-9]+: not mapped: sensor label 'VLP16' does not match"
+  notes "${out}${err}")
+list(LENGTH notes count)
+if(rc EQUAL 0 OR NOT count EQUAL 1)
+  message(FATAL_ERROR "rejected frames: ${count} notes (want 1), exit ${rc}:\n${out}${err}")
+endif()
 
 # The same rawlog with a TUM pose file (robot standing still at x = 1): used instead.
 file(WRITE ${WORK_DIR}/tum.txt

@@ -314,21 +314,28 @@ std::vector<IniEntry> readIni(const std::string& text, const std::string& source
         if (equals == std::string::npos) fail("expected 'key = value', got '" + content + "'");
         IniEntry e{section, trimmed(content.substr(0, equals)), "", number, int(start) + 1};
         if (e.key.empty()) fail("missing key before '='");
-        std::string value = trimmed(content.substr(equals + 1));
-        if (!value.empty() && (value.front() == '"' || value.front() == '\'')) {
-            const std::size_t close = value.find(value.front(), 1);
-            if (close == std::string::npos) fail("unterminated quoted value");
-            const std::string rest = trimmed(value.substr(close + 1));
-            if (!(rest.empty() || rest[0] == '#' || rest[0] == ';'))
-                fail("unexpected text after the quoted value " + value.substr(0, close + 1));
-            value = value.substr(1, close - 1);
-        } else {
-            value = trimmed(value.substr(0, value.find('#')));
+        try {
+            e.value = iniValue(content.substr(equals + 1));
+        } catch (const ConfigError& error) {
+            fail(error.what());
         }
-        e.value = value;
         entries.push_back(std::move(e));
     }
     return entries;
+}
+
+std::string iniValue(std::string_view written) {
+    std::string value = trimmed(written);
+    if (!value.empty() && (value.front() == '"' || value.front() == '\'')) {
+        const std::size_t close = value.find(value.front(), 1);
+        if (close == std::string::npos) throw ConfigError("unterminated quoted value");
+        const std::string rest = trimmed(value.substr(close + 1));
+        if (!(rest.empty() || rest[0] == '#' || rest[0] == ';'))
+            throw ConfigError("unexpected text after the quoted value " +
+                              value.substr(0, close + 1));
+        return value.substr(1, close - 1);
+    }
+    return trimmed(value.substr(0, value.find('#')));
 }
 
 std::string readConfigFile(const std::string& path) {

@@ -9,15 +9,26 @@ namespace travel_mrpt {
 
 void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                                   const std::string& section) {
+    loadFromConfigSections(source, {section});
+}
+
+void TraversabilityMapOptions::loadFromConfigSections(const mrpt::config::CConfigFileBase& source,
+                                                      const std::vector<std::string>& sections) {
     TraversabilityMapOptions result = *this;
-    const auto keys = config_text::readSection(source, section);
+    std::vector<travel::SectionKey> keys;
+    std::string names;
+    for (const std::string& section : sections) {
+        const auto section_keys = config_text::readSection(source, section);
+        keys.insert(keys.end(), section_keys.begin(), section_keys.end());
+        names += (names.empty() ? "'" : " + '") + section + "'";  // no brackets: keyLocation
+    }
     travel::applySectionKeys(keys, result.travel.params, result.map(),
                              static_cast<travel::FilterSection&>(result.travel),
                              result.travel.tracking);
     try {
         result.validate();
     } catch (const travel::ConfigError& e) {
-        throw travel::ConfigError("section [" + section + "]: " + e.what());
+        throw travel::ConfigError("section " + names + ": " + e.what());
     }
     *this = std::move(result);
 }

@@ -1,7 +1,8 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
 // The keys of one section of an MRPT CConfigFileBase (as in CMultiMetricMap .ini files), each
-// with where it was written (travel/SectionKeys.hpp applies them), and the writing back.
+// with where it was written (travel/SectionKeys.hpp applies them) and its value read as in any
+// other ini file (travel::iniValue: quotes removed), and the writing back.
 #pragma once
 
 #include <mrpt/config/CConfigFile.h>
@@ -29,9 +30,16 @@ inline std::vector<travel::SectionKey> readSection(const mrpt::config::CConfigFi
     std::vector<std::string> keys;
     source.getAllKeys(section, keys);
     std::vector<travel::SectionKey> out;
-    for (const std::string& key : keys)
-        out.push_back({key, source.read_string(section, key, "", true),
-                       travel::keyLocation(lines, file, section, key)});
+    for (const std::string& key : keys) {
+        travel::SectionKey k{key, "", travel::keyLocation(lines, file, section, key)};
+        // MRPT keeps the quotes of `key="value"`: the value is read as in every other ini.
+        try {
+            k.value = travel::iniValue(source.read_string(section, key, "", true));
+        } catch (const travel::ConfigError& e) {
+            throw travel::ConfigError(k.where + key + ": " + e.what());
+        }
+        out.push_back(std::move(k));
+    }
     return out;
 }
 

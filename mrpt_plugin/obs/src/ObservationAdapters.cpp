@@ -4,6 +4,7 @@
 // VelodyneAdapters.cpp.
 #include "travel_mrpt/ObservationAdapters.hpp"
 
+#include <mrpt/img/CImage.h>
 #include <mrpt/maps/CPointsMap.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -13,12 +14,29 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include "MrptMessage.hpp"
+#include "travel_mrpt/LabelledOutputs.hpp"
+
 namespace travel_mrpt {
 namespace {
 
-bool fail(std::string* why_not, const char* reason) {
+bool fail(std::string* why_not, const std::string& reason) {
     if (why_not) *why_not = reason;
     return false;
+}
+
+/// obs.load() (a no-op unless the data is stored in an external file, which MRPT reads from
+/// CImage::getImagesPathBase(): RawlogReader sets it to the rawlog's "_Images" folder); false
+/// with MRPT's reason, named as external data, when the file cannot be read.
+bool loadExternal(const mrpt::obs::CObservation& obs, std::string* why_not) {
+    try {
+        obs.load();
+        return true;
+    } catch (const std::exception& e) {
+        return fail(why_not, "its externally stored data cannot be loaded (external files folder " +
+                                 mrpt::img::CImage::getImagesPathBase() +
+                                 "): " + mrptMessage(e.what()));
+    }
 }
 
 template <class Vec>
@@ -33,10 +51,11 @@ void assignXYZ(const Vec& xs, const Vec& ys, const Vec& zs, travel::PointCloud& 
 
 bool isLidarObservation(const mrpt::obs::CObservation& obs) {
     using namespace mrpt::obs;
-    return dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
-           dynamic_cast<const CObservationRotatingScan*>(&obs) ||
-           dynamic_cast<const CObservationPointCloud*>(&obs) ||
-           dynamic_cast<const CObservation3DRangeScan*>(&obs);
+    return (dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
+            dynamic_cast<const CObservationRotatingScan*>(&obs) ||
+            dynamic_cast<const CObservationPointCloud*>(&obs) ||
+            dynamic_cast<const CObservation3DRangeScan*>(&obs)) &&
+           !isTravelOutput(obs);
 }
 
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
@@ -58,8 +77,8 @@ bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
 bool pointCloudObsToTravelCloud(const mrpt::obs::CObservationPointCloud& obs,
                                 travel::PointCloud& out, std::string* why_not) {
     out.clear();
-    // Externally stored clouds (e.g. KITTI .bin) are read on demand; load() is a no-op otherwise.
-    if (obs.isExternallyStored()) obs.load();
+    // Externally stored clouds (e.g. KITTI .bin) are read on demand.
+    if (obs.isExternallyStored() && !loadExternal(obs, why_not)) return false;
     if (!obs.pointcloud) return fail(why_not, "point cloud observation without a point map");
     const mrpt::maps::CPointsMap& map = *obs.pointcloud;
     if (map.empty()) return fail(why_not, "empty point cloud");
@@ -76,7 +95,7 @@ bool pointCloudObsToTravelCloud(const mrpt::obs::CObservationPointCloud& obs,
 bool rangeScan3DToTravelCloud(const mrpt::obs::CObservation3DRangeScan& obs,
                               travel::PointCloud& out, std::string* why_not) {
     out.clear();
-    obs.load();  // range images may be stored in external files
+    if (!loadExternal(obs, why_not)) return false;  // range images may be in external files
     if (obs.hasPoints3D && !obs.points3D_x.empty()) {
         if (obs.points3D_y.size() != obs.points3D_x.size() ||
             obs.points3D_z.size() != obs.points3D_x.size())

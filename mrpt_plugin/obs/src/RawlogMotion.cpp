@@ -21,8 +21,7 @@ bool RawlogMotion::process(const mrpt::serialization::CSerializable& record) {
         if (auto move = actions->getBestMovementEstimation()) {
             action_pose_ = action_pose_ + mrpt::poses::CPose3D(move->poseChange->getMeanVal());
             ++actions_;
-            filter_.setOdometryPose(action_pose_, move->timestamp);
-            filter_.processAction(*move);
+            filter_.processAction(*move, mrpt::poses::CPose2D(action_pose_));
         }
     } else {
         return false;

@@ -1,7 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel_mrpt/RawlogReader.hpp"
 
+#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CRawlog.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
@@ -10,30 +12,13 @@
 #include <optional>
 #include <sstream>
 
+#include "MrptMessage.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/OpenFileOffset.hpp"
 
 namespace fs = std::filesystem;
 
 namespace travel_mrpt {
-
-namespace {
-
-/// MRPT's exception texts span many lines (banner, nested "Message:" lines, call stack): the
-/// innermost "Message:" says what went wrong. Its hint about gzip does not apply (both are read).
-std::string mrptMessage(const std::string& text) {
-    std::istringstream lines(text);
-    std::string line, message;
-    while (std::getline(lines, line)) {
-        const std::size_t at = line.find("Message:");
-        if (at != std::string::npos && line.find_first_not_of(" \t") == at)
-            message = line.substr(line.find_first_not_of(' ', at + 8));
-    }
-    if (message.empty()) message = text.substr(0, text.find('\n'));
-    return message.substr(0, message.find(" (Perhaps it's a gz"));
-}
-
-}  // namespace
 
 struct RawlogReader::Stream {
     mrpt::io::CFileGZInputStream file;
@@ -50,6 +35,14 @@ RawlogReader::RawlogReader(const std::string& path) : path_(path), stream_(new S
     char magic[2] = {};
     std::ifstream(path, std::ios::binary).read(magic, 2);
     if (magic[0] == '\x1f' && magic[1] == '\x8b') stream_->gzip_offset.emplace(path);
+    // Externally stored observations (images, point clouds, depth) are loaded from the rawlog's
+    // "<name>_Images" folder, as in MRPT's own tools (a process-wide MRPT setting). MRPT 2.5.8's
+    // fallback when no such folder exists lacks a '/' ("<dir>Images"): name the usual one.
+    std::string images = mrpt::obs::CRawlog::detectImagesDirectory(path);
+    if (!fs::is_directory(images, ec))
+        images =
+            (fs::path(path).parent_path() / (fs::path(path).stem().string() + "_Images")).string();
+    mrpt::img::CImage::setImagesPathBase(images);
 }
 
 double RawlogReader::fractionRead() const {

@@ -15,6 +15,7 @@
 #include "travel/Preprocessing.hpp"
 #include "travel/tracking/FrameTracker.hpp"
 #include "travel_mrpt/Attitude.hpp"
+#include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 
 namespace travel_mrpt {
@@ -143,6 +144,10 @@ bool TravelFilter::prepare(const mrpt::obs::CObservation& obs, TravelFrame& out,
         if (why_not) *why_not = reason;
         return false;
     };
+    if (isTravelOutput(obs))
+        return fail("'" + obs.sensorLabel +
+                    "' is a TRAVEL output (labels or a per-class cloud of travel-rawlog), not a "
+                    "LiDAR frame");
     if (!isLidarObservation(obs))
         return fail("'" + obs.sensorLabel + "' (" + obs.GetRuntimeClass()->className +
                     ") is not a 3-D LiDAR observation");
@@ -335,20 +340,27 @@ void TravelFilter::processOdometry(const mrpt::obs::CObservationOdometry& odomet
                  mrpt::system::LVL_WARN);
         return;
     }
-    setOdometryPose(mrpt::poses::CPose3D(odometry.odometry), odometry.timestamp);
-    const auto& v = odometry.velocityLocal;
-    motion_.addPlanarOdometry(seconds(odometry.timestamp), odometry.odometry.x(),
-                              odometry.odometry.y(), odometry.odometry.phi(),
-                              odometry.hasVelocities ? std::optional<Eigen::Vector3d>(
-                                                           Eigen::Vector3d(v.vx, v.vy, v.omega))
-                                                     : std::nullopt);
+    addOdometry(odometry.odometry, odometry.timestamp,
+                odometry.hasVelocities ? &odometry.velocityLocal : nullptr);
 }
 
-void TravelFilter::processAction(const mrpt::obs::CActionRobotMovement2D& action) {
-    if (!action.hasVelocities || action.timestamp == INVALID_TIMESTAMP) return;
-    const auto& v = action.velocityLocal;
-    motion_.addOdometryVelocity(seconds(action.timestamp), Eigen::Vector3d(v.vx, v.vy, 0),
-                                Eigen::Vector3d(0, 0, v.omega));
+void TravelFilter::processAction(const mrpt::obs::CActionRobotMovement2D& action,
+                                 const mrpt::poses::CPose2D& odometry_pose) {
+    if (action.timestamp == INVALID_TIMESTAMP) {
+        setOdometryPose(mrpt::poses::CPose3D(odometry_pose), INVALID_TIMESTAMP);
+        return;
+    }
+    addOdometry(odometry_pose, action.timestamp,
+                action.hasVelocities ? &action.velocityLocal : nullptr);
+}
+
+void TravelFilter::addOdometry(const mrpt::poses::CPose2D& pose, mrpt::Clock::time_point t,
+                               const mrpt::math::TTwist2D* velocity) {
+    setOdometryPose(mrpt::poses::CPose3D(pose), t);
+    motion_.addPlanarOdometry(seconds(t), pose.x(), pose.y(), pose.phi(),
+                              velocity ? std::optional<Eigen::Vector3d>(Eigen::Vector3d(
+                                             velocity->vx, velocity->vy, velocity->omega))
+                                       : std::nullopt);
 }
 
 void TravelFilter::setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t) {

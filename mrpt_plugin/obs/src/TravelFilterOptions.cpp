@@ -87,7 +87,7 @@ void TravelFilterOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
         result.params.validate();
         result.validate();
     } catch (const std::exception& e) {
-        throw travel::ConfigError("section [" + section + "]: " + e.what());
+        throw travel::ConfigError("section '" + section + "': " + e.what());
     }
     *this = std::move(result);
 }

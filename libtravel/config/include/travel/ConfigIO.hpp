@@ -16,6 +16,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "travel/Config.hpp"
@@ -52,6 +53,10 @@ struct IniEntry {
 /// The entries of an ini text, in order. Throws ConfigError "<source>:<line>:<col>: ..." on a
 /// malformed line.
 std::vector<IniEntry> readIni(const std::string& text, const std::string& source_name);
+/// An ini value as written after '=': trimmed; a quoted one ("..." or '...', followed by nothing
+/// or a comment) is the text between the quotes, an unquoted one ends at a '#' comment. Throws
+/// ConfigError (no position) on an unterminated quote or text after the closing one.
+std::string iniValue(std::string_view written);
 
 /// The file's contents; throws ConfigError naming the path.
 std::string readConfigFile(const std::string& path);

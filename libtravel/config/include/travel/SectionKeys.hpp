@@ -18,8 +18,10 @@
 namespace travel {
 
 struct SectionKey {
-    /// `where` prefixes error messages: "<file>:<line>:<col>: section [<name>]: " when the
-    /// position is known, "section [<name>]: " otherwise.
+    /// `where` prefixes error messages: "<file>:<line>:<col>: section '<name>': " when the
+    /// position is known, "section '<name>': " otherwise, as travel's own config messages. No
+    /// brackets: MRPT's exception wrapper (errors raised through CMultiMetricMap) reads
+    /// "...[x]" as "file: [function]" and cuts the message there.
     std::string key, value, where;
 };
 
@@ -27,7 +29,7 @@ struct SectionKey {
 /// text was not read from a file).
 inline std::string keyLocation(const std::vector<IniEntry>& lines, const std::string& file,
                                const std::string& section, const std::string& key) {
-    std::string where = "section [" + section + "]: ";
+    std::string where = "section '" + section + "': ";
     for (const auto& e : lines)
         if (e.section == section && e.key == key)
             where =
@@ -36,11 +38,18 @@ inline std::string keyLocation(const std::vector<IniEntry>& lines, const std::st
 }
 
 /// `preset` first (replacing `params`), then every other key through travel::assignFlatKey on
-/// `sections...`; errors name where the key was written.
+/// `sections...`; errors name where the key was written. `keys` may come from several sections
+/// read as one (a CMultiMetricMap's creation and insertion sections): the preset is the base of
+/// them all, and a second `preset` is an error naming both places.
 template <class... Sections>
 void applySectionKeys(const std::vector<SectionKey>& keys, Params& params, Sections&... sections) {
+    const SectionKey* preset = nullptr;
     for (const auto& k : keys) {
         if (k.key != "preset") continue;
+        if (preset)
+            throw ConfigError(k.where + "a second preset (the first: " + preset->where +
+                              "preset=" + preset->value + "): give one, keys set the rest");
+        preset = &k;
         try {
             params = loadPreset(k.value);
         } catch (const std::exception& e) {
@@ -58,7 +67,7 @@ void applySectionKeys(const std::vector<SectionKey>& keys, Params& params, Secti
 }
 
 /// Calls write(name, text) for every key of `sections...`: the shortest exact text of its
-/// value, strings as they are (MRPT's ini reader keeps quotes).
+/// value, strings as they are.
 template <class Write, class... Sections>
 void forEachKeyText(Write&& write, const Sections&... sections) {
     (visitFields(sections,

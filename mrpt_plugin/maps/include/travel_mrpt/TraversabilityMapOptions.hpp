@@ -6,15 +6,16 @@
 // (TravelFilterOptions: `preset`, every libtravel parameter, the filter keys).
 // Read from an ini section; in a CMultiMetricMap .ini both sections of the map,
 // [<prefix>_creationOpts] and [<prefix>_insertOpts], accept every key of the map, filter and
-// travel sections (applied in that order: put the geometry in the first and the rest in the
-// second by convention). Each key goes through the same rules and messages as in a config file
-// (travel::assignFlatKey); an unknown key is an error naming it, the section (file and line
-// when read from a file) and the nearest key.
+// travel sections (a `preset` in either is the base of both; the keys are applied in that
+// order: put the geometry in the first and the rest in the second by convention). Each key goes
+// through the same rules and messages as in a config file (travel::assignFlatKey); an unknown key
+// is an error naming it, the section (file and line when read from a file) and the nearest key.
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <string>
+#include <vector>
 
 #include "travel/Config.hpp"
 #include "travel/traversability/TraversabilityGrid.hpp"
@@ -38,6 +39,11 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     /// Throws travel::ConfigError naming the section and the key.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                             const std::string& section) override;
+    /// The keys of all `sections` as one section: a `preset` in any of them is the base of
+    /// every key of all of them (at most one preset). A CMultiMetricMap's creation and insertion
+    /// sections are read so.
+    void loadFromConfigSections(const mrpt::config::CConfigFileBase& source,
+                                const std::vector<std::string>& sections);
     /// Writes TravelFilterOptions' keys, then every map key.
     void saveToConfigFile(mrpt::config::CConfigFileBase& target,
                           const std::string& section) const override;

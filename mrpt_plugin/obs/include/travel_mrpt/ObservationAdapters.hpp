@@ -41,7 +41,10 @@ namespace travel_mrpt {
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
                    mrpt::poses::CPose3D& sensor_pose, std::string* why_not = nullptr);
 
-/// True for the observation classes toTravelCloud() understands (cheap: no conversion).
+/// True for the observation classes toTravelCloud() understands (cheap: no conversion), except
+/// TRAVEL's own outputs (isTravelOutput(): the per-class clouds travel-rawlog writes beside its
+/// labels), which are not LiDAR frames: every consumer (TravelFilter, the map layer, the apps)
+/// skips them through this test.
 bool isLidarObservation(const mrpt::obs::CObservation& obs);
 
 // ---- One function per class; toTravelCloud() dispatches to them. Same contract. ----

@@ -31,8 +31,9 @@ class TravelFilter;
 
 class RawlogReader {
   public:
-    /// Opens the file. Throws InputError "<path>: no such file", "<path>: is a directory, not a
-    /// rawlog" or "<path>: cannot open for reading".
+    /// Opens the file and points MRPT's external storage at its "<name>_Images" folder
+    /// (mrpt::img::CImage::setImagesPathBase, as MRPT's tools do). Throws InputError "<path>: no
+    /// such file", "<path>: is a directory, not a rawlog" or "<path>: cannot open for reading".
     explicit RawlogReader(const std::string& path);
     ~RawlogReader();
     RawlogReader(const RawlogReader&) = delete;

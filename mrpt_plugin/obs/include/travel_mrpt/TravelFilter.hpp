@@ -19,6 +19,8 @@
 #pragma once
 
 #include <mrpt/core/Clock.h>
+#include <mrpt/math/TTwist2D.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/COutputLogger.h>
 #include <mrpt/system/CTimeLogger.h>
@@ -147,8 +149,12 @@ class TravelFilter : public mrpt::system::COutputLogger {
     void processImu(const mrpt::obs::CObservationIMU& imu);
     /// Planar pose (differenced when velocities are needed) and, if present, its velocities.
     void processOdometry(const mrpt::obs::CObservationOdometry& odometry);
-    /// Velocities of a CActionRobotMovement2D when it has them (and a timestamp).
-    void processAction(const mrpt::obs::CActionRobotMovement2D& action);
+    /// An odometry action (SensoryFrame rawlogs), like processOdometry(): `odometry_pose` is the
+    /// robot pose its increments compose to (the caller composes them), differenced when
+    /// velocities are needed; the action's velocities when it has them. An untimed action only
+    /// sets the odometry pose (setOdometryPose).
+    void processAction(const mrpt::obs::CActionRobotMovement2D& action,
+                       const mrpt::poses::CPose2D& odometry_pose);
     /// Robot pose in the world (pose files, SensoryFrames): attitude and velocity source, and
     /// the ego-motion of tracking.
     void setRobotPose(const mrpt::poses::CPose3D& pose, mrpt::Clock::time_point t);
@@ -189,6 +195,10 @@ class TravelFilter : public mrpt::system::COutputLogger {
     /// Fills the clusters' tracking fields of `out` (options_.track_objects), with the robot
     /// at `robot` (else ego-motion from registration).
     void track(TravelFrame& out, const std::optional<Eigen::Isometry3d>& robot);
+    /// The planar odometry pose at t (timed) and its velocities if known: the odometry pose of
+    /// tracking and a velocity source of the motion estimate.
+    void addOdometry(const mrpt::poses::CPose2D& pose, mrpt::Clock::time_point t,
+                     const mrpt::math::TTwist2D* velocity);
     /// Logs `message` the first time `flag` is false, then sets it (no per-frame strings).
     void noteOnce(bool& flag, const std::string& message, mrpt::system::VerbosityLevel level);
 
