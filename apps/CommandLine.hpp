@@ -32,32 +32,9 @@
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/io/ScanIO.hpp"
+#include "travel_mrpt/MrptMessage.hpp"
 
 namespace travel::apps {
-
-/// MRPT exception texts span many lines (banner, nested "Message:" lines, locations, call
-/// stacks); keep the innermost message, which says what went wrong. One-line texts are kept.
-inline std::string oneLine(const std::string& text) {
-    std::istringstream lines(text);
-    std::string line, message, first;
-    while (std::getline(lines, line)) {
-        const auto start = line.find_first_not_of(" \t\r");
-        if (start == std::string::npos) continue;
-        line = line.substr(start);
-        // Neither the banner ("==== MRPT exception ====") nor a call stack says what went wrong.
-        if (line.rfind("====", 0) == 0 || line.rfind("Call stack backtrace:", 0) == 0 ||
-            (line.size() > 1 && line[0] == '[' &&
-             std::isdigit(static_cast<unsigned char>(line[1]))))
-            continue;
-        if (first.empty()) first = line;
-        if (line.rfind("Message:", 0) == 0) message = line.substr(line.find_first_not_of(' ', 8));
-    }
-    std::string best = message.empty() ? first : message;
-    // MRPT's hint about gzip is wrong here: the readers accept plain and gzip files alike.
-    const auto hint = best.find(" (Perhaps it's a gz");
-    if (hint != std::string::npos) best.erase(hint);
-    return best.empty() ? text : best;
-}
 
 /// --preset (already applied to `config` by the caller), then --config (every section), then
 /// each --set (KEY=VALUE or SECTION.KEY=VALUE), then the cross-key checks: the order every app
@@ -336,16 +313,17 @@ int runMain(const char* name, Run&& run, int argc, char** argv, int error_code =
         std::cerr << name << ": " << e.error() << "\nRun '" << name
                   << " --help' for the flags and examples.\n";
     } catch (const ConfigError& e) {
-        std::cerr << name << ": configuration error: " << oneLine(e.what()) << "\n";
+        std::cerr << name << ": configuration error: " << travel_mrpt::mrptMessage(e.what())
+                  << "\n";
     } catch (const std::bad_alloc& e) {
         std::cerr << name << ": error: " << e.what() << memoryLimitNote() << "\n";
     } catch (const std::system_error& e) {  // a thread that cannot start, among others
-        std::cerr << name << ": error: " << oneLine(e.what())
+        std::cerr << name << ": error: " << travel_mrpt::mrptMessage(e.what())
                   << (e.code() == std::errc::resource_unavailable_try_again ? memoryLimitNote()
                                                                             : "")
                   << "\n";
     } catch (const std::exception& e) {
-        std::cerr << name << ": error: " << oneLine(e.what()) << "\n";
+        std::cerr << name << ": error: " << travel_mrpt::mrptMessage(e.what()) << "\n";
     } catch (...) {
         std::cerr << name << ": error: unknown exception\n";
     }

@@ -158,9 +158,7 @@ class RawlogSegmenter {
     /// in record order with the aligned cloud of that segmentation (kept alive by the caller).
     bool prepare(const CObservation& obs, travel_mrpt::TravelFrame& frame,
                  travel_mrpt::TravelFilter::FrameJob& job) {
-        if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs) ||
-            travel_mrpt::isTravelOutput(obs))
-            return false;
+        if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs)) return false;
         std::string why_not;
         if (filter_.prepare(obs, frame, job, &why_not)) return true;
         if (!std::regex_match(obs.sensorLabel, label_filter_)) {

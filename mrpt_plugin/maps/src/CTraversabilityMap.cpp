@@ -26,6 +26,7 @@
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/MapExport.hpp"
+#include "travel_mrpt/MrptMessage.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
 namespace travel_mrpt {
@@ -418,15 +419,6 @@ constexpr uint32_t kGridFileVersion = 1;
 
 /// MRPT's exception texts span many lines (a banner, then the message): the reader's messages
 /// keep one, led by the file name.
-std::string firstLine(const std::string& text) {
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line))
-        if (line.find_first_not_of(" =\t\r") != std::string::npos &&
-            line.find("MRPT exception") == std::string::npos)
-            return line;
-    return text;
-}
 }  // namespace
 
 void CTraversabilityMap::writeGridState(mrpt::serialization::CArchive& out) const {
@@ -534,7 +526,7 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
                 throw std::runtime_error("unknown format version " + std::to_string(version));
             loaded.readGridState(archive);
         } catch (const std::exception& e) {
-            throw std::runtime_error(grid_path + ": " + firstLine(e.what()));
+            throw std::runtime_error(grid_path + ": " + mrptMessage(e.what()));
         }
     }
     {

@@ -14,8 +14,8 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 
-#include "MrptMessage.hpp"
 #include "travel_mrpt/LabelledOutputs.hpp"
+#include "travel_mrpt/MrptMessage.hpp"
 
 namespace travel_mrpt {
 namespace {

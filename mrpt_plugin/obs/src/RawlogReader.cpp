@@ -12,9 +12,9 @@
 #include <optional>
 #include <sstream>
 
-#include "MrptMessage.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/OpenFileOffset.hpp"
+#include "travel_mrpt/MrptMessage.hpp"
 
 namespace fs = std::filesystem;
 
