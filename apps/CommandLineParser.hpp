@@ -126,11 +126,24 @@ class CommandLine {
     /// message printed), or nothing when the program should go on.
     std::optional<int> parse(int argc, char** argv) {
         // "-j2" as "-j 2" (getopt's attached value, what make users type) for the short flags
-        // that take a value; TCLAP alone reads "-j2" as an unknown flag.
+        // that take a value, and "--max-frames=1" as "--max-frames 1" (getopt_long's) for the
+        // long ones; TCLAP alone reads both as unknown flags.
         std::vector<std::string> args(argv, argv + argc);
         for (std::size_t i = 1; i < args.size(); ++i) {
             const std::string& a = args[i];
             if (a == "--") break;
+            const std::size_t equals = a.find('=');
+            if (a.rfind("--", 0) == 0 && equals != std::string::npos) {
+                for (const TCLAP::Arg* arg : cmd.getArgList())
+                    if (arg->isValueRequired() && arg->getName() == a.substr(2, equals - 2)) {
+                        args.insert(args.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                                    a.substr(equals + 1));
+                        args[i].resize(equals);
+                        ++i;
+                        break;
+                    }
+                continue;
+            }
             if (a.size() < 3 || a[0] != '-' || a[1] == '-') continue;
             for (const TCLAP::Arg* arg : cmd.getArgList())
                 if (arg->isValueRequired() && arg->getFlag() == a.substr(1, 1)) {

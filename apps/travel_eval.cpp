@@ -368,6 +368,7 @@ int run(int argc, char** argv) {
                                          ? travel::eval::splitList(methods.getValue(), ',')
                                          : travel::eval::methodNames();
     if (is_sweep || is_merges) names = {method.getValue()};
+    if (names.empty()) throw travel::apps::usageError("--methods names no method");
     for (const std::string& name : names) {
         // Throws, listing the valid names.
         const auto segmenter = travel::eval::makeSegmenter(name, params);

@@ -340,7 +340,7 @@ int run(int argc, char** argv) {
             if (scored)
                 std::printf(" | %6.2f %6.2f  %5.3f %5.3f", objects.entropy.ose_sum,
                             objects.entropy.use_sum, objects.mean_coverage, objects.mean_purity);
-            std::printf(!labels_dir.empty() && !scored ? " | (no .label file)\n" : "\n");
+            std::printf(!labels_dir.empty() && !scored ? " | (no ground truth)\n" : "\n");
         }
         if (csv_out) {
             csv_out << stem << ',' << cloud.size() << ','

@@ -108,6 +108,38 @@ TEST(EvaluateFrame, WithoutLabelsNothingIsScored) {
     totals.add(frame);  // unscored: not counted
     EXPECT_EQ(totals.summary().f1[0].n, 0u);
     EXPECT_FALSE(totals.summary().clusters);
+
+    // A label file of zeros (every point unlabelled) holds no ground truth: not scored (both
+    // protocols gave it 100, averaged with the frames that have ground truth).
+    const std::string zeros = (testDir() / "zeros.label").string();
+    writeLabelFile(zeros, std::vector<uint32_t>(frame.cloud.size(), 0));
+    FrameEvaluation unlabelled, labelled;
+    evaluateFrame(urbanFrame().scan, zeros, *segmenter, unlabelled);
+    evaluateFrame(urbanFrame().scan, urbanFrame().label, *segmenter, labelled);
+    EXPECT_FALSE(unlabelled.scored);
+    EXPECT_TRUE(labelled.scored);
+    for (int p = 0; p < 2; ++p) {
+        EXPECT_GT(labelled.ground[p].points, 0u);
+        EXPECT_LT(labelled.ground[p].f1, 100.0);
+    }
+    // Protocol B scores no unlabelled, outlier or vegetation point: a frame of only those
+    // counts nothing there (and is not averaged in B), while A scores them.
+    FrameEvaluation vegetation;
+    writeLabelFile(zeros, std::vector<uint32_t>(frame.cloud.size(), 70));
+    evaluateFrame(urbanFrame().scan, zeros, *segmenter, vegetation);
+    EXPECT_TRUE(vegetation.scored);
+    EXPECT_EQ(vegetation.ground[1].points, 0u);
+    EXPECT_GT(vegetation.ground[0].points, 0u);
+    EvaluationAccumulator with_vegetation;
+    with_vegetation.add(labelled), with_vegetation.add(vegetation);
+    EXPECT_EQ(with_vegetation.summary().f1[0].n, 2u);
+    EXPECT_EQ(with_vegetation.summary().f1[1].n, 1u);
+    EvaluationAccumulator both;
+    both.add(labelled), both.add(unlabelled);
+    for (int p = 0; p < 2; ++p) {
+        EXPECT_EQ(both.summary().f1[p].n, 1u);
+        EXPECT_EQ(both.summary().f1[p].mean, labelled.ground[p].f1);
+    }
 }
 
 TEST(EvaluateFrame, GroundOnlyMethodsHaveNoObjectStage) {

@@ -236,6 +236,15 @@ TEST(ScanList, FileFolderAndSequence) {
     EXPECT_CONTAINS(inputErrorOf([&] { travel::listScans(dir.file("seq/labels")); }),
                     "no scans (.bin, .pcd, .ply)");
     EXPECT_CONTAINS(inputErrorOf([&] { travel::listScans(dir.file("nope")); }), dir.file("nope"));
+    // A scan's symlink to a missing file is named (it was skipped: a frame silently missing);
+    // a dangling link that is no scan is left alone.
+    fs::create_symlink(dir.file("elsewhere/notes.md"), dir.path / "pcds" / "README.md");
+    EXPECT_EQ(travel::listScans(dir.file("pcds")).files.size(), 2u);
+    fs::create_symlink(dir.file("elsewhere/000002.bin"),
+                       dir.path / "seq" / "velodyne" / "000002.bin");
+    const std::string dangling = inputErrorOf([&] { travel::listScans(dir.file("seq")); });
+    EXPECT_CONTAINS(dangling, "000002.bin' is a symlink to a missing file");
+    EXPECT_CONTAINS(dangling, "elsewhere/000002.bin");
 }
 
 TEST(ScanList, ExtensionRuleIsCaseInsensitive) {

@@ -449,6 +449,14 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
              std::string(24, '\0'),
          ": the header announces 1000 vertices but only 24 bytes of data follow"},
         {"solid cube\n", ":1: 'solid cube' is not 'ply': not a PLY file"},
+        // More vertex rows than announced, when the vertices are the last element: points the
+        // header does not count were dropped without a word.
+        {ply + "property float y\nproperty float z\nend_header\n1 2 3\n4 5 6\n",
+         ":9: more data after the last of 1 vertices"},
+        {"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+         "property float y\nproperty float z\nend_header\n" +
+             std::string(16, '\0'),
+         ": 4 bytes after the last of 1 vertices"},
     };
     for (const Case& cs : ply_cases) {
         p = dir.write("bad" + std::to_string(k++) + ".ply", cs.text);

@@ -46,6 +46,11 @@ if(APP STREQUAL "travel-eval")
   set(pre report)  # its command
 endif()
 expect_failure_mentioning("-q/--quiet and -v/--verbose" ${EXE} ${pre} -q -v -i x -o ${WORK_DIR}/x)
+# getopt_long's attached values: --input=x is --input x (the -q/-v check is reached), and a
+# misspelt flag with one is still named with its suggestion.
+expect_failure_mentioning("-q/--quiet and -v/--verbose"
+                          ${EXE} ${pre} -q -v --input=x --output=${WORK_DIR}/x)
+expect_failure_mentioning("unknown flag --outptu=x; did you mean -o/--output?" ${EXE} --outptu=x)
 
 # -q on a successful run: nothing on stdout.
 function(expect_quiet_success)

@@ -24,8 +24,15 @@ void evaluateFrame(const std::string& scan_path, const std::string& label_path,
         frame.clustered = out.objects_ms > 0 || frame.clusters > 0;
         frame.scored = !label_path.empty();
         frame.ground_truth.clear();
+        frame.ground[0] = frame.ground[1] = GroundScores{};  // not the last frame's
+        frame.objects = ObjectScores{};
         if (!frame.scored) return;
         frame.ground_truth = readLabelFile(label_path, cloud.size());
+        // A label file of zeros (class 0, "unlabeled", everywhere) holds no ground truth: both
+        // protocols would score it 100 and average that in.
+        frame.scored = std::any_of(frame.ground_truth.begin(), frame.ground_truth.end(),
+                                   [](uint32_t label) { return (label & 0xFFFF) != 0; });
+        if (!frame.scored) return;
         for (int p = 0; p < 2; ++p)
             frame.ground[p] = scoresFrom(countGround(out.labels, frame.ground_truth, cloud.z,
                                                      out.sensor_height, kGroundProtocols[p]));
@@ -42,6 +49,9 @@ void evaluateFrame(const std::string& scan_path, const std::string& label_path,
 void EvaluationAccumulator::add(const FrameEvaluation& frame) {
     if (!frame.scored) return;
     for (int p = 0; p < 2; ++p) {
+        // A frame whose labels leave nothing to score under this protocol (all unlabelled,
+        // say) scores 100 by convention; it says nothing about the method: not averaged.
+        if (frame.ground[p].points == 0) continue;
         ground_[p][0].push_back(frame.ground[p].precision);
         ground_[p][1].push_back(frame.ground[p].recall);
         ground_[p][2].push_back(frame.ground[p].f1);

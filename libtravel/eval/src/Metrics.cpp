@@ -74,6 +74,7 @@ GroundScores scoresFrom(const ConfusionCounts& c) {
     const double pr_sum = s.precision + s.recall;
     s.f1 = pr_sum > 0 ? 2.0 * s.precision * s.recall / pr_sum : 0.0;
     s.accuracy = percent(c.tp + c.tn, c.tp + c.tn + c.fp + c.fn, 100.0);
+    s.points = c.tp + c.tn + c.fp + c.fn;
     return s;
 }
 

@@ -197,8 +197,11 @@ void writeFramesCsv(std::ostream& csv, const std::vector<MethodRun>& runs) {
         for (const FrameRow& r : run.rows) {
             csv << run.method << ',' << r.frame << ',' << r.points;
             for (int p = 0; p < 2; ++p)
-                csv << ',' << r.ground[p].precision << ',' << r.ground[p].recall << ','
-                    << r.ground[p].f1 << ',' << r.ground[p].accuracy;
+                if (r.ground[p].points == 0)  // nothing scored under this protocol
+                    csv << ",,,,";
+                else
+                    csv << ',' << r.ground[p].precision << ',' << r.ground[p].recall << ','
+                        << r.ground[p].f1 << ',' << r.ground[p].accuracy;
             if (r.objects)  // empty cells, not zeros, for methods without an object stage
                 csv << ',' << r.entropy.use_sum << ',' << r.entropy.ose_sum << ','
                     << r.entropy.use_mean << ',' << r.entropy.ose_mean << ','

@@ -2,7 +2,8 @@
 //
 // PLY reader (http://paulbourke.net/dataformats/ply/): "ply", "format ascii|binary_little_endian
 // 1.0", elements with scalar or list properties, "end_header". The points are the "vertex"
-// element; elements before it are read past, elements after it ignored.
+// element; elements before it are read past, elements after it ignored; after a last vertex
+// element nothing may follow.
 #include <cstdlib>
 #include <sstream>
 
@@ -126,6 +127,9 @@ void readPly(const std::string& path, const std::vector<unsigned char>& bytes, P
         checkRecordsFit(path, e.fields, e.count, ascii, src.bytesLeft(), e.name.c_str());
         if (&e == vertex) {
             decodeRecords(path, e.fields, e.count, src, cloud, "vertex");
+            // Nothing may follow the last element: more rows than the header's count would be
+            // points silently lost (as in a PCD file).
+            if (&e == &elements.back()) src.expectEnd(e.count, "vertex");
             return;
         }
         for (std::size_t i = 0; i < e.count; ++i) {

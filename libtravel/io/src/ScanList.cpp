@@ -105,6 +105,15 @@ ScanList listScans(const std::string& path, ScanFormat format) {
     if (!list.files.empty()) return list;
     for (const std::string& file : listFiles(list.scans_dir, ""))  // sorted by name
         if (isScanPath(file, format)) list.files.push_back(file);
+    // A scan's symlink whose target is gone is no regular file, so listFiles() leaves it out:
+    // a frame missing from the sequence, said here rather than skipped.
+    for (fs::directory_iterator it(list.scans_dir, ec), end; !ec && it != end; it.increment(ec)) {
+        std::error_code link_ec;
+        if (it->is_symlink(link_ec) && !fs::exists(it->path(), link_ec) &&
+            isScanPath(it->path().string(), format))
+            throw InputError(inQuotes(it->path().string()) + " is a symlink to a missing file (" +
+                             inQuotes(fs::read_symlink(it->path(), link_ec).string()) + ")");
+    }
     if (list.files.empty())
         throw InputError("no scans (" + extensionList(format) + ") in " + inQuotes(list.scans_dir));
     // Every output (a .label, a map frame) is named by the scan's stem: two scans with one stem

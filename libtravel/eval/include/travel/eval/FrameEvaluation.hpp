@@ -39,7 +39,7 @@ struct FrameEvaluation {
     /// The method has an object stage on this frame (it spent time clustering or found a
     /// cluster); ground-only methods' object scores describe no clustering and are not reported.
     bool clustered = false;
-    bool scored = false;     ///< ground truth was given: ground and objects are set
+    bool scored = false;     ///< ground truth was given (a label other than 0): scores are set
     GroundScores ground[2];  ///< per kGroundProtocols
     ObjectScores objects;    ///< clusters against the ground-truth objects
 
@@ -55,7 +55,8 @@ void evaluateFrame(const std::string& scan_path, const std::string& label_path,
                    Segmenter& segmenter, FrameEvaluation& frame,
                    ScanFormat format = ScanFormat::Auto);
 
-/// Over the scored frames: mean and std of each ground score per protocol; over the scored
+/// Over the scored frames: mean and std of each ground score per protocol (over the frames with
+/// a point to score under that protocol); over the scored
 /// frames with an object stage: the per-frame entropy sums and the pooled object summary.
 struct EvaluationSummary {
     MeanStd precision[2], recall[2], f1[2], accuracy[2];  ///< per kGroundProtocols

@@ -64,6 +64,7 @@ struct ConfusionCounts {
 /// scores 100 only if no point was predicted ground.
 struct GroundScores {
     double precision = 0, recall = 0, f1 = 0, accuracy = 0;
+    uint64_t points = 0;  ///< the points scored (tp + fp + tn + fn); 0: nothing to score
 };
 
 /// Counts per point: pred[i] against the SemanticKITTI label gt_labels[i], z[i] being the point's
