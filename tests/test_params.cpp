@@ -183,6 +183,13 @@ TEST(ParamsText, IniWithSection) {
         "  deskew = off\n");
     EXPECT_EQ(p.tgf_resolution, 2.5);
     EXPECT_FALSE(p.deskew);
+    // A comment after a value, '#' or ';' alike (';' was part of the value: "not a number");
+    // an empty section name is an error (it was read as [travel]).
+    const Params commented = fromText("[travel]\ntgf_resolution = 3 ; metres\neps1 = 0.1 # x\n");
+    EXPECT_EQ(commented.tgf_resolution, 3.0);
+    EXPECT_EQ(commented.eps1, 0.1);
+    EXPECT_CONTAINS(configErrorOf([] { fromText("[]\ntgf_resolution = 3\n"); }),
+                    "test.yaml:1:1: empty section name '[]'");
 }
 
 TEST(ParamsText, YamlTravelWrapper) {

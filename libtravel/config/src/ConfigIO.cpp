@@ -308,6 +308,7 @@ std::vector<IniEntry> readIni(const std::string& text, const std::string& source
                 !(after.empty() || after[0] == '#' || after[0] == ';'))
                 fail("malformed section header '" + content + "'");
             section = trimmed(content.substr(1, close - 1));
+            if (section.empty()) fail("empty section name '" + content + "'");
             continue;
         }
         const std::size_t equals = content.find('=');
@@ -335,7 +336,8 @@ std::string iniValue(std::string_view written) {
                               value.substr(0, close + 1));
         return value.substr(1, close - 1);
     }
-    return trimmed(value.substr(0, value.find('#')));
+    // An unquoted value ends at a comment, '#' or ';' as for a whole line or a section header.
+    return trimmed(value.substr(0, value.find_first_of("#;")));
 }
 
 std::string readConfigFile(const std::string& path) {

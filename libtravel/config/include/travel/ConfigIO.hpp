@@ -54,8 +54,8 @@ struct IniEntry {
 /// malformed line.
 std::vector<IniEntry> readIni(const std::string& text, const std::string& source_name);
 /// An ini value as written after '=': trimmed; a quoted one ("..." or '...', followed by nothing
-/// or a comment) is the text between the quotes, an unquoted one ends at a '#' comment. Throws
-/// ConfigError (no position) on an unterminated quote or text after the closing one.
+/// or a comment) is the text between the quotes, an unquoted one ends at a '#' or ';' comment.
+/// Throws ConfigError (no position) on an unterminated quote or text after the closing one.
 std::string iniValue(std::string_view written);
 
 /// The file's contents; throws ConfigError naming the path.
