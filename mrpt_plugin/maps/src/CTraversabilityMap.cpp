@@ -410,15 +410,31 @@ void CTraversabilityMap::saveMetricMapRepresentationToFile(const std::string& pr
     exportAll(*this, prefix);
 }
 
-// ---- Serialization: options as ini text, the grid arrays, the OctoMap as .bt bytes ----
+// ---- Serialization: options as ini text, the grid arrays, the OctoMap as .ot bytes ----
 
 namespace {
 /// The first bytes of a .travelgrid file (saveTo), then its format version.
 constexpr const char* kGridFileMagic = "TRAVEL traversability grid";
 constexpr uint32_t kGridFileVersion = 1;
 
-/// MRPT's exception texts span many lines (a banner, then the message): the reader's messages
-/// keep one, led by the file name.
+/// The OcTree of .ot bytes (OctoMap's full format: every voxel's log-odds), checked before
+/// octomap reads them and against the grid's voxel size; `where` leads every message.
+std::unique_ptr<octomap::OcTree> readOtTree(std::string bytes, double resolution,
+                                            const std::string& where) {
+    const std::string problem = otNodeStreamProblem(bytes);
+    if (!problem.empty()) throw std::runtime_error(where + ": " + problem);
+    std::istringstream in(std::move(bytes));
+    std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
+    auto* tree = dynamic_cast<octomap::OcTree*>(any.get());
+    if (!tree || in.fail())
+        throw std::runtime_error(where + ": not an OctoMap OcTree file (.ot), or truncated");
+    if (std::abs(tree->getResolution() - resolution) > 1e-9)
+        throw std::runtime_error(
+            where + ": voxels of " + std::to_string(tree->getResolution()) +
+            " m, but the grid file says octomap_resolution=" + std::to_string(resolution));
+    any.release();
+    return std::unique_ptr<octomap::OcTree>(tree);
+}
 }  // namespace
 
 void CTraversabilityMap::writeGridState(mrpt::serialization::CArchive& out) const {
@@ -453,26 +469,34 @@ void CTraversabilityMap::readGridState(mrpt::serialization::CArchive& in) {
     obstacle_points_dirty_ = true;
 }
 
+// Version 1 stores the OctoMap as .ot bytes (every voxel's log-odds: a loaded map goes on
+// fusing as if never saved); version 0 stored .bt bytes (occupied / free only), still read.
 uint8_t CTraversabilityMap::serializeGetVersion() const {
-    return 0;
+    return 1;
 }
 
 void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
     writeGridState(out);
-    std::ostringstream bt;
-    octree().writeBinaryConst(bt);
-    out << bt.str();
+    std::ostringstream ot;
+    octree().write(ot);
+    out << ot.str();
 }
 
 void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     readGridState(in);
-    std::string bt;
-    in >> bt;
-    std::istringstream bt_in(bt);
+    std::string bytes;
+    in >> bytes;
     scratch_->log_odds.clear();  // the tree read is the master copy now
-    if (!octree_->readBinary(bt_in))
-        throw std::runtime_error("CTraversabilityMap: corrupt OctoMap data");
+    if (version == 1) {
+        octree_ = readOtTree(std::move(bytes), options_.octomap_resolution, "CTraversabilityMap");
+        octree_->setProbHit(options_.octomap_prob_hit);
+        octree_->setProbMiss(options_.octomap_prob_miss);
+    } else {
+        std::istringstream bt_in(bytes);
+        if (!octree_->readBinary(bt_in))
+            throw std::runtime_error("CTraversabilityMap: corrupt OctoMap data");
+    }
     obstacle_points_dirty_ = true;
 }
 
@@ -533,21 +557,8 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
         std::ifstream file(tree_path, std::ios::binary);
         if (!file) throw std::runtime_error(tree_path + ": cannot open");
         std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-        const std::string problem = otNodeStreamProblem(bytes);
-        if (!problem.empty()) throw std::runtime_error(tree_path + ": " + problem);
-        std::istringstream in(std::move(bytes));
-        std::unique_ptr<octomap::AbstractOcTree> any(octomap::AbstractOcTree::read(in));
-        auto* tree = dynamic_cast<octomap::OcTree*>(any.get());
-        if (!tree || in.fail())
-            throw std::runtime_error(tree_path +
-                                     ": not an OctoMap OcTree file (.ot), or truncated");
-        if (std::abs(tree->getResolution() - loaded.options_.octomap_resolution) > 1e-9)
-            throw std::runtime_error(tree_path + ": voxels of " +
-                                     std::to_string(tree->getResolution()) +
-                                     " m, but the grid file says octomap_resolution=" +
-                                     std::to_string(loaded.options_.octomap_resolution));
-        any.release();
-        loaded.octree_.reset(tree);
+        loaded.octree_ =
+            readOtTree(std::move(bytes), loaded.options_.octomap_resolution, tree_path);
         loaded.octree_->setProbHit(loaded.options_.octomap_prob_hit);
         loaded.octree_->setProbMiss(loaded.options_.octomap_prob_miss);
     }
