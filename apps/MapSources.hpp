@@ -59,9 +59,10 @@ struct PoseFileSource {
     std::optional<mrpt::poses::CPose3D> at(double t, std::size_t frame) const;
 };
 
-/// Maps every LiDAR observation of the rawlog o.input.
+/// Maps every LiDAR observation of the rawlog o.input; `notes` (listening to the map's filter)
+/// print above its progress line.
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-               const std::optional<PoseFileSource>& pose_file);
+               const std::optional<PoseFileSource>& pose_file, Notes& notes);
 
 /// The folder whose poses.txt and calib.txt go with `scans` (travel::listScans(input)): the
 /// KITTI sequence folder, also when `input` is its velodyne/ folder, else `input` itself.

@@ -164,8 +164,9 @@ int run(int argc, char** argv) {
 
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
+    travel::apps::Notes notes("travel-map", o.verbosity);  // outlives the map's filter
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    travel::apps::configureMrptLogging(map.filter(), o.verbosity, travel::apps::MrptLogRole::Notes);
+    notes.listen(map.filter());
     // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
     const bool kitti = fs::is_directory(o.input) || travel::isScanPath(o.input);
     if (!kitti) flags.requireAutoFormat("rawlogs (-f is for scan inputs)");
@@ -187,7 +188,7 @@ int run(int argc, char** argv) {
     if (kitti)
         travel::apps::mapKitti(o, *scans, map, stats, pose_file);
     else
-        travel::apps::mapRawlog(o, map, stats, pose_file);
+        travel::apps::mapRawlog(o, map, stats, pose_file, notes);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double map_cpu_seconds = cpuSeconds() - cpu_start;
     if (stats.inserted == 0 && stats.no_pose > 0)
