@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -36,12 +37,17 @@
 
 namespace travel::apps {
 
+/// The app's own flags for configuration keys (travel-map's --resolution): set them in `config`.
+using AppConfigFlags = std::function<void(Config& config)>;
+
 /// --preset (already applied to `config` by the caller), then --config (every section), then
-/// each --set (KEY=VALUE or SECTION.KEY=VALUE), then the cross-key checks: the order every app
-/// documents.
+/// the app's own flags for configuration keys, then each --set (KEY=VALUE or SECTION.KEY=VALUE),
+/// then the cross-key checks: the order every app documents.
 inline void applyConfigSources(const std::string& config_file,
-                               const std::vector<std::string>& overrides, Config& config) {
+                               const std::vector<std::string>& overrides, Config& config,
+                               const AppConfigFlags& app_flags = {}) {
     if (!config_file.empty()) applyConfigFile(config_file, config);
+    if (app_flags) app_flags(config);
     for (const std::string& kv : overrides) applyConfigOverride(kv, config);  // errors quote kv
     config.validate();
 }
@@ -64,7 +70,8 @@ struct PrintConfigFlag {
 
 /// The configuration flags of the apps, one dialect: -p/--preset NAME, -c/--config FILE,
 /// --set [SECTION.]KEY=VALUE (repeatable), --print-config. load() applies them in that order on
-/// top of `defaults` (preset, file, each --set, then the cross-key checks).
+/// top of `defaults` (preset, file, the app's own flags for configuration keys, each --set, then
+/// the cross-key checks).
 struct ConfigFlags {
     mutable TCLAP::ValueArg<std::string> preset;  // TCLAP's getValue() is not const
     mutable TCLAP::ValueArg<std::string> config;
@@ -88,10 +95,10 @@ struct ConfigFlags {
               false, "[SECTION.]KEY=VALUE", cmd),
           print_config(cmd) {}
 
-    Config load(Config defaults = {}) const {
+    Config load(Config defaults = {}, const AppConfigFlags& app_flags = {}) const {
         if (!preset.getValue().empty())
             applyConfigFile(findPresetFile(preset.getValue()), defaults);
-        applyConfigSources(config.getValue(), set.getValue(), defaults);
+        applyConfigSources(config.getValue(), set.getValue(), defaults, app_flags);
         return defaults;
     }
     /// Prints the configuration and returns true when --print-config was given.

@@ -24,7 +24,7 @@ namespace travel::apps {
 struct Options {
     std::string input, output_dir, poses, calib;
     std::string extent;
-    double resolution = 0;
+    std::optional<double> resolution;  ///< --resolution, when given
     long max_frames = 0;
     travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
     Verbosity verbosity = Verbosity::Normal;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -55,7 +56,7 @@ void applyGridFlags(const Options& o, travel::MapSection& map) {
                                      o.extent + "'");
         map.min_x = v[0], map.max_x = v[1], map.min_y = v[2], map.max_y = v[3];
     }
-    if (o.resolution > 0) map.resolution = o.resolution;
+    if (o.resolution) map.resolution = *o.resolution;
 }
 
 /// CPU time of the process so far, every thread [s].
@@ -108,6 +109,11 @@ int run(int argc, char** argv) {
         "MIN_X,MAX_X,MIN_Y,MAX_Y", cmd);
     TCLAP::ValueArg<double> resolution("", "resolution", "Grid cell side [m] (default 0.2)", false,
                                        0, "M", cmd);
+    line.checks.push_back([&resolution] {
+        if (resolution.isSet() &&
+            !(resolution.getValue() > 0 && std::isfinite(resolution.getValue())))
+            throw travel::apps::usageError("--resolution must be > 0 (metres)");
+    });
     TCLAP::ValueArg<std::string> poses("", "poses", "Pose file (TUM or KITTI format)", false, "",
                                        "FILE", cmd);
     TCLAP::ValueArg<std::string> calib("", "calib", "KITTI calib.txt (Tr: velodyne -> cam0)", false,
@@ -128,7 +134,7 @@ int run(int argc, char** argv) {
 
     Options o;
     o.extent = extent.getValue();
-    o.resolution = resolution.getValue();
+    if (resolution.isSet()) o.resolution = resolution.getValue();
     o.poses = poses.getValue();
     o.calib = calib.getValue();
     o.max_frames = max_frames.count();
@@ -146,17 +152,12 @@ int run(int argc, char** argv) {
     const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && print) std::cerr << "travel-map: " << note << "\n";
 
-    // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
+    // An 80 m x 80 m grid unless the configuration or --extent says otherwise; --set last.
     travel::Config defaults;
     defaults.map.min_x = defaults.map.min_y = -40;
     defaults.map.max_x = defaults.map.max_y = 40;
-    travel::Config configuration = flags.config.load(defaults);
-    try {
-        applyGridFlags(o, configuration.map);
-        configuration.validate();
-    } catch (const travel::ConfigError& e) {
-        throw std::runtime_error(std::string("--extent/--resolution: ") + e.what());
-    }
+    const travel::Config configuration = flags.config.load(
+        defaults, [&o](travel::Config& config) { applyGridFlags(o, config.map); });
     if (flags.config.print(configuration)) return 0;
     o.input = flags.inputPath();
     o.output_dir = flags.outputPath();

@@ -179,6 +179,23 @@ expect_failure_mentioning("--extent" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 1,2,3)
 expect_failure_mentioning("--probe" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --probe 1)
+# --resolution must be > 0; like the other configuration flags it comes before each --set.
+foreach(bad 0 -1 " -0.5")
+  expect_failure_mentioning("--resolution" ${TRAVEL_MAP}
+    -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --resolution ${bad})
+endforeach()
+foreach(args "--resolution;0.3" "--resolution;0.1;--set;map.resolution=0.5"
+             "--set;map.resolution=0.5;--resolution;0.1")
+  expect_success(${TRAVEL_MAP} ${args} --print-config)
+  string(REGEX MATCH "\nmap:\n(\n|  [^\n]*\n)*  resolution: ([0-9.]+)\n" found "${last_output}")
+  set(want 0.5)
+  if(args STREQUAL "--resolution;0.3")
+    set(want 0.3)
+  endif()
+  if(NOT CMAKE_MATCH_2 STREQUAL want)
+    message(FATAL_ERROR "${args}: map.resolution '${CMAKE_MATCH_2}', want ${want}")
+  endif()
+endforeach()
 expect_failure_mentioning("min_x" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 5,1,0,1)
 message(STATUS "travel-map CLI: all checks passed")
