@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -207,6 +208,40 @@ struct CommonFlags {
   private:
     bool repeatable_;
 };
+
+/// The one rule for a number inside a flag's value that TCLAP does not read itself (the parts of
+/// --probe X,Y and --extent): decimal as TCLAP reads numeric flags (2.5, -1e3, +.5), finite,
+/// nothing after it: no hex, no nan/inf. A usage error naming `flag` otherwise.
+inline double parseNumber(const std::string& text, const std::string& flag) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    const std::size_t last = text.find_last_not_of(" \t");
+    const char* begin = text.data() + (first == std::string::npos ? text.size() : first);
+    const char* end = last == std::string::npos ? begin : text.data() + last + 1;
+    if (end - begin > 1 && *begin == '+' && begin[1] != '-') ++begin;
+    double value = 0;
+    const auto [stop, error] = std::from_chars(begin, end, value, std::chars_format::general);
+    if (begin == end || error != std::errc() || stop != end || !std::isfinite(value))
+        throw usageError(flag + ": '" + text + "' is not a finite decimal number");
+    return value;
+}
+
+/// `count` comma-separated numbers (parseNumber each) of `flag`'s value `text`; `expected`
+/// names them for the message ("X,Y in metres").
+inline std::vector<double> parseNumbers(const std::string& text, std::size_t count,
+                                        const std::string& flag, const std::string& expected) {
+    std::vector<std::string> parts(1);
+    for (const char c : text) {
+        if (c == ',')
+            parts.emplace_back();
+        else
+            parts.back().push_back(c);
+    }
+    if (parts.size() != count)
+        throw usageError(flag + ": expected " + expected + ", got '" + text + "'");
+    std::vector<double> values;
+    for (const std::string& part : parts) values.push_back(parseNumber(part, flag));
+    return values;
+}
 
 /// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
 struct PictureFlags {

@@ -48,12 +48,8 @@ using travel::apps::Stats;
 /// --extent / --resolution, the map section's grid keys as flags.
 void applyGridFlags(const Options& o, travel::MapSection& map) {
     if (!o.extent.empty()) {
-        double v[4];
-        char tail = 0;
-        if (std::sscanf(o.extent.c_str(), "%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &tail) !=
-            4)
-            throw std::runtime_error("--extent: expected MIN_X,MAX_X,MIN_Y,MAX_Y in metres, got '" +
-                                     o.extent + "'");
+        const std::vector<double> v = travel::apps::parseNumbers(
+            o.extent, 4, "--extent", "MIN_X,MAX_X,MIN_Y,MAX_Y in metres");
         map.min_x = v[0], map.max_x = v[1], map.min_y = v[2], map.max_y = v[3];
     }
     if (o.resolution) map.resolution = *o.resolution;
@@ -143,11 +139,9 @@ int run(int argc, char** argv) {
     const bool print = o.verbosity != travel::apps::Verbosity::Quiet;
     std::vector<std::pair<double, double>> probes;
     for (const std::string& text : probe.getValue()) {
-        double x = 0, y = 0;
-        char tail = 0;
-        if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
-            throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
-        probes.emplace_back(x, y);
+        const std::vector<double> xy =
+            travel::apps::parseNumbers(text, 2, "--probe", "X,Y in metres");
+        probes.emplace_back(xy[0], xy[1]);
     }
     const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && print) std::cerr << "travel-map: " << note << "\n";

@@ -177,8 +177,15 @@ expect_failure_mentioning("unknown key 'colour'" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --set colour=red)
 expect_failure_mentioning("--extent" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent 1,2,3)
-expect_failure_mentioning("--probe" ${TRAVEL_MAP}
-  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --probe 1)
+# --probe and --extent read numbers as every numeric flag does: finite decimals, nothing after.
+foreach(bad 1 "nan,0" "1e999,0" "0x10,0" "1,2x" "1,,2" "inf,0")
+  expect_failure_mentioning("--probe" ${TRAVEL_MAP}
+    -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --probe ${bad})
+endforeach()
+foreach(bad "nan,1,0,1" "0x10,20,0,1" "0,1,0,1m")
+  expect_failure_mentioning("--extent" ${TRAVEL_MAP}
+    -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --extent ${bad})
+endforeach()
 # --resolution must be > 0; like the other configuration flags it comes before each --set.
 foreach(bad 0 -1 " -0.5")
   expect_failure_mentioning("--resolution" ${TRAVEL_MAP}
