@@ -11,8 +11,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -36,12 +38,17 @@
 
 namespace travel::apps {
 
+/// The app's own flags for configuration keys (travel-map's --resolution): set them in `config`.
+using AppConfigFlags = std::function<void(Config& config)>;
+
 /// --preset (already applied to `config` by the caller), then --config (every section), then
-/// each --set (KEY=VALUE or SECTION.KEY=VALUE), then the cross-key checks: the order every app
-/// documents.
+/// the app's own flags for configuration keys, then each --set (KEY=VALUE or SECTION.KEY=VALUE),
+/// then the cross-key checks: the order every app documents.
 inline void applyConfigSources(const std::string& config_file,
-                               const std::vector<std::string>& overrides, Config& config) {
+                               const std::vector<std::string>& overrides, Config& config,
+                               const AppConfigFlags& app_flags = {}) {
     if (!config_file.empty()) applyConfigFile(config_file, config);
+    if (app_flags) app_flags(config);
     for (const std::string& kv : overrides) applyConfigOverride(kv, config);  // errors quote kv
     config.validate();
 }
@@ -64,7 +71,8 @@ struct PrintConfigFlag {
 
 /// The configuration flags of the apps, one dialect: -p/--preset NAME, -c/--config FILE,
 /// --set [SECTION.]KEY=VALUE (repeatable), --print-config. load() applies them in that order on
-/// top of `defaults` (preset, file, each --set, then the cross-key checks).
+/// top of `defaults` (preset, file, the app's own flags for configuration keys, each --set, then
+/// the cross-key checks).
 struct ConfigFlags {
     mutable TCLAP::ValueArg<std::string> preset;  // TCLAP's getValue() is not const
     mutable TCLAP::ValueArg<std::string> config;
@@ -88,10 +96,10 @@ struct ConfigFlags {
               false, "[SECTION.]KEY=VALUE", cmd),
           print_config(cmd) {}
 
-    Config load(Config defaults = {}) const {
+    Config load(Config defaults = {}, const AppConfigFlags& app_flags = {}) const {
         if (!preset.getValue().empty())
             applyConfigFile(findPresetFile(preset.getValue()), defaults);
-        applyConfigSources(config.getValue(), set.getValue(), defaults);
+        applyConfigSources(config.getValue(), set.getValue(), defaults, app_flags);
         return defaults;
     }
     /// Prints the configuration and returns true when --print-config was given.
@@ -200,6 +208,40 @@ struct CommonFlags {
   private:
     bool repeatable_;
 };
+
+/// The one rule for a number inside a flag's value that TCLAP does not read itself (the parts of
+/// --probe X,Y and --extent): decimal as TCLAP reads numeric flags (2.5, -1e3, +.5), finite,
+/// nothing after it: no hex, no nan/inf. A usage error naming `flag` otherwise.
+inline double parseNumber(const std::string& text, const std::string& flag) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    const std::size_t last = text.find_last_not_of(" \t");
+    const char* begin = text.data() + (first == std::string::npos ? text.size() : first);
+    const char* end = last == std::string::npos ? begin : text.data() + last + 1;
+    if (end - begin > 1 && *begin == '+' && begin[1] != '-') ++begin;
+    double value = 0;
+    const auto [stop, error] = std::from_chars(begin, end, value, std::chars_format::general);
+    if (begin == end || error != std::errc() || stop != end || !std::isfinite(value))
+        throw usageError(flag + ": '" + text + "' is not a finite decimal number");
+    return value;
+}
+
+/// `count` comma-separated numbers (parseNumber each) of `flag`'s value `text`; `expected`
+/// names them for the message ("X,Y in metres").
+inline std::vector<double> parseNumbers(const std::string& text, std::size_t count,
+                                        const std::string& flag, const std::string& expected) {
+    std::vector<std::string> parts(1);
+    for (const char c : text) {
+        if (c == ',')
+            parts.emplace_back();
+        else
+            parts.back().push_back(c);
+    }
+    if (parts.size() != count)
+        throw usageError(flag + ": expected " + expected + ", got '" + text + "'");
+    std::vector<double> values;
+    for (const std::string& part : parts) values.push_back(parseNumber(part, flag));
+    return values;
+}
 
 /// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
 struct PictureFlags {

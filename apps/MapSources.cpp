@@ -80,12 +80,17 @@ class RejectionNotes {
 }  // namespace
 
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-               const std::optional<PoseFileSource>& pose_file) {
+               const std::optional<PoseFileSource>& pose_file, Notes& notes) {
     travel_mrpt::RawlogReader reader(o.input);
     // Pose sources, by priority: the pose file, then the rawlog's motion (SensoryFrame actions
     // composed from the identity, else the latest CObservationOdometry record).
     travel_mrpt::RawlogMotion motion(map.filter());
     ProgressLine progress("travel-map", 0, o.verbosity);
+    notes.attach(&progress);
+    struct Detach {
+        Notes& notes;
+        ~Detach() { notes.attach(nullptr); }
+    } detach{notes};
     bool warned_no_pose = false;
     RejectionNotes rejections;
     long record = -1;  // the index of the record being read

@@ -24,7 +24,7 @@ namespace travel::apps {
 struct Options {
     std::string input, output_dir, poses, calib;
     std::string extent;
-    double resolution = 0;
+    std::optional<double> resolution;  ///< --resolution, when given
     long max_frames = 0;
     travel::ScanFormat format = travel::ScanFormat::Auto;  // -f, for scan folders
     Verbosity verbosity = Verbosity::Normal;
@@ -59,9 +59,10 @@ struct PoseFileSource {
     std::optional<mrpt::poses::CPose3D> at(double t, std::size_t frame) const;
 };
 
-/// Maps every LiDAR observation of the rawlog o.input.
+/// Maps every LiDAR observation of the rawlog o.input; `notes` (listening to the map's filter)
+/// print above its progress line.
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
-               const std::optional<PoseFileSource>& pose_file);
+               const std::optional<PoseFileSource>& pose_file, Notes& notes);
 
 /// The folder whose poses.txt and calib.txt go with `scans` (travel::listScans(input)): the
 /// KITTI sequence folder, also when `input` is its velodyne/ folder, else `input` itself.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 
 namespace travel::apps {
 
@@ -18,6 +19,37 @@ void configureMrptLogging(mrpt::system::COutputLogger& logger, Verbosity verbosi
                               : verbosity == Verbosity::Quiet ? LVL_ERROR
                               : role == MrptLogRole::Notes    ? LVL_INFO
                                                               : LVL_WARN);
+}
+
+void Notes::listen(mrpt::system::COutputLogger& logger) {
+    configureMrptLogging(logger, verbosity_, MrptLogRole::Notes);
+    logger.logging_enable_console_output = false;
+    logger.logRegisterCallback([this](std::string_view msg, mrpt::system::VerbosityLevel,
+                                      std::string_view,
+                                      const mrpt::Clock::time_point&) { once(std::string(msg)); });
+}
+
+void Notes::attach(ProgressLine* progress) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_ = progress;
+}
+
+void Notes::once(const std::string& text) {
+    bool first = false;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        first = seen_.insert(text).second;
+    }
+    if (first) say(app_ + ": note: " + text);
+}
+
+void Notes::say(const std::string& line) {
+    if (verbosity_ == Verbosity::Quiet) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (progress_)
+        progress_->note(line);
+    else
+        std::cerr << line << "\n";
 }
 
 MuteLibraryStderr::MuteLibraryStderr() {

@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cstddef>
+#include <mutex>
+#include <set>
 #include <string>
 
 #include "travel/MountEstimator.hpp"
@@ -110,6 +112,33 @@ class ProgressLine {
     std::chrono::steady_clock::time_point start_, last_draw_;
     bool printed_ = false;  ///< at least one line was written
     double next_fraction_ = 0.1;
+};
+
+/// An app's notes for the user on stderr, none with -q: "<app>: note: <text>" once per text, on
+/// a line of their own above the progress line while one is attached. listen() routes our
+/// TravelFilter's COutputLogger here: MRPT would print its INFO lines on stdout with a time stamp
+/// ("[12:00:00|INFO |TravelFilter] ..."), and stdout carries only the app's own output.
+class Notes {
+  public:
+    Notes(std::string app, Verbosity verbosity) : app_(std::move(app)), verbosity_(verbosity) {}
+    Notes(const Notes&) = delete;
+    Notes& operator=(const Notes&) = delete;
+    /// Sets `logger`'s level (configureMrptLogging, MrptLogRole::Notes), turns its console
+    /// output off and takes its messages as notes; this object must outlive the logger.
+    void listen(mrpt::system::COutputLogger& logger);
+    /// Lines go above `progress` from now on; nullptr: straight to stderr.
+    void attach(ProgressLine* progress);
+    /// "<app>: note: <text>", the first time `text` comes.
+    void once(const std::string& text);
+    /// `line` as it is.
+    void say(const std::string& line);
+
+  private:
+    std::string app_;
+    Verbosity verbosity_;
+    std::mutex mutex_;  // notes may come from a worker thread (travel-map -j 2)
+    std::set<std::string> seen_;
+    ProgressLine* progress_ = nullptr;
 };
 
 }  // namespace travel::apps

@@ -118,17 +118,12 @@ class RawlogSegmenter {
     RawlogSegmenter(const Options& options, const travel_mrpt::TravelFilterOptions& filter_options)
         : options_(options),
           label_filter_(filter_options.sensor_label),
+          notes_(options.app, travel::apps::verbosityFrom(options.quiet, options.verbose)),
           filter_(filter_options),
           csv_(options.csv),
           reference_(options.label_reference) {
         // Notes from the filter (no motion data, ...) once each, in our own format.
-        travel::apps::configureMrptLogging(
-            filter_, travel::apps::verbosityFrom(options.quiet, options.verbose),
-            travel::apps::MrptLogRole::Notes);
-        filter_.logging_enable_console_output = false;
-        filter_.logRegisterCallback(
-            [this](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view,
-                   const mrpt::Clock::time_point&) { noteOnce(std::string(msg)); });
+        notes_.listen(filter_);
         if (!options.png_prefix.empty()) {
             createParentFolder(options.png_prefix + "_x");
             birds_eye_.size_px = options.png_size;
@@ -137,7 +132,7 @@ class RawlogSegmenter {
     }
 
     /// Notes and warnings go through `progress` from now on (it must outlive this object's use).
-    void attach(ProgressLine& progress) { progress_ = &progress; }
+    void attach(ProgressLine& progress) { notes_.attach(&progress); }
 
     /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
     bool processMotion(const mrpt::serialization::CSerializable& record) {
@@ -243,31 +238,23 @@ class RawlogSegmenter {
             totals_.tracks = std::max(totals_.tracks, c.track_id);
         }
     }
-    void noteOnce(const std::string& note) {
-        if (notes_.insert(note).second && !options_.quiet) say(options_.app + ": note: " + note);
-    }
+    void noteOnce(const std::string& note) { notes_.once(note); }
     // On a line of its own above the progress line, once one is attached.
-    void say(const std::string& line) {
-        if (progress_)
-            progress_->note(line);
-        else
-            std::cerr << line << "\n";
-    }
+    void say(const std::string& line) { notes_.say(line); }
 
     const Options& options_;
     std::regex label_filter_;
+    Notes notes_;  // before filter_, which sends it notes
     travel_mrpt::TravelFilter filter_;
     travel_mrpt::RawlogMotion motion_{filter_};
     CsvLog csv_;
     ReferenceLog reference_;
     travel_mrpt::BirdsEyeOptions birds_eye_;
     mrpt::img::CImage image_;  // reused across frames
-    std::set<std::string> notes_;
     travel_mrpt::LabelledOutputPool outputs_;
     Totals totals_;
     travel_mrpt::TravelFrame frame_;  // reused across frames (processObservation)
     travel_mrpt::TravelFilter::FrameJob job_;
-    ProgressLine* progress_ = nullptr;
 };
 
 /// The summary on stdout.

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -47,15 +48,11 @@ using travel::apps::Stats;
 /// --extent / --resolution, the map section's grid keys as flags.
 void applyGridFlags(const Options& o, travel::MapSection& map) {
     if (!o.extent.empty()) {
-        double v[4];
-        char tail = 0;
-        if (std::sscanf(o.extent.c_str(), "%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &tail) !=
-            4)
-            throw std::runtime_error("--extent: expected MIN_X,MAX_X,MIN_Y,MAX_Y in metres, got '" +
-                                     o.extent + "'");
+        const std::vector<double> v = travel::apps::parseNumbers(
+            o.extent, 4, "--extent", "MIN_X,MAX_X,MIN_Y,MAX_Y in metres");
         map.min_x = v[0], map.max_x = v[1], map.min_y = v[2], map.max_y = v[3];
     }
-    if (o.resolution > 0) map.resolution = o.resolution;
+    if (o.resolution) map.resolution = *o.resolution;
 }
 
 /// CPU time of the process so far, every thread [s].
@@ -108,6 +105,11 @@ int run(int argc, char** argv) {
         "MIN_X,MAX_X,MIN_Y,MAX_Y", cmd);
     TCLAP::ValueArg<double> resolution("", "resolution", "Grid cell side [m] (default 0.2)", false,
                                        0, "M", cmd);
+    line.checks.push_back([&resolution] {
+        if (resolution.isSet() &&
+            !(resolution.getValue() > 0 && std::isfinite(resolution.getValue())))
+            throw travel::apps::usageError("--resolution must be > 0 (metres)");
+    });
     TCLAP::ValueArg<std::string> poses("", "poses", "Pose file (TUM or KITTI format)", false, "",
                                        "FILE", cmd);
     TCLAP::ValueArg<std::string> calib("", "calib", "KITTI calib.txt (Tr: velodyne -> cam0)", false,
@@ -128,7 +130,7 @@ int run(int argc, char** argv) {
 
     Options o;
     o.extent = extent.getValue();
-    o.resolution = resolution.getValue();
+    if (resolution.isSet()) o.resolution = resolution.getValue();
     o.poses = poses.getValue();
     o.calib = calib.getValue();
     o.max_frames = max_frames.count();
@@ -137,26 +139,19 @@ int run(int argc, char** argv) {
     const bool print = o.verbosity != travel::apps::Verbosity::Quiet;
     std::vector<std::pair<double, double>> probes;
     for (const std::string& text : probe.getValue()) {
-        double x = 0, y = 0;
-        char tail = 0;
-        if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
-            throw std::runtime_error("--probe: expected X,Y in metres, got '" + text + "'");
-        probes.emplace_back(x, y);
+        const std::vector<double> xy =
+            travel::apps::parseNumbers(text, 2, "--probe", "X,Y in metres");
+        probes.emplace_back(xy[0], xy[1]);
     }
     const std::string note = travel::apps::applyMemoryLimit(max_memory.mib());
     if (!note.empty() && print) std::cerr << "travel-map: " << note << "\n";
 
-    // An 80 m x 80 m grid unless the configuration or --extent says otherwise.
+    // An 80 m x 80 m grid unless the configuration or --extent says otherwise; --set last.
     travel::Config defaults;
     defaults.map.min_x = defaults.map.min_y = -40;
     defaults.map.max_x = defaults.map.max_y = 40;
-    travel::Config configuration = flags.config.load(defaults);
-    try {
-        applyGridFlags(o, configuration.map);
-        configuration.validate();
-    } catch (const travel::ConfigError& e) {
-        throw std::runtime_error(std::string("--extent/--resolution: ") + e.what());
-    }
+    const travel::Config configuration = flags.config.load(
+        defaults, [&o](travel::Config& config) { applyGridFlags(o, config.map); });
     if (flags.config.print(configuration)) return 0;
     o.input = flags.inputPath();
     o.output_dir = flags.outputPath();
@@ -164,8 +159,9 @@ int run(int argc, char** argv) {
 
     travel_mrpt::registerClasses();
     const auto start = Clock::now();
+    travel::apps::Notes notes("travel-map", o.verbosity);  // outlives the map's filter
     travel_mrpt::CTraversabilityMap map(mapOptions(configuration));
-    travel::apps::configureMrptLogging(map.filter(), o.verbosity, travel::apps::MrptLogRole::Notes);
+    notes.listen(map.filter());
     // Scans (a folder, a KITTI sequence or one scan file) or else a rawlog.
     const bool kitti = fs::is_directory(o.input) || travel::isScanPath(o.input);
     if (!kitti) flags.requireAutoFormat("rawlogs (-f is for scan inputs)");
@@ -187,7 +183,7 @@ int run(int argc, char** argv) {
     if (kitti)
         travel::apps::mapKitti(o, *scans, map, stats, pose_file);
     else
-        travel::apps::mapRawlog(o, map, stats, pose_file);
+        travel::apps::mapRawlog(o, map, stats, pose_file, notes);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double map_cpu_seconds = cpuSeconds() - cpu_start;
     if (stats.inserted == 0 && stats.no_pose > 0)

@@ -13,8 +13,10 @@
 // <world>_sources.png (side by side).
 #include <mrpt/img/CImage.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -75,7 +77,8 @@ int run(int argc, char** argv) {
                                         60.0, "S", cmd);
     TCLAP::ValueArg<double> threshold_arg(
         "", "threshold", "Height-threshold source: min height [m]", false, 0.25, "M", cmd);
-    TCLAP::ValueArg<unsigned> seed_arg(
+    // long, not unsigned: TCLAP reads "-3" into an unsigned as 4294967293.
+    TCLAP::ValueArg<long> seed_arg(
         "", "seed",
         "Move the world's kerbs and boxes by a seeded random shift (up to +/-0.3 m; 0: as in "
         "the file)",
@@ -91,6 +94,18 @@ int run(int argc, char** argv) {
         "", "no-plan",
         "Map source: no global path (the goal is the reactive navigator's only target)", cmd);
     TCLAP::SwitchArg no_map_arg("", "no-map-save", "Map source: do not save the map", cmd);
+    std::vector<SourceKind> sources;
+    line.checks.push_back([&] {
+        if (!(timeout_arg.getValue() > 0))
+            throw travel::apps::usageError("-t/--timeout must be > 0 (simulated seconds)");
+        if (seed_arg.getValue() < 0 || seed_arg.getValue() > long(UINT32_MAX))
+            throw travel::apps::usageError("--seed must be 0 to 4294967295");
+        try {
+            sources = parseSources(source_arg.getValue());
+        } catch (const std::invalid_argument& e) {
+            throw travel::apps::usageError(std::string("-s/--source: ") + e.what());
+        }
+    });
     if (const auto code = line.parse(argc, argv)) return *code;
     // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then --preset,
     // --config, each --set.
@@ -104,14 +119,10 @@ int run(int argc, char** argv) {
     flags.requireAutoFormat("world files");
     const bool quiet = flags.quiet();
 
-    const World world = shiftedObstacles(
-        loadWorld(findShared(flags.inputPath("ramp_kerb.world"), "worlds")), seed_arg.getValue());
+    const World world =
+        shiftedObstacles(loadWorld(findShared(flags.inputPath("ramp_kerb.world"), "worlds")),
+                         static_cast<unsigned>(seed_arg.getValue()));
     const std::string config = findShared(nav_config_arg.getValue(), "configs/nav");
-    std::vector<SourceKind> sources;
-    if (source_arg.getValue() == "all")
-        sources = {SourceKind::Travel, SourceKind::Raw, SourceKind::Threshold};
-    else
-        sources = {parseSourceKind(source_arg.getValue())};
     const fs::path out_dir = flags.outputPath(".");
     travel::apps::createFolder(out_dir.string());
 

@@ -193,11 +193,11 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     o.max_memory_mib = max_memory.mib();
     o.jobs = jobs.count();
 
-    configuration = flags.config.load();
-    if (!o.sensor_label_regex.empty()) configuration.filter.sensor_label = o.sensor_label_regex;
-    if (o.ignore_sensor_pose) configuration.filter.use_sensor_pose = false;
-    if (track.getValue()) configuration.filter.track_objects = true;
-    configuration.validate();
+    configuration = flags.config.load({}, [&](travel::Config& config) {
+        if (!o.sensor_label_regex.empty()) config.filter.sensor_label = o.sensor_label_regex;
+        if (o.ignore_sensor_pose) config.filter.use_sensor_pose = false;
+        if (track.getValue()) config.filter.track_objects = true;
+    });
     if (flags.config.print(configuration)) o.exit_code = 0;
     return o;
 }

@@ -99,10 +99,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
     const travel::apps::MemoryLimitFlag max_memory(cmd);
     std::optional<int> exit_code = line.parse(argc, argv);
     if (exit_code) return *exit_code ? kError : 0;
-    configuration = flags.config.load();
-    if (label.isSet()) configuration.filter.sensor_label = label.getValue();
-    if (ignore_pose.getValue()) configuration.filter.use_sensor_pose = false;
-    configuration.validate();
+    configuration = flags.config.load({}, [&](travel::Config& config) {
+        if (label.isSet()) config.filter.sensor_label = label.getValue();
+        if (ignore_pose.getValue()) config.filter.use_sensor_pose = false;
+    });
     if (flags.config.print(configuration)) return 0;
 
     o.replay.input = flags.inputPath();

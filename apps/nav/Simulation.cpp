@@ -48,8 +48,11 @@ const char* toString(SourceKind kind) {
     return nameOf(kSourceKindNames, kind);
 }
 
-SourceKind parseSourceKind(const std::string& name) {
-    return valueFromName(kSourceKindNames, name, "obstacle source");
+std::vector<SourceKind> parseSources(const std::string& name) {
+    if (name == "all") return {SourceKind::Travel, SourceKind::Raw, SourceKind::Threshold};
+    if (const std::optional<SourceKind> kind = findByName(kSourceKindNames, name)) return {*kind};
+    throw std::invalid_argument("unknown obstacle source '" + name + "' (expected " +
+                                namesOf(kSourceKindNames, ", ", ", ") + " or all)");
 }
 
 const char* toString(Outcome outcome) {

@@ -36,8 +36,9 @@ namespace travel::navsim {
 
 enum class SourceKind { Travel, Raw, Threshold, Map };
 const char* toString(SourceKind kind);
-/// "travel", "raw", "threshold", "map"; throws std::invalid_argument otherwise.
-SourceKind parseSourceKind(const std::string& name);
+/// -s/--source: "travel", "raw", "threshold", "map", or "all" (the per-frame sources travel, raw
+/// and threshold); throws std::invalid_argument listing every valid name otherwise.
+std::vector<SourceKind> parseSources(const std::string& name);
 
 enum class Outcome { Goal, Collision, NavigatorGaveUp, Timeout };
 const char* toString(Outcome outcome);

@@ -71,6 +71,16 @@ endif()
 expect_failure_mentioning("nowhere.world" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/nowhere.world)
 expect_failure_mentioning("unknown obstacle source 'lidar'" ${TRAVEL_NAV_SIM} --source lidar
   -i flat_obstacles.world)
+expect_failure_mentioning("-s/--source: unknown obstacle source 'bogus' (expected travel, raw, threshold, map or all)"
+  ${TRAVEL_NAV_SIM} -s bogus -i flat_obstacles.world)
+expect_failure_mentioning("-t/--timeout must be > 0" ${TRAVEL_NAV_SIM} -t -1
+  -i flat_obstacles.world)
+expect_failure_mentioning("-t/--timeout must be > 0" ${TRAVEL_NAV_SIM} --timeout 0
+  -i flat_obstacles.world)
+foreach(bad -3 4294967296)
+  expect_failure_mentioning("--seed must be 0 to 4294967295" ${TRAVEL_NAV_SIM} --seed ${bad}
+    -i flat_obstacles.world -o ${WORK_DIR}/seed --timeout 1 --no-navlog)
+endforeach()
 file(WRITE ${WORK_DIR}/bad.world "start 0 0 0\ngoal 5 0\npole 1 1 0.1\n")
 expect_failure_mentioning("bad.world:3" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/bad.world)
 expect_failure_mentioning("tgf_resolution" ${TRAVEL_NAV_SIM} -i flat_obstacles.world

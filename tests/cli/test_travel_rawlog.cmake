@@ -121,6 +121,11 @@ endif()
 expect_failure_mentioning("no LiDAR observation processed" ${TRAVEL_RAWLOG}
                           -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/x.rawlog ${moving_config}
                           --sensor-label IMU)
+# --sensor-label, a flag for a configuration key, comes before each --set (docs/cli.md).
+expect_success(${TRAVEL_RAWLOG} --sensor-label A --set filter.sensor_label=B --print-config)
+if(NOT last_output MATCHES "\n  sensor_label: B\n")
+  message(FATAL_ERROR "--set filter.sensor_label=B does not override --sensor-label A")
+endif()
 file(WRITE ${WORK_DIR}/typo.yaml "preset: vlp16\nsensor_heigth: 1.8\n")
 expect_failure_mentioning("sensor_heigth" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
                           -o ${WORK_DIR}/x.rawlog --config ${WORK_DIR}/typo.yaml)

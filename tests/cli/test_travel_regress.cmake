@@ -63,6 +63,10 @@ file(WRITE ${WORK_DIR}/loose.yaml "regress:\n  min_class_agreement: 90\n  min_cl
   "  max_split_clusters: 100\n  max_merged_clusters: 100\n  max_changed_nodes: 1000\n")
 regress(0 ARGS -c ${WORK_DIR}/loose.yaml --set sensor_height=0.8 MATCH "PASS")
 
+# --sensor-label comes before each --set (docs/cli.md).
+regress(0 ARGS --sensor-label A --set filter.sensor_label=B --print-config
+        MATCH "\n  sensor_label: B\n")
+
 # A golden frame without a replayed twin is reported, not skipped.
 regress(1 ARGS --sensor-label nothing MATCH "0 frames compared .*1 missing" "1 golden frames missing")
 
