@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -29,6 +28,7 @@
 #include "OrderedWork.hpp"  // defaultJobs
 #include "OutputFolder.hpp"
 #include "travel/Config.hpp"
+#include "travel/ConfigFields.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
@@ -209,19 +209,18 @@ struct CommonFlags {
     bool repeatable_;
 };
 
-/// The one rule for a number inside a flag's value that TCLAP does not read itself (the parts of
-/// --probe X,Y and --extent): decimal as TCLAP reads numeric flags (2.5, -1e3, +.5), finite,
-/// nothing after it: no hex, no nan/inf. A usage error naming `flag` otherwise.
+/// A number inside a flag's value that TCLAP does not read itself (the parts of --probe X,Y and
+/// --extent): by the configuration's rule (travel::fields::parse: decimal, finite, the whole
+/// text, locale-independent; no hex, no nan/inf), blanks around it allowed. A usage error naming
+/// `flag` otherwise.
 inline double parseNumber(const std::string& text, const std::string& flag) {
     const std::size_t first = text.find_first_not_of(" \t");
-    const std::size_t last = text.find_last_not_of(" \t");
-    const char* begin = text.data() + (first == std::string::npos ? text.size() : first);
-    const char* end = last == std::string::npos ? begin : text.data() + last + 1;
-    if (end - begin > 1 && *begin == '+' && begin[1] != '-') ++begin;
+    const std::string trimmed = first == std::string::npos
+                                    ? ""
+                                    : text.substr(first, text.find_last_not_of(" \t") + 1 - first);
     double value = 0;
-    const auto [stop, error] = std::from_chars(begin, end, value, std::chars_format::general);
-    if (begin == end || error != std::errc() || stop != end || !std::isfinite(value))
-        throw usageError(flag + ": '" + text + "' is not a finite decimal number");
+    const std::string why = fields::parse(trimmed, value);
+    if (!why.empty()) throw usageError(flag + ": " + why);
     return value;
 }
 

@@ -318,7 +318,8 @@ int run(int argc, char** argv) {
     TCLAP::CmdLine& cmd = line.cmd;
     std::vector<std::string> commands{"report", "sweep", "merges"};
     TCLAP::ValuesConstraint<std::string> command_values(commands);
-    TCLAP::UnlabeledValueArg<std::string> command("command", "report, sweep or merges", true, "",
+    // Not required by TCLAP: --print-config needs no command, as in every other app.
+    TCLAP::UnlabeledValueArg<std::string> command("command", "report, sweep or merges", false, "",
                                                   &command_values, cmd);
     const travel::apps::CommonFlags flags(line, true, "hdl64");
     TCLAP::MultiArg<std::string> labels(
@@ -344,6 +345,8 @@ int run(int argc, char** argv) {
     if (const auto exit_code = line.parse(argc, argv)) return *exit_code;
     const travel::Config configuration = flags.config.load();
     if (flags.config.print(configuration)) return 0;
+    if (!command.isSet())
+        throw travel::apps::usageError("missing the command: report, sweep or merges");
     travel::apps::preferLargePages(jobs.count());  // before any pipeline or thread
 
     const bool is_sweep = command.getValue() == "sweep";

@@ -40,6 +40,13 @@ string(FIND "${out}${err}" "USAGE" pos)
 if(NOT pos EQUAL -1)
   message(FATAL_ERROR "an unknown flag prints the whole usage:\n${out}${err}")
 endif()
+# --print-config alone prints the configuration (no input, output or command needed).
+expect_success(${EXE} --print-config)
+string(FIND "${last_output}" "travel:" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "${APP} --print-config printed no travel: section:\n${last_output}")
+endif()
+
 # -q and -v contradict.
 set(pre "")
 if(APP STREQUAL "travel-eval")

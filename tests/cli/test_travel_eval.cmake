@@ -53,6 +53,7 @@ expect_failure_mentioning("--method travel or travel-no-ttmf, not 'gpf'" ${TRAVE
 expect_failure_mentioning("merges diagnoses the object stage" ${TRAVEL_EVAL} merges ${io} --set cluster_objects=false)
 # Unknown subcommand; no scan; missing directory
 expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
+expect_failure_mentioning("missing the command: report, sweep or merges" ${TRAVEL_EVAL} ${io})
 expect_failure_mentioning("no scans" ${TRAVEL_EVAL} report ${io})
 expect_failure_mentioning("no_such_dir" ${TRAVEL_EVAL} report -i ${WORK_DIR}/no_such_dir
                           --labels ${WORK_DIR}/labels -o ${WORK_DIR}/out)
