@@ -61,11 +61,13 @@ inline bool samePath(const std::string& a, const std::string& b) {
         if (!ec) return same;
     }
     const auto resolved = [](const std::string& path) {
+        // Symlinks before "..": link/../x is beside the link's target, not beside the link.
         std::error_code error;
-        fs::path p = fs::absolute(path, error).lexically_normal();
+        const fs::path absolute = fs::absolute(path, error);
+        fs::path p = fs::weakly_canonical(absolute, error);
+        if (error) p = absolute.lexically_normal();
         if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();  // "dir/"
-        const fs::path canonical = fs::weakly_canonical(p, error);
-        return error ? p : canonical;
+        return p;
     };
     return resolved(a) == resolved(b);
 }

@@ -144,6 +144,16 @@ TEST(MapOptions, QuotedValuesAreReadWithoutTheQuotes) {
     const std::string message = errorOf("[m]\nsensor_label=\"Velodyne.*\n", "m");
     EXPECT_NE(message.find("sensor_label: unterminated quoted value"), std::string::npos)
         << message;
+    // Written back (a map's options are saved as ini text when it is serialized) and read
+    // again: the same text, comment characters and quotes included (quoted when needed).
+    for (const char* label : {"Velodyne.*", "front#1", "a;b", "'left", "\"right", " pad"}) {
+        TraversabilityMapOptions o, back;
+        o.travel.sensor_label = label;
+        mrpt::config::CConfigFileMemory ini;
+        o.saveToConfigFile(ini, "m");
+        back.loadFromConfigFile(ini, "m");
+        EXPECT_EQ(back.travel.sensor_label, label);
+    }
 }
 
 // Through CMultiMetricMap, MRPT's exception wrapper reads "...[x]..." as "file: [function]

@@ -56,6 +56,18 @@ if(EXISTS ${WORK_DIR}/out OR EXISTS ${WORK_DIR}/x.csv)
   message(FATAL_ERROR "a refused run created its outputs")
 endif()
 
+# A path through a symlink and then "..": beside the link's target, not beside the link, so
+# link/../000000.bin is no input here (it names elsewhere/000000.bin) and the run goes on.
+file(MAKE_DIRECTORY ${WORK_DIR}/elsewhere/dir)
+file(CREATE_LINK ${WORK_DIR}/elsewhere/dir ${seq}/velodyne/link SYMBOLIC)
+expect_success(${TRAVEL_KITTI} -q -i ${seq}/velodyne/000000.bin -o ${WORK_DIR}/linked
+               --csv ${seq}/velodyne/link/../000000.bin)
+expect_unchanged(${seq}/velodyne/000000.bin ${scan_md5})
+if(NOT EXISTS ${WORK_DIR}/elsewhere/000000.bin)
+  message(FATAL_ERROR "--csv link/../000000.bin was not written beside the link's target")
+endif()
+file(REMOVE ${seq}/velodyne/link)
+
 # --labels: a missing folder, and one that holds no label of these scans.
 expect_failure_mentioning("--labels directory '${WORK_DIR}/nope' does not exist"
                           ${TRAVEL_KITTI} -q -i ${seq} -o ${WORK_DIR}/out --labels ${WORK_DIR}/nope)

@@ -325,6 +325,17 @@ std::vector<IniEntry> readIni(const std::string& text, const std::string& source
     return entries;
 }
 
+std::string iniQuoted(const std::string& value) {
+    try {
+        if (iniValue(value) == value) return value;
+    } catch (const ConfigError&) {  // an unterminated quote: quoting keeps it
+    }
+    for (const char quote : {'"', '\''})
+        if (value.find(quote) == std::string::npos) return quote + value + quote;
+    throw ConfigError("the value " + value +
+                      " holds both quotes and a comment character: an ini file cannot keep it");
+}
+
 std::string iniValue(std::string_view written) {
     std::string value = trimmed(written);
     if (!value.empty() && (value.front() == '"' || value.front() == '\'')) {

@@ -57,6 +57,11 @@ std::vector<IniEntry> readIni(const std::string& text, const std::string& source
 /// or a comment) is the text between the quotes, an unquoted one ends at a '#' or ';' comment.
 /// Throws ConfigError (no position) on an unterminated quote or text after the closing one.
 std::string iniValue(std::string_view written);
+/// `value` as written after '=' so that iniValue() reads it back: as it is, or in quotes ("..."
+/// or '...', one it does not contain) when it holds a comment character or starts with a quote
+/// or a blank. Throws ConfigError when no quoting can keep it (it holds both quotes and a comment
+/// character).
+std::string iniQuoted(const std::string& value);
 
 /// The file's contents; throws ConfigError naming the path.
 std::string readConfigFile(const std::string& path);

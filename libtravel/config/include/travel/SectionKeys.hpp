@@ -74,7 +74,7 @@ void forEachKeyText(Write&& write, const Sections&... sections) {
                  [&](const char* name, const auto& value, const char* unit, auto&&...) {
                      using T = fields::Bare<decltype(value)>;
                      if constexpr (std::is_same_v<T, std::string>) {
-                         write(name, value);
+                         write(name, iniQuoted(value));  // read back through iniValue
                      } else {
                          write(name, fields::formatAny(value, unit));
                      }
