@@ -51,12 +51,14 @@ inline void movePartInPlace(const std::string& part, const std::string& path) {
 }
 
 /// Whether `a` and `b` name the same file or folder: the same file-system entry when both exist
-/// (hard links too), else the same absolute path once symlinks, ".", ".." and a trailing '/'
-/// are resolved.
+/// (hard links too); never when only one exists; else the same absolute path once symlinks,
+/// ".", ".." and a trailing '/' are resolved.
 inline bool samePath(const std::string& a, const std::string& b) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (fs::exists(a, ec) && fs::exists(b, ec)) {
+    const bool a_exists = fs::exists(a, ec), b_exists = fs::exists(b, ec);
+    if (a_exists != b_exists) return false;  // a path to an existing entry would exist
+    if (a_exists) {
         const bool same = fs::equivalent(a, b, ec);
         if (!ec) return same;
     }

@@ -418,9 +418,12 @@ constexpr const char* kGridFileMagic = "TRAVEL traversability grid";
 constexpr uint32_t kGridFileVersion = 1;
 
 /// The OcTree of .ot bytes (OctoMap's full format: every voxel's log-odds), checked before
-/// octomap reads them and against the grid's voxel size; `where` leads every message.
-std::unique_ptr<octomap::OcTree> readOtTree(std::string bytes, double resolution,
+/// octomap reads them and against the options' voxel size, with the options' hit and miss
+/// probabilities; `where` leads every message.
+std::unique_ptr<octomap::OcTree> readOtTree(std::string bytes,
+                                            const TraversabilityMapOptions& options,
                                             const std::string& where) {
+    const double resolution = options.octomap_resolution;
     const std::string problem = otNodeStreamProblem(bytes);
     if (!problem.empty()) throw std::runtime_error(where + ": " + problem);
     std::istringstream in(std::move(bytes));
@@ -433,6 +436,8 @@ std::unique_ptr<octomap::OcTree> readOtTree(std::string bytes, double resolution
             where + ": voxels of " + std::to_string(tree->getResolution()) +
             " m, but the grid file says octomap_resolution=" + std::to_string(resolution));
     any.release();
+    tree->setProbHit(options.octomap_prob_hit);
+    tree->setProbMiss(options.octomap_prob_miss);
     return std::unique_ptr<octomap::OcTree>(tree);
 }
 }  // namespace
@@ -489,9 +494,7 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     in >> bytes;
     scratch_->log_odds.clear();  // the tree read is the master copy now
     if (version == 1) {
-        octree_ = readOtTree(std::move(bytes), options_.octomap_resolution, "CTraversabilityMap");
-        octree_->setProbHit(options_.octomap_prob_hit);
-        octree_->setProbMiss(options_.octomap_prob_miss);
+        octree_ = readOtTree(std::move(bytes), options_, "CTraversabilityMap");
     } else {
         std::istringstream bt_in(bytes);
         if (!octree_->readBinary(bt_in))
@@ -557,10 +560,7 @@ void CTraversabilityMap::loadFrom(const std::string& prefix) {
         std::ifstream file(tree_path, std::ios::binary);
         if (!file) throw std::runtime_error(tree_path + ": cannot open");
         std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-        loaded.octree_ =
-            readOtTree(std::move(bytes), loaded.options_.octomap_resolution, tree_path);
-        loaded.octree_->setProbHit(loaded.options_.octomap_prob_hit);
-        loaded.octree_->setProbMiss(loaded.options_.octomap_prob_miss);
+        loaded.octree_ = readOtTree(std::move(bytes), loaded.options_, tree_path);
     }
     setOptions(loaded.options_);
     grid_ = std::move(loaded.grid_);
