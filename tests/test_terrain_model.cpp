@@ -48,7 +48,10 @@ TEST(TerrainModel, NodeAtFindsTheTriangleAndRejectsOutside) {
     EXPECT_EQ(t.nodeAt(0.1f, 0.9f), 40 + 2);  // west
     EXPECT_EQ(t.nodeAt(0.9f, 0.1f), 40 + 3);  // south
     EXPECT_EQ(t.nodeAt(-4.f, -4.f), 2);       // lower-left corner, on a diagonal: east/west wins
-    EXPECT_EQ(t.nodeAt(4.f, 0.f), -1);        // the upper edge is outside
+    // The grid is closed like the range window: the upper edge is in the last cells.
+    EXPECT_EQ(t.nodeAt(4.f, 1.f), 4 * (2 * 4 + 3) + 0);  // cell (3, 2), east
+    EXPECT_EQ(t.nodeAt(1.f, 4.f), 4 * (3 * 4 + 2) + 1);  // cell (2, 3), north
+    EXPECT_EQ(t.nodeAt(4.001f, 1.f), -1);
     EXPECT_EQ(t.nodeAt(-4.01f, 0.f), -1);
     EXPECT_EQ(t.nodeAt(std::nanf(""), 0.f), -1);
     EXPECT_EQ(t.nodeAt(0.f, 1e30f), -1);

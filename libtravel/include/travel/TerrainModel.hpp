@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -109,6 +110,12 @@ struct TriGridGeometry {
                origin_xy == other.origin_xy;
     }
 
+    /// Grid coordinates (metres / r from the lower-left corner) of the grid's last cell's far
+    /// edge, moved just inside it: the grid is closed, [origin, -origin] in x and y like the
+    /// range window [-max_range, max_range], so a valid point at exactly +max_range falls in
+    /// the last cell rather than off the grid.
+    float lastGridCoord() const { return std::nextafter(static_cast<float>(cells_per_side), 0.f); }
+
     /// Node holding (x, y), or -1 outside the grid (also for NaN and huge coordinates).
     int nodeAt(float x, float y) const {
         if (!hasCells()) return -1;
@@ -116,8 +123,9 @@ struct TriGridGeometry {
         const float gx = (x - origin_xy) * inv_r, gy = (y - origin_xy) * inv_r;
         // Bounds before the float->int conversion (huge values would be undefined).
         const float limit = static_cast<float>(cells_per_side);
-        if (!(gx >= 0.f && gy >= 0.f && gx < limit && gy < limit)) return -1;
-        return triangleNodeOfGridCoords(gx, gy, cells_per_side);
+        if (!(gx >= 0.f && gy >= 0.f && gx <= limit && gy <= limit)) return -1;
+        const float last = lastGridCoord();
+        return triangleNodeOfGridCoords(std::min(gx, last), std::min(gy, last), cells_per_side);
     }
 
     /// Corner k (0 = cell centre, 1, 2 = the side's cell corners, counter-clockwise) of a
@@ -152,7 +160,7 @@ struct TriGridGeometry {
 /// geometry's values in the loop's registers (a member function would reread them after every
 /// store of the loop). The same floats and the same triangle as nodeAt().
 struct NodeLocator {
-    float inv_r, origin, limit;
+    float inv_r, origin, limit, last;
     int side;
     uint32_t outside;
 
@@ -160,16 +168,17 @@ struct NodeLocator {
         : inv_r(1.f / grid.resolution),
           origin(grid.origin_xy),
           limit(static_cast<float>(grid.cells_per_side)),
+          last(grid.lastGridCoord()),
           side(grid.cells_per_side),
           outside(static_cast<uint32_t>(grid.numNodes())) {}
 
     uint32_t operator()(float x, float y, bool valid) const {
         // Bitwise & of the bools: GCC leaves && as branches here, and the loop unvectorised.
         const float gx = (x - origin) * inv_r, gy = (y - origin) * inv_r;
-        const bool in_x = (gx >= 0.f) & (gx < limit), in_y = (gy >= 0.f) & (gy < limit);
+        const bool in_x = (gx >= 0.f) & (gx <= limit), in_y = (gy >= 0.f) & (gy <= limit);
         // Outside points are moved to 0 so the float->int conversion stays defined (NaN, huge
-        // values); inside points keep their exact position.
-        const float cx = in_x ? gx : 0.f, cy = in_y ? gy : 0.f;
+        // values); inside points keep their exact position, the far edge its last cell's.
+        const float cx = in_x ? std::min(gx, last) : 0.f, cy = in_y ? std::min(gy, last) : 0.f;
         const int node = triangleNodeOfGridCoords(cx, cy, side);
         return (valid & in_x & in_y) ? static_cast<uint32_t>(node) : outside;
     }
