@@ -319,8 +319,28 @@ TEST(ParamsFile, ValidatesAfterwardsWithFileName) {
     const std::string path = dir.write("bad.yaml", "min_range: 50\nmax_range: 40\n");
     Params p;
     const std::string msg = configErrorOf([&] { travel::applyParamsFile(path, p); });
-    EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+    EXPECT_EQ(msg.rfind(path + ":1: ", 0), 0u) << msg;  // the line of the key the rule names
     EXPECT_CONTAINS(msg, "min_range");
+}
+
+TEST(ConfigFile, RuleErrorsNameTheLineOfTheirKey) {
+    TempDir dir;
+    travel::Config config;
+    // A rule beyond the key's range (max_motion_age > 0), in a section, ini and YAML.
+    const std::string ini = dir.write("f.ini", "[filter]\nsensor_label = .*\nmax_motion_age = 0\n");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(ini, config); }),
+                    ini + ":3: section 'filter': max_motion_age");
+    const std::string yaml = dir.write("f.yaml", "filter:\n  max_motion_age: 0\n");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(yaml, config); }),
+                    yaml + ":2: section 'filter': max_motion_age");
+    // A rule on two keys names the first of them that the file set.
+    const std::string map = dir.write("m.yaml", "map:\n  resolution: 0.5\n  max_x: -30\n");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(map, config); }),
+                    map + ":3: section 'map': min_x/max_x");
+    const std::string tracking =
+        dir.write("t.yaml", "tracking:\n  moving_speed_on: 0.1\n");  // off (0.5) >= on
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(tracking, config); }),
+                    tracking + ":2: section 'tracking': moving_speed_off/moving_speed_on");
 }
 
 TEST(ParamsFile, LineErrorsNameTheFile) {

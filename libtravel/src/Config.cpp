@@ -59,8 +59,9 @@ void fusionRules(const GridFusionParams& f) {
     require(f.logodds_min < 0, "logodds_min: must be < 0");
     require(f.logodds_max > 0, "logodds_max: must be > 0");
     require(f.obstacle_threshold < f.logodds_max,
-            "obstacle_threshold: must be in [0, logodds_max)");
-    require(f.free_threshold > f.logodds_min, "free_threshold: must be in (logodds_min, 0]");
+            "obstacle_threshold/logodds_max: obstacle_threshold must be in [0, logodds_max)");
+    require(f.free_threshold > f.logodds_min,
+            "free_threshold/logodds_min: free_threshold must be in (logodds_min, 0]");
     require(f.max_step_height > 0, "max_step_height: must be > 0 [m]");
     require(f.max_traversable_slope_deg > 0 && f.max_traversable_slope_deg < 90,
             "max_traversable_slope_deg: must be in (0, 90) [deg]");
@@ -96,9 +97,10 @@ void MapSection::validate() const {
     require(max_ray_length > 0, "max_ray_length: must be > 0 [m]");
     // OctoMap keys are 16-bit: a ray longer than 32768 voxels would wrap.
     require(max_ray_length / octomap_resolution < 30000,
-            "max_ray_length: longer than 30000 voxels of octomap_resolution");
+            "max_ray_length/octomap_resolution: a ray longer than 30000 voxels");
     require(obstacle_max_height > obstacle_min_height,
-            "obstacle_max_height: must be > obstacle_min_height [m]");
+            "obstacle_max_height/obstacle_min_height: need obstacle_max_height > "
+            "obstacle_min_height [m]");
     fusionRules(*this);
 }
 
@@ -114,7 +116,8 @@ void RegressSection::validate() const {
 void TrackingParams::validate() const {
     checkRanges(*this);
     require(moving_speed_off < moving_speed_on,
-            "moving_speed_off: must be < moving_speed_on [m/s] (hysteresis)");
+            "moving_speed_off/moving_speed_on: need moving_speed_off < moving_speed_on [m/s] "
+            "(hysteresis)");
 }
 
 void Config::validate() const {

@@ -239,8 +239,9 @@ class Applier {
         try {
             Config preset;
             const std::string path = findPresetFile(name);
-            Applier(path, preset, depth_ + 1).applyText(readConfigFile(path));
-            preset.validate();
+            Applier nested(path, preset, depth_ + 1);
+            nested.applyText(readConfigFile(path));
+            nested.validate();
             config_ = preset;
         } catch (const ConfigError& e) {
             fail(at, std::string("preset '") + name + "': " + e.what());
@@ -256,7 +257,38 @@ class Applier {
         }
     }
 
+    /// Config::validate() on the result, its message prefixed with the source and, when this
+    /// source set the key the failed rule is about, that key's line.
+    void validate() const {
+        try {
+            config_.validate();
+        } catch (const ConfigError& e) {
+            throw ConfigError(position(source_, lineOfRuleKey(e.what()), 0) + e.what());
+        }
+    }
+
   private:
+    /// A rule's message is "section 'S': KEY...", KEY being the key it is about, or "K1/K2"
+    /// for a rule on two keys (Config::validate, the sections' rules): the line of the first of
+    /// them that this source set, 0 when it set none (a default or a preset's value broke it).
+    int lineOfRuleKey(std::string_view message) const {
+        constexpr std::string_view prefix = "section '";
+        if (message.rfind(prefix, 0) != 0) return 0;
+        const std::size_t close = message.find('\'', prefix.size());
+        if (close == std::string_view::npos || message.substr(close, 3) != "': ") return 0;
+        const std::string section(message.substr(prefix.size(), close - prefix.size()));
+        for (std::size_t at = close + 3;; ++at) {
+            const std::size_t end =
+                message.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_", at);
+            if (end == at || end == std::string_view::npos) return 0;
+            const auto line =
+                first_line_.find(section + "." + std::string(message.substr(at, end - at)));
+            if (line != first_line_.end()) return line->second;
+            if (message[end] != '/') return 0;
+            at = end;
+        }
+    }
+
     static bool looksLikeIni(const std::string& text) {
         std::istringstream lines(text);
         for (std::string line; std::getline(lines, line);) {
@@ -372,12 +404,9 @@ void applyConfigText(const std::string& text, const std::string& source_name, Co
 
 void applyConfigFile(const std::string& path, Config& config) {
     Config result = config;
-    applyConfigText(readConfigFile(path), path, result);
-    try {
-        result.validate();
-    } catch (const ConfigError& e) {
-        throw ConfigError(path + ": " + e.what());
-    }
+    Applier applier(path, result, 0);
+    applier.applyText(readConfigFile(path));
+    applier.validate();
     config = std::move(result);
 }
 
