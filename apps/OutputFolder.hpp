@@ -39,17 +39,6 @@ inline void requireFileName(const std::string& flag, const std::string& path) {
         throw AppError(flag + " " + path + ": a folder; give the name of the file to write");
 }
 
-/// Moves the finished `part` to `path` (one folder: the move is atomic). On failure removes
-/// `part` and throws AppError with the reason: no orphaned part file is left behind.
-inline void movePartInPlace(const std::string& part, const std::string& path) {
-    std::error_code ec;
-    std::filesystem::rename(part, path, ec);
-    if (!ec) return;
-    std::error_code ignored;
-    std::filesystem::remove(part, ignored);
-    throw AppError(path + ": cannot write (moving " + part + " there: " + ec.message() + ")");
-}
-
 /// Whether `a` and `b` name the same file or folder: the same file-system entry when both exist
 /// (hard links too); never when only one exists; else the same absolute path once symlinks,
 /// ".", ".." and a trailing '/' are resolved.

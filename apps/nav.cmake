@@ -11,7 +11,8 @@ add_library(travel_nav_sim_lib STATIC
   ${CMAKE_CURRENT_LIST_DIR}/nav/TopView.cpp)
 target_include_directories(travel_nav_sim_lib PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(travel_nav_sim_lib
-  PUBLIC travel::mrpt travel::sim mrpt::nav mrpt::kinematics mrpt::img mrpt::config travel_app_support)
+  PUBLIC travel::mrpt travel::sim mrpt::nav mrpt::kinematics mrpt::img mrpt::config travel_app_support
+  PRIVATE travel::io)
 target_compile_options(travel_nav_sim_lib PRIVATE ${TRAVEL_APP_WARNINGS})
 
 add_executable(travel-nav-sim ${CMAKE_CURRENT_LIST_DIR}/travel_nav_sim.cpp)

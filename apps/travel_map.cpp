@@ -27,6 +27,7 @@
 #include "MapSources.hpp"
 #include "MemoryLimit.hpp"
 #include "travel/eval/KittiIO.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel/io/ScanList.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
@@ -210,7 +211,7 @@ int run(int argc, char** argv) {
         if (!out.open(path + ".part")) throw std::runtime_error(path + ": cannot write");
         mrpt::serialization::archiveFrom(out) << map;
         out.close();
-        travel::apps::movePartInPlace(path + ".part", path);
+        travel::movePartInPlace(path + ".part", path);
         part_guard.commit();
         written.push_back(path);
     }

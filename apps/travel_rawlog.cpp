@@ -45,6 +45,7 @@
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/eval/Metrics.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
@@ -447,7 +448,7 @@ int run(int argc, char** argv) {
         throw;
     }
     out_file.close();
-    travel::apps::movePartInPlace(partial, options.output);
+    travel::movePartInPlace(partial, options.output);
 
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!options.quiet) printSummary(options, segmenter.totals(), reader.index(), seconds);

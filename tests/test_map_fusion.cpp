@@ -442,6 +442,17 @@ TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
     }
     expectSameMaps(continued, loaded);
 
+    // A save that cannot move its part file in place (a folder holds the name) says which file
+    // and leaves no part file behind.
+    for (const char* suffix : {".travelgrid", ".ot"}) {
+        const std::string blocked = dir + "/blocked" + suffix;
+        std::filesystem::create_directories(dir + "/blocked" + suffix + "/inside");
+        const std::string message = errorOf([&] { map_->saveTo(dir + "/blocked"); });
+        EXPECT_NE(message.find(blocked + ": cannot write"), std::string::npos) << message;
+        EXPECT_FALSE(std::filesystem::exists(blocked + ".part")) << suffix;
+        std::filesystem::remove_all(blocked);
+    }
+
     // Bad input: an error naming the file; the map keeps its contents.
     const std::string before = loaded.asString();
     const std::string missing = dir + "/missing";

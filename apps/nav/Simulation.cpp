@@ -24,6 +24,7 @@
 #include "OutputFolder.hpp"
 #include "nav/Collision.hpp"
 #include "travel/EnumNames.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel_mrpt/ObstacleSources.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 #include "travel_mrpt/TravelMapNavigation.hpp"
@@ -467,7 +468,7 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
         }
         if (!f) throw std::runtime_error(path + ": write error");
     }
-    apps::movePartInPlace(part, path);
+    travel::movePartInPlace(part, path);
     part_guard.commit();
 }
 

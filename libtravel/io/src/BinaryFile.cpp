@@ -44,4 +44,14 @@ void writeFileBytes(const std::string& path, const unsigned char* data, std::siz
     }
 }
 
+void movePartInPlace(const std::string& part, const std::string& path) {
+    std::error_code ec;
+    std::filesystem::rename(part, path, ec);
+    if (!ec) return;
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
+    throw std::runtime_error(path + ": cannot write (moving " + part + " there: " + ec.message() +
+                             ")");
+}
+
 }  // namespace travel

@@ -17,12 +17,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <sstream>
 
 #include "travel/Errors.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel/traversability/StaticScene.hpp"
 #include "travel_mrpt/MapExport.hpp"
@@ -504,27 +506,36 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
 }
 
 void CTraversabilityMap::saveTo(const std::string& prefix) const {
-    // Written beside and renamed, so that a failed save never leaves half a file under the name.
-    const auto commit = [](const std::string& part, const std::string& path) {
-        if (std::rename(part.c_str(), path.c_str()) != 0)
-            throw std::runtime_error(path + ": cannot write (rename from " + part + " failed)");
-    };
+    // Written beside and moved (travel::movePartInPlace), so that a failed save never leaves
+    // half a file under the name, nor a part file behind.
     const std::string grid_path = prefix + ".travelgrid", tree_path = prefix + ".ot";
+    const auto fail = [](const std::string& part, const std::string& path) {
+        std::error_code ignored;
+        std::filesystem::remove(part, ignored);
+        throw std::runtime_error(path + ": cannot write");
+    };
     {
         mrpt::io::CFileGZOutputStream out;
-        if (!out.open(grid_path + ".part")) throw std::runtime_error(grid_path + ": cannot write");
-        auto archive = mrpt::serialization::archiveFrom(out);
-        archive << std::string(kGridFileMagic) << kGridFileVersion;
-        writeGridState(archive);
-        out.close();
+        if (!out.open(grid_path + ".part")) fail(grid_path + ".part", grid_path);
+        try {
+            auto archive = mrpt::serialization::archiveFrom(out);
+            archive << std::string(kGridFileMagic) << kGridFileVersion;
+            writeGridState(archive);
+            out.close();
+        } catch (const std::exception&) {
+            out.close();
+            fail(grid_path + ".part", grid_path);
+        }
     }
-    commit(grid_path + ".part", grid_path);
+    travel::movePartInPlace(grid_path + ".part", grid_path);
     {
         std::ofstream out(tree_path + ".part", std::ios::binary);
-        if (!out || !octree().write(out) || !out.flush())
-            throw std::runtime_error(tree_path + ": cannot write");
+        if (!out || !octree().write(out) || !out.flush()) {
+            out.close();
+            fail(tree_path + ".part", tree_path);
+        }
     }
-    commit(tree_path + ".part", tree_path);
+    travel::movePartInPlace(tree_path + ".part", tree_path);
 }
 
 void CTraversabilityMap::loadFrom(const std::string& prefix) {

@@ -21,6 +21,12 @@ void readFileBytes(const std::string& path, std::vector<unsigned char>& bytes);
 /// file when it cannot be written (a full disk included: the close is checked).
 void writeFileBytes(const std::string& path, const unsigned char* data, std::size_t size);
 
+/// The last step of a write through a temporary `part` file (written beside `path`, so that a
+/// failed or interrupted write never leaves half a file under the final name): moves `part` to
+/// `path` (one folder: the move is atomic). On failure removes `part` and throws
+/// std::runtime_error naming `path` and the reason: no orphaned part file is left behind.
+void movePartInPlace(const std::string& part, const std::string& path);
+
 namespace le {
 
 #if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && \
