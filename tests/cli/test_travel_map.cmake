@@ -162,6 +162,17 @@ endif()
 expect_failure_mentioning("${WORK_DIR}/missing.rawlog" ${TRAVEL_MAP}
   -i ${WORK_DIR}/missing.rawlog -o ${WORK_DIR}/bad)
 file(WRITE ${WORK_DIR}/not_a_rawlog.rawlog "hello, I am text\n")
+# A run that fails before writing anything leaves none of the folders it created; a folder that
+# existed before stays.
+file(REMOVE_RECURSE ${WORK_DIR}/new_parent)
+file(MAKE_DIRECTORY ${WORK_DIR}/kept)
+expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/new_parent/maps)
+expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/kept)
+if(EXISTS ${WORK_DIR}/new_parent OR NOT IS_DIRECTORY ${WORK_DIR}/kept)
+  message(FATAL_ERROR "a failed travel-map run left the folders it created, or removed one it did not")
+endif()
 expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
   -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/bad)
 file(WRITE ${WORK_DIR}/columns.txt "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 1\n")
