@@ -249,7 +249,14 @@ struct PictureFlags {
     explicit PictureFlags(TCLAP::CmdLine& cmd)
         : mpp("", "mpp", "Picture scale: metres per pixel (default 0.075: +/-30 m in 800 px)",
               false, 0.075, "M", cmd),
-          size("", "size", "Picture (panel) side in pixels, 64 to 8192", false, 800, "PX", cmd) {}
+          size("", "size", "Picture (panel) side in pixels, 64 to 8192 (default 800)", false, 800,
+               "PX", cmd) {}
+    /// --mpp or --size given where no picture is drawn is a usage error, not ignored: `drawn`
+    /// says whether this run draws any, `needs` names the flag that makes it draw.
+    void requirePictures(bool drawn, const std::string& needs) const {
+        if ((mpp.isSet() || size.isSet()) && !drawn)
+            throw usageError("--mpp and --size need " + needs);
+    }
     double metresPerPixel() const {
         if (!(mpp.getValue() > 0) || !std::isfinite(mpp.getValue()))
             throw usageError("--mpp must be > 0");
