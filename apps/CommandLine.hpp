@@ -242,7 +242,7 @@ inline std::vector<double> parseNumbers(const std::string& text, std::size_t cou
     return values;
 }
 
-/// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
+/// The bird's-eye picture flags of travel-view, travel-rawlog and travel-regress: --mpp and --size.
 struct PictureFlags {
     mutable TCLAP::ValueArg<double> mpp;  // TCLAP's getValue() is not const
     mutable TCLAP::ValueArg<int> size;
