@@ -87,8 +87,8 @@ struct ConfigFlags {
                  false, default_preset, "NAME", cmd),
           config("c", "config",
                  "Configuration file applied after the preset: YAML with the sections travel:, "
-                 "filter:, map:, nav: (keys at the root are travel's), or ini with [travel] ... "
-                 "[nav] (docs/parameters.md)",
+                 "filter:, map:, nav:, regress:, tracking: (keys at the root are travel's), or "
+                 "ini with [travel] ... [tracking] (docs/parameters.md)",
                  false, "", "FILE", cmd),
           set("", "set",
               "Set one key, applied last (repeatable): KEY=VALUE or SECTION.KEY=VALUE, e.g. "
