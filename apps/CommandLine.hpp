@@ -87,8 +87,8 @@ struct ConfigFlags {
                  false, default_preset, "NAME", cmd),
           config("c", "config",
                  "Configuration file applied after the preset: YAML with the sections travel:, "
-                 "filter:, map:, nav: (keys at the root are travel's), or ini with [travel] ... "
-                 "[nav] (docs/parameters.md)",
+                 "filter:, map:, nav:, regress:, tracking: (keys at the root are travel's), or "
+                 "ini with [travel] ... [tracking] (docs/parameters.md)",
                  false, "", "FILE", cmd),
           set("", "set",
               "Set one key, applied last (repeatable): KEY=VALUE or SECTION.KEY=VALUE, e.g. "
@@ -242,14 +242,21 @@ inline std::vector<double> parseNumbers(const std::string& text, std::size_t cou
     return values;
 }
 
-/// The bird's-eye picture flags of travel-view and travel-rawlog: --mpp and --size.
+/// The bird's-eye picture flags of travel-view, travel-rawlog and travel-regress: --mpp and --size.
 struct PictureFlags {
     mutable TCLAP::ValueArg<double> mpp;  // TCLAP's getValue() is not const
     mutable TCLAP::ValueArg<int> size;
     explicit PictureFlags(TCLAP::CmdLine& cmd)
         : mpp("", "mpp", "Picture scale: metres per pixel (default 0.075: +/-30 m in 800 px)",
               false, 0.075, "M", cmd),
-          size("", "size", "Picture (panel) side in pixels, 64 to 8192", false, 800, "PX", cmd) {}
+          size("", "size", "Picture (panel) side in pixels, 64 to 8192 (default 800)", false, 800,
+               "PX", cmd) {}
+    /// --mpp or --size given where no picture is drawn is a usage error, not ignored: `drawn`
+    /// says whether this run draws any, `needs` names the flag that makes it draw.
+    void requirePictures(bool drawn, const std::string& needs) const {
+        if ((mpp.isSet() || size.isSet()) && !drawn)
+            throw usageError("--mpp and --size need " + needs);
+    }
     double metresPerPixel() const {
         if (!(mpp.getValue() > 0) || !std::isfinite(mpp.getValue()))
             throw usageError("--mpp must be > 0");

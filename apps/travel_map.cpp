@@ -113,8 +113,11 @@ int run(int argc, char** argv) {
     });
     TCLAP::ValueArg<std::string> poses("", "poses", "Pose file (TUM or KITTI format)", false, "",
                                        "FILE", cmd);
-    TCLAP::ValueArg<std::string> calib("", "calib", "KITTI calib.txt (Tr: velodyne -> cam0)", false,
-                                       "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> calib(
+        "", "calib",
+        "KITTI calib.txt (Tr: velodyne -> cam0) turning a KITTI pose file's cam0 poses into LiDAR "
+        "poses; scan inputs only (default: DIR/calib.txt)",
+        false, "", "FILE", cmd);
     const travel::apps::MaxFramesFlag max_frames(line, "LiDAR frames");
     const travel::apps::MemoryLimitFlag max_memory(cmd);
     const travel::apps::JobsFlag jobs(
@@ -176,6 +179,14 @@ int run(int argc, char** argv) {
     std::optional<PoseFileSource> pose_file;
     if (!pose_path.empty()) pose_file = PoseFileSource{travel::readPoseFile(pose_path)};
     o.poses = pose_path;
+    // --calib acts on a KITTI pose file of scan inputs only: anywhere else it would be ignored.
+    if (calib.isSet() && !kitti)
+        throw travel::apps::usageError(
+            "--calib is for scan inputs with a KITTI pose file; a rawlog's poses are robot poses");
+    if (calib.isSet() && (!pose_file || pose_file->trajectory.timed()))
+        throw travel::apps::usageError(
+            "--calib needs a KITTI pose file (--poses, or poses.txt beside the scans) to apply "
+            "its Tr to");
 
     travel::apps::createFolder(o.output_dir);
 

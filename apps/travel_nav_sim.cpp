@@ -13,6 +13,7 @@
 // <world>_sources.png (side by side).
 #include <mrpt/img/CImage.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -68,15 +69,17 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> source_arg(
         "s", "source",
         "Obstacle source: travel, raw, threshold, map (the traversability map, with a global "
-        "path on it) or all (travel, raw and threshold)",
+        "path on it) or all (travel, raw and threshold); default travel",
         false, "travel", "NAME", cmd);
     TCLAP::ValueArg<std::string> nav_config_arg(
-        "", "nav-config", "Reactive navigator .ini, or a name in share/configs/nav", false,
-        "reactive3d_travel.ini", "FILE", cmd);
-    TCLAP::ValueArg<double> timeout_arg("t", "timeout", "Simulated seconds before giving up", false,
-                                        60.0, "S", cmd);
-    TCLAP::ValueArg<double> threshold_arg(
-        "", "threshold", "Height-threshold source: min height [m]", false, 0.25, "M", cmd);
+        "", "nav-config",
+        "Reactive navigator .ini, or a name in share/configs/nav (default reactive3d_travel.ini)",
+        false, "reactive3d_travel.ini", "FILE", cmd);
+    TCLAP::ValueArg<double> timeout_arg(
+        "t", "timeout", "Simulated seconds before giving up (default 60)", false, 60.0, "S", cmd);
+    TCLAP::ValueArg<double> threshold_arg("", "threshold",
+                                          "Height-threshold source: min height [m] (default 0.25)",
+                                          false, 0.25, "M", cmd);
     // long, not unsigned: TCLAP reads "-3" into an unsigned as 4294967293.
     TCLAP::ValueArg<long> seed_arg(
         "", "seed",
@@ -105,6 +108,16 @@ int run(int argc, char** argv) {
         } catch (const std::invalid_argument& e) {
             throw travel::apps::usageError(std::string("-s/--source: ") + e.what());
         }
+        // A flag for a source this run does not drive would be ignored: name it instead.
+        const auto runs = [&sources](SourceKind kind) {
+            return std::find(sources.begin(), sources.end(), kind) != sources.end();
+        };
+        if (!runs(SourceKind::Map) && (no_plan_arg.getValue() || no_map_arg.getValue()))
+            throw travel::apps::usageError("--no-plan and --no-map-save are for -s map");
+        if (!runs(SourceKind::Threshold) && threshold_arg.isSet())
+            throw travel::apps::usageError("--threshold is for -s threshold or -s all");
+        if (!runs(SourceKind::Travel) && !runs(SourceKind::Map) && track_arg.getValue())
+            throw travel::apps::usageError("--track is for the sources travel and map");
     });
     if (const auto code = line.parse(argc, argv)) return *code;
     // The simulation's defaults (its robot and LiDAR; obstacles kept for 1 s), then --preset,

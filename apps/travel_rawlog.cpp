@@ -183,6 +183,7 @@ Options parseCommandLine(int argc, char** argv, travel::Config& configuration) {
     o.pcap_model = pcap_model.getValue().empty() ? preset : pcap_model.getValue();
     o.pcap_calibration = pcap_calibration.getValue();
     o.png_prefix = png.getValue();
+    picture.requirePictures(!o.png_prefix.empty(), "--png");
     o.png_metres_per_pixel = picture.metresPerPixel();
     o.png_size = picture.sidePixels();
     o.csv = csv.getValue();

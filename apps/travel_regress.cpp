@@ -93,7 +93,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
                                  "each observation's sensorPose (as travel-rawlog's)",
                                  cmd);
     TCLAP::ValueArg<int> pictures("", "pictures",
-                                  "With -o: bird's-eye PNGs of this many most different frames",
+                                  "With -o: bird's-eye PNGs of this many most different frames "
+                                  "(default 3)",
                                   false, 3, "N", cmd);
     const travel::apps::PictureFlags picture(cmd);
     const travel::apps::MemoryLimitFlag max_memory(cmd);
@@ -109,6 +110,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
     flags.requireAutoFormat("rawlogs");
     if (!golden.isSet()) throw travel::apps::usageError("missing --golden GOLDEN.rawlog");
     if (pictures.getValue() < 0) throw travel::apps::usageError("--pictures must be >= 0");
+    if (pictures.isSet() && !flags.output.isSet())
+        throw travel::apps::usageError("--pictures needs -o (the pictures are written there)");
+    picture.requirePictures(flags.output.isSet(), "-o (the pictures are written there)");
     o.golden = golden.getValue();
     o.report_dir = flags.output.isSet() ? flags.output.getValue() : "";
     o.pictures = static_cast<std::size_t>(pictures.getValue());

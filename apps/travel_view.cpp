@@ -63,7 +63,8 @@ Options parseCommandLine(int argc, char** argv) {
     TCLAP::CmdLine& cmd = line.cmd;
     const travel::apps::CommonFlags flags(line, false, "");
     TCLAP::ValueArg<std::string> methods(
-        "", "methods", "One or two methods, comma-separated (see travel-kitti --help for names)",
+        "", "methods",
+        "One or two methods, comma-separated (see travel-kitti --help for names; default travel)",
         false, "travel", "M1[,M2]", cmd);
     TCLAP::ValueArg<int> frame("", "frame", "The scan of a folder or sequence -i (0: the first)",
                                false, 0, "N", cmd);

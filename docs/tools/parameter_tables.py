@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Regenerates the key tables of docs/parameters.md from the configuration dump.
 
-    build/apps/travel-kitti --print-config | python3 docs/tools/parameter_tables.py
+    build/apps/travel-rawlog --print-config | python3 docs/tools/parameter_tables.py
 
 rewrites the part of docs/parameters.md between the GENERATED markers: one table per section
 (travel, filter, map, nav, regress, tracking) with every key's default, unit, range and meaning, as --print-config
-prints them. The travel section is split into the groups of libtravel/include/travel/Params.hpp
+prints them (travel-rawlog's: it applies no preset unless told, while travel-kitti and travel-eval
+start from hdl64). The travel section is split into the groups of libtravel/include/travel/Params.hpp
 (its `---- Group ----` comments). Pass --stdout to print the tables instead.
 """
 import os

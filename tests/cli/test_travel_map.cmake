@@ -151,6 +151,10 @@ if(EXISTS ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
       message(FATAL_ERROR "KITTI velodyne/ folder: '${needle}' not in the summary:\n${last_output}")
     endif()
   endforeach()
+  # --calib without a KITTI pose file to apply it to is an error, not ignored.
+  expect_failure_mentioning("--calib needs a KITTI pose file" ${TRAVEL_MAP}
+    -i ${DATA_DIR}/semantickitti/sequences/00 -o ${WORK_DIR}/kitti_calib_alone --max-frames 1
+    --calib ${seq}/calib.txt)
   # poses.txt with a wrong column count is an error naming the file and line.
   file(WRITE ${seq}/poses.txt "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n")
   expect_failure_mentioning("poses.txt:2" ${TRAVEL_MAP} -i ${seq} -o ${WORK_DIR}/kitti_posed_bad)
@@ -159,6 +163,10 @@ else()
 endif()
 
 # Bad inputs.
+# --calib with a rawlog (robot poses, never cam0 ones) is an error, not ignored.
+file(WRITE ${WORK_DIR}/calib.txt "Tr: 0 -1 0 0 0 0 -1 -0.08 1 0 0 -0.27\n")
+expect_failure_mentioning("--calib is for scan inputs" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/calib_rawlog --calib ${WORK_DIR}/calib.txt)
 expect_failure_mentioning("${WORK_DIR}/missing.rawlog" ${TRAVEL_MAP}
   -i ${WORK_DIR}/missing.rawlog -o ${WORK_DIR}/bad)
 file(WRITE ${WORK_DIR}/not_a_rawlog.rawlog "hello, I am text\n")

@@ -81,6 +81,15 @@ foreach(bad -3 4294967296)
   expect_failure_mentioning("--seed must be 0 to 4294967295" ${TRAVEL_NAV_SIM} --seed ${bad}
     -i flat_obstacles.world -o ${WORK_DIR}/seed --timeout 1 --no-navlog)
 endforeach()
+# A flag for a source the run does not drive is named, not ignored.
+expect_failure_mentioning("--no-plan and --no-map-save are for -s map" ${TRAVEL_NAV_SIM}
+  -i flat_obstacles.world -s travel --no-plan)
+expect_failure_mentioning("--no-plan and --no-map-save are for -s map" ${TRAVEL_NAV_SIM}
+  -i flat_obstacles.world -s all --no-map-save)
+expect_failure_mentioning("--threshold is for -s threshold or -s all" ${TRAVEL_NAV_SIM}
+  -i flat_obstacles.world -s map --threshold 0.3)
+expect_failure_mentioning("--track is for the sources travel and map" ${TRAVEL_NAV_SIM}
+  -i flat_obstacles.world -s raw --track)
 file(WRITE ${WORK_DIR}/bad.world "start 0 0 0\ngoal 5 0\npole 1 1 0.1\n")
 expect_failure_mentioning("bad.world:3" ${TRAVEL_NAV_SIM} -i ${WORK_DIR}/bad.world)
 expect_failure_mentioning("tgf_resolution" ${TRAVEL_NAV_SIM} -i flat_obstacles.world

@@ -126,6 +126,9 @@ expect_success(${TRAVEL_RAWLOG} --sensor-label A --set filter.sensor_label=B --p
 if(NOT last_output MATCHES "\n  sensor_label: B\n")
   message(FATAL_ERROR "--set filter.sensor_label=B does not override --sensor-label A")
 endif()
+# --mpp / --size without --png would be ignored: named instead.
+expect_failure_mentioning("--mpp and --size need --png" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
+                          -o ${WORK_DIR}/x.rawlog --mpp 0.05)
 file(WRITE ${WORK_DIR}/typo.yaml "preset: vlp16\nsensor_heigth: 1.8\n")
 expect_failure_mentioning("sensor_heigth" ${TRAVEL_RAWLOG} -i ${WORK_DIR}/moving.rawlog
                           -o ${WORK_DIR}/x.rawlog --config ${WORK_DIR}/typo.yaml)

@@ -81,3 +81,6 @@ regress(2 MATCH "no CObservationTravelLabels")
 set(golden ${WORK_DIR}/none.rawlog)
 regress(2 MATCH "none.rawlog: no such file")
 regress(2 ARGS --pictures -1 MATCH "--pictures must be >= 0")
+# Picture flags without -o, where the pictures are written, would be ignored: named instead.
+regress(2 ARGS --pictures 2 MATCH "--pictures needs -o")
+regress(2 ARGS --size 400 MATCH "--mpp and --size need -o")
