@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -64,9 +66,13 @@ char dtypeKind(const py::array& a) {
     return a.dtype().kind();
 }
 
-/// An (N,) array-like as a std::vector<T> (numbers converted), or ValueError naming `what`.
+/// An (N,) array-like as a std::vector<T>, or ValueError naming `what`: a wrong shape, a dtype
+/// whose kind is not in `kinds`, or, for an integer T, a value outside [lo, hi] (T's range by
+/// default): integers are converted only when they fit, never wrapped (257 is not class 1).
 template <class T>
-std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds) {
+std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds,
+                          int64_t lo = static_cast<int64_t>(std::numeric_limits<T>::lowest()),
+                          int64_t hi = static_cast<int64_t>(std::numeric_limits<T>::max())) {
     const py::array a = py::array::ensure(object);
     if (!a) throw py::value_error(std::string(what) + ": expected an array");
     if (a.ndim() != 1 || (n >= 0 && a.shape(0) != n))
@@ -74,9 +80,35 @@ std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, co
                               (n >= 0 ? std::to_string(n) : std::string("N")) + ",), got " +
                               std::string(py::str(py::tuple(py::cast(
                                   std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))))));
-    if (!std::string(kinds).empty() && std::string(kinds).find(dtypeKind(a)) == std::string::npos)
+    const char kind = dtypeKind(a);
+    if (!std::string(kinds).empty() && std::string(kinds).find(kind) == std::string::npos)
         throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
                               " is not accepted (kinds '" + kinds + "')");
+    if constexpr (std::is_integral_v<T>) {
+        if (kind == 'i' || kind == 'u') {  // through 64 bits of the input's signedness
+            auto checked = [&](auto typed) {
+                std::vector<T> out(static_cast<std::size_t>(typed.size()));
+                for (std::size_t i = 0; i < out.size(); ++i) {
+                    const auto v = typed.data()[i];
+                    const bool fits =
+                        kind == 'u'
+                            ? static_cast<uint64_t>(v) <= static_cast<uint64_t>(hi) &&
+                                  (lo <= 0 || static_cast<uint64_t>(v) >= static_cast<uint64_t>(lo))
+                            : static_cast<int64_t>(v) >= lo && static_cast<int64_t>(v) <= hi;
+                    if (!fits)
+                        throw py::value_error(std::string(what) + ": values must be in [" +
+                                              std::to_string(lo) + ", " + std::to_string(hi) +
+                                              "], got " + std::to_string(v) + " at index " +
+                                              std::to_string(i));
+                    out[i] = static_cast<T>(v);
+                }
+                return out;
+            };
+            constexpr int flags = py::array::c_style | py::array::forcecast;
+            return kind == 'u' ? checked(py::array_t<uint64_t, flags>::ensure(a))
+                               : checked(py::array_t<int64_t, flags>::ensure(a));
+        }
+    }
     const auto typed = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
     return std::vector<T>(typed.data(), typed.data() + typed.size());
 }
@@ -294,15 +326,7 @@ ResultPy process(PipelinePy& self, const py::object& points, const py::object& r
         array = py::array::ensure(points);
         if (!array) throw py::value_error("points: expected a numpy array or a travel.Scan");
         view = checkPoints(array);
-        if (!rings.is_none()) {
-            const auto r = vectorFrom<int64_t>(rings, view.n, "rings", "iu");
-            ring.reserve(r.size());
-            for (int64_t v : r) {
-                if (v < 0 || v > 65535)
-                    throw py::value_error("rings: values must be in [0, 65535]");
-                ring.push_back(static_cast<uint16_t>(v));
-            }
-        }
+        if (!rings.is_none()) ring = vectorFrom<uint16_t>(rings, view.n, "rings", "iu");
         if (!times.is_none()) time = vectorFrom<float>(times, view.n, "times", "f");
     } else if (!rings.is_none() || !times.is_none()) {
         throw py::value_error(
@@ -362,23 +386,21 @@ ScanPy readScanPy(const std::string& path, const std::string& format) {
     return s;
 }
 
-void writeLabels(const std::string& path, const py::array& labels, const py::array& cluster_ids) {
-    const auto cls = vectorFrom<uint8_t>(labels, -1, "labels", "iu");
-    const auto ids = vectorFrom<uint32_t>(cluster_ids, static_cast<py::ssize_t>(cls.size()),
-                                          "cluster_ids", "iu");
-    std::vector<uint32_t> encoded(cls.size());
-    for (std::size_t i = 0; i < cls.size(); ++i) {
-        if (cls[i] > 3) throw py::value_error("labels: values must be 0..3 (travel classes)");
-        encoded[i] = encodeLabel(static_cast<PointClass>(cls[i]), ids[i]);
-    }
-    writeLabelFile(path, encoded);
-}
-
+/// An (N,) array-like of travel classes (0..3) as PointClass values.
 std::vector<PointClass> classesFrom(const py::handle& labels, py::ssize_t n) {
-    const auto v = vectorFrom<uint8_t>(labels, n, "labels", "iu");
+    const auto v = vectorFrom<uint8_t>(labels, n, "labels", "iu", 0, 3);
     std::vector<PointClass> out(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) out[i] = static_cast<PointClass>(v[i]);
     return out;
+}
+
+void writeLabels(const std::string& path, const py::handle& labels, const py::handle& cluster_ids) {
+    const auto cls = classesFrom(labels, -1);
+    const auto ids = vectorFrom<uint32_t>(cluster_ids, static_cast<py::ssize_t>(cls.size()),
+                                          "cluster_ids", "iu");
+    std::vector<uint32_t> encoded(cls.size());
+    for (std::size_t i = 0; i < cls.size(); ++i) encoded[i] = encodeLabel(cls[i], ids[i]);
+    writeLabelFile(path, encoded);
 }
 
 py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py::object& z,

@@ -257,3 +257,28 @@ def test_threads_give_identical_results():
         rs = list(pool.map(lambda k: shared.process(frames[k % 4]), range(8)))
     for k, r in enumerate(rs):
         assert np.array_equal(r.labels, serial[k % 4].labels)
+
+
+def test_integers_out_of_range_are_refused_not_wrapped(tmp_path, frame):
+    """Integer arrays are converted only when every value fits: a class 257 or -255 is not
+    class 1, a cluster id -1 or 2**33 is not 65535 or 0 (no cluster), a gt label -1 is not
+    0xFFFFFFFF."""
+    path = tmp_path / "x.label"
+    with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+        travel.write_labels(path, np.array([1, 257]), np.array([0, 0]))
+    with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+        travel.write_labels(path, np.array([1, -255]), np.array([0, 0]))
+    for bad in (-1, 2 ** 33):
+        with pytest.raises(ValueError, match="cluster_ids: values must be in"):
+            travel.write_labels(path, np.array([1, 2]), np.array([0, bad]))
+    assert not path.exists()
+    travel.write_labels(path, np.array([1, 2], np.int64), np.array([0, 2 ** 32 - 1], np.uint64))
+    assert list(travel.read_labels(path)) == [1, (0xFFFF << 16) | 2]
+    labels, gt = segment(frame[0]).labels, np.full(len(frame[0]), 40)
+    for bad in (5, 257):
+        with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+            travel.metrics.ground(np.full(len(gt), bad), gt)
+    with pytest.raises(ValueError, match="gt: values must be in"):
+        travel.metrics.ground(labels, np.full(len(gt), -1))
+    with pytest.raises(ValueError, match=r"rings: values must be in \[0, 65535\]"):
+        segment(frame[0], rings=np.full(len(gt), -1))
