@@ -132,24 +132,43 @@ struct PointsView {
     bool is_double = false;
 };
 
-PointsView checkPoints(const py::array& a) {
+/// `object` (a numpy array, or anything numpy reads: a list, ...) as an (N, 3) or (N, 4) float32
+/// or float64 array in the machine's byte order, or ValueError naming `what`. An array of that
+/// form is returned as is (read in place); one of the other byte order is converted (a copy).
+/// The dtype is compared by its type, not by identity: an unpickled array's float32 dtype is an
+/// equal but distinct object.
+py::array pointsArray(py::handle object, const char* what = "points") {
+    py::array a = py::array::ensure(object);
+    if (!a) throw py::value_error(std::string(what) + ": expected an (N, 3) or (N, 4) array");
     if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4))
         throw py::value_error(
-            "points: expected shape (N, 3) or (N, 4) (x, y, z[, intensity]), "
+            std::string(what) +
+            ": expected shape (N, 3) or (N, 4) (x, y, z[, intensity]), "
             "got ndim " +
             std::to_string(a.ndim()) +
             (a.ndim() >= 2 ? " with " + std::to_string(a.shape(1)) + " columns" : std::string()));
-    const bool f32 = a.dtype().is(py::dtype::of<float>());
-    const bool f64 = a.dtype().is(py::dtype::of<double>());
+    const py::dtype dtype = a.dtype();
+    const bool f32 = dtype.num() == py::dtype::of<float>().num();
+    const bool f64 = dtype.num() == py::dtype::of<double>().num();
     if (!f32 && !f64)
-        throw py::value_error("points: dtype must be float32 or float64, got " +
-                              std::string(py::str(a.dtype())));
+        throw py::value_error(std::string(what) + ": dtype must be float32 or float64, got " +
+                              std::string(py::str(py::handle(dtype))));
+    if (!dtype.attr("isnative").cast<bool>()) {
+        constexpr int flags = py::array::forcecast;
+        a = f64 ? py::array(py::array_t<double, flags>::ensure(a))
+                : py::array(py::array_t<float, flags>::ensure(a));
+    }
+    return a;
+}
+
+/// The layout of an array checked by pointsArray().
+PointsView viewOf(const py::array& a) {
     return {static_cast<const char*>(a.data()),
             a.shape(0),
             a.shape(1),
             a.strides(0),
             a.strides(1),
-            f64};
+            a.dtype().num() == py::dtype::of<double>().num()};
 }
 
 template <class T, int Cols>
@@ -323,9 +342,8 @@ ResultPy process(PipelinePy& self, const py::object& points, const py::object& r
     std::vector<uint16_t> ring;
     std::vector<float> time;
     if (!scan) {
-        array = py::array::ensure(points);
-        if (!array) throw py::value_error("points: expected a numpy array or a travel.Scan");
-        view = checkPoints(array);
+        array = pointsArray(points);
+        view = viewOf(array);
         if (!rings.is_none()) ring = vectorFrom<uint16_t>(rings, view.n, "rings", "iu");
         if (!times.is_none()) time = vectorFrom<float>(times, view.n, "times", "f");
     } else if (!rings.is_none() || !times.is_none()) {
@@ -426,13 +444,14 @@ py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py:
 }
 
 py::dict objectMetrics(const py::handle& cluster_ids, const py::handle& labels,
-                       const py::handle& gt, const py::array& points,
+                       const py::handle& gt, const py::handle& points,
                        const ObjectEvalOptions& options) {
     const auto pred = classesFrom(labels, -1);
     const auto n = static_cast<py::ssize_t>(pred.size());
     const auto ids = vectorFrom<uint32_t>(cluster_ids, n, "cluster_ids", "iu");
     const auto truth = vectorFrom<uint32_t>(gt, n, "gt", "iu");
-    const PointsView view = checkPoints(points);
+    const py::array array = pointsArray(points);
+    const PointsView view = viewOf(array);
     if (view.n != n) throw py::value_error("points: expected " + std::to_string(n) + " rows");
     PointCloud cloud;
     view.is_double ? copyColumns<double>(view, cloud) : copyColumns<float>(view, cloud);
@@ -593,8 +612,9 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
             py::arg("x"), py::arg("y"), "Node index holding (x, y), -1 outside the grid.")
         .def(
             "height_above_ground",
-            [](const TerrainPy& t, const py::array& points) {
-                const PointsView v = checkPoints(points);
+            [](const TerrainPy& t, const py::handle& points) {
+                const py::array array = pointsArray(points);
+                const PointsView v = viewOf(array);
                 PointCloud c;
                 v.is_double ? copyColumns<double>(v, c) : copyColumns<float>(v, c);
                 std::vector<float> h(c.size());

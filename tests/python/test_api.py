@@ -259,6 +259,25 @@ def test_threads_give_identical_results():
         assert np.array_equal(r.labels, serial[k % 4].labels)
 
 
+def test_float32_of_any_origin_is_accepted(frame):
+    """A float32 array is float32 whatever dtype object describes it: an unpickled array (its
+    dtype is a new, equal object) and a big-endian one give the labels of the native array."""
+    points = frame[0]
+    reference = segment(points)
+    for name, p in {"unpickled": pickle.loads(pickle.dumps(points)),
+                    "big-endian": points.astype(">f4"),
+                    "big-endian float64": points.astype(">f8")}.items():
+        assert np.array_equal(segment(p).labels, reference.labels), name
+        h = reference.terrain.height_above_ground(p[:10])
+        assert np.array_equal(h, reference.terrain.height_above_ground(points[:10]), equal_nan=True)
+    # Every points argument reads what process reads, a list included.
+    h = reference.terrain.height_above_ground([[5.0, 0.5, -1.0]])
+    assert abs(h[0] - 0.73) < 0.05
+    gt = np.full(len(points), 40)
+    assert travel.metrics.objects(reference, gt, points[:, :3].tolist()) == \
+        travel.metrics.objects(reference, gt, points)
+
+
 def test_integers_out_of_range_are_refused_not_wrapped(tmp_path, frame):
     """Integer arrays are converted only when every value fits: a class 257 or -255 is not
     class 1, a cluster id -1 or 2**33 is not 65535 or 0 (no cluster), a gt label -1 is not
