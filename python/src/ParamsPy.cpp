@@ -187,8 +187,11 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                 return d;
             },
             "Every parameter as {name: value} (AutoReal: its number; see is_auto()).")
-        .def("__eq__",
-             [](const Params& a, const Params& b) { return paramsToYaml(a) == paramsToYaml(b); })
+        // An operator: with anything but Params, NotImplemented (so == is False), not TypeError.
+        .def(
+            "__eq__",
+            [](const Params& a, const Params& b) { return paramsToYaml(a) == paramsToYaml(b); },
+            py::is_operator())
         .def("__copy__", [](const Params& p) { return Params(p); })
         .def("__deepcopy__", [](const Params& p, const py::dict&) { return Params(p); })
         .def(

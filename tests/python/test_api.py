@@ -301,3 +301,11 @@ def test_integers_out_of_range_are_refused_not_wrapped(tmp_path, frame):
         travel.metrics.ground(labels, np.full(len(gt), -1))
     with pytest.raises(ValueError, match=r"rings: values must be in \[0, 65535\]"):
         segment(frame[0], rings=np.full(len(gt), -1))
+
+
+def test_params_compare_with_anything():
+    """Params == something else is False (not a TypeError), so Params sit in lists and dicts."""
+    p = travel.Params()
+    assert not (p == 1) and p != None and p != "hdl64"  # noqa: E711
+    assert p in [None, travel.Params()] and p not in [1, "x"]
+    assert {"a": p} == {"a": travel.Params()}
