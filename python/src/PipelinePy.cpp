@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -257,9 +258,10 @@ ClustersPy clustersFrom(const std::vector<ClusterSummary>& c) {
     return out;
 }
 
-/// The terrain model of one frame; the arrays are built on first access.
+/// The terrain model of one frame; each per-node array is built on its first read and kept.
 struct TerrainPy {
     std::shared_ptr<const TerrainModel> model;
+    mutable std::map<int, py::object> arrays;  ///< per-node arrays once read, by slot
 };
 
 py::array_t<float> triangleCornersXYZ(const TerrainModel& t) {
@@ -544,11 +546,21 @@ under the centroid (NaN if unknown); height_above_ground: of the highest point a
 
     using T = TerrainModel;
     auto nodes = [](auto get) { return [get](const TerrainPy& t) { return get(*t.model); }; };
+    // A per-node array, built on its first read and kept: later reads return the same array.
+    int slots = 0;
+    auto cached = [&slots](auto get) {
+        return [slot = slots++, get](const TerrainPy& t) {
+            py::object& array = t.arrays[slot];
+            if (!array) array = get(*t.model);
+            return array;
+        };
+    };
     py::class_<TerrainPy>(m, "Terrain", R"doc(
 The terrain model of a frame (paper Sec. III): a tri-grid of square cells of side `resolution`,
 4 triangular nodes per cell, node index = 4 * (iy * cells_per_side + ix) + triangle (0 east,
 1 north, 2 west, 3 south). Aligned frame: sensor origin, z up; ground near z = -sensor_height.
-Arrays have one row per node (M = 4 * cells_per_side**2) and are built when first read.
+Arrays have one row per node (M = 4 * cells_per_side**2), built when first read and kept
+(each read returns the same array).
 )doc")
         .def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
         .def_property_readonly("resolution", nodes([](const T& t) { return t.resolution; }))
@@ -559,44 +571,44 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
                                "start node of the first search (-1: none)")
         .def_property_readonly("num_components", nodes([](const T& t) { return t.num_components; }))
         .def_property_readonly(
-            "node_class", nodes([](const T& t) {
+            "node_class", cached([](const T& t) {
                 return columns<uint8_t, 1>(t.nodes, [](const TriNode& n) { return n.node_class; });
             }),
             "(M,) uint8: 0 empty, 1 unknown (too few points), 2 terrain, 3 obstacle (too steep)")
-        .def_property_readonly("num_points", nodes([](const T& t) {
+        .def_property_readonly("num_points", cached([](const T& t) {
                                    return columns<uint32_t, 1>(
                                        t.nodes, [](const TriNode& n) { return n.count; });
                                }),
                                "(M,) uint32")
-        .def_property_readonly("planes", nodes([](const T& t) {
+        .def_property_readonly("planes", cached([](const T& t) {
                                    return columns<float, 4>(t.nodes, [](const TriNode& n) {
                                        return Eigen::Vector4f(n.normal.x(), n.normal.y(),
                                                               n.normal.z(), n.d);
                                    });
                                }),
                                "(M, 4) float32 node-wise PCA plane (sx, sy, sz, d): s.p + d = 0")
-        .def_property_readonly("means", nodes([](const T& t) {
+        .def_property_readonly("means", cached([](const T& t) {
                                    return columns<float, 3>(
                                        t.nodes, [](const TriNode& n) { return n.mean; });
                                }),
                                "(M, 3) float32 mean of the node's points")
-        .def_property_readonly("weights", nodes([](const T& t) {
+        .def_property_readonly("weights", cached([](const T& t) {
                                    return columns<float, 1>(
                                        t.nodes, [](const TriNode& n) { return n.weight; });
                                }),
                                "(M,) float32 the paper's node weight (eq. 1)")
-        .def_property_readonly("reached", nodes([](const T& t) {
+        .def_property_readonly("reached", cached([](const T& t) {
                                    return columns<bool, 1>(
                                        t.nodes, [](const TriNode& n) { return n.reached; });
                                }),
                                "(M,) bool reached by the traversable graph search")
         .def_property_readonly(
-            "traversable", nodes([](const T& t) {
+            "traversable", cached([](const T& t) {
                 return columns<bool, 1>(t.nodes, [](const TriNode& n) { return n.traversable; });
             }),
             "(M,) bool the final decision: the node's points are labelled against ground_planes")
         .def_property_readonly(
-            "ground_planes", nodes([](const T& t) {
+            "ground_planes", cached([](const T& t) {
                 return columns<float, 4>(t.nodes, [](const TriNode& n) {
                     return Eigen::Vector4f(n.refit_normal.x(), n.refit_normal.y(),
                                            n.refit_normal.z(), n.refit_d);
@@ -604,7 +616,7 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
             }),
             "(M, 4) float32 TTMF's refitted plane (sx, sy, sz, d); meaningful where traversable")
         .def_property_readonly(
-            "corners", nodes([](const T& t) { return triangleCornersXYZ(t); }),
+            "corners", cached([](const T& t) { return triangleCornersXYZ(t); }),
             "(M, 3, 3) float32 the triangle's corners (cell centre first, counter-clockwise): "
             "x, y and TTMF's corner height z (NaN where no traversable node voted)")
         .def(

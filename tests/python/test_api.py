@@ -309,3 +309,15 @@ def test_params_compare_with_anything():
     assert not (p == 1) and p != None and p != "hdl64"  # noqa: E711
     assert p in [None, travel.Params()] and p not in [1, "x"]
     assert {"a": p} == {"a": travel.Params()}
+
+
+def test_terrain_arrays_are_built_once(frame):
+    """A terrain array is built on its first read and kept (docs/python.md): reading it in a loop
+    costs nothing more, and the array read is the array kept."""
+    t = segment(frame[0]).terrain
+    for name in ("node_class", "num_points", "planes", "means", "weights", "reached",
+                 "traversable", "ground_planes", "corners"):
+        assert getattr(t, name) is getattr(t, name), name
+    before = bool(t.traversable[0])
+    t.traversable[0] = not before
+    assert t.traversable[0] == (not before)  # not lost in a fresh copy
