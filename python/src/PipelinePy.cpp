@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -420,7 +421,12 @@ void writeLabels(const std::string& path, const py::handle& labels, const py::ha
                                           "cluster_ids", "iu");
     std::vector<uint32_t> encoded(cls.size());
     for (std::size_t i = 0; i < cls.size(); ++i) encoded[i] = encodeLabel(cls[i], ids[i]);
-    writeLabelFile(path, encoded);
+    try {
+        writeLabelFile(path, encoded);
+    } catch (const std::runtime_error& e) {  // the library's message names the file and why
+        PyErr_SetString(PyExc_OSError, e.what());
+        throw py::error_already_set();
+    }
 }
 
 py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py::object& z,

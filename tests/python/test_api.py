@@ -321,3 +321,16 @@ def test_terrain_arrays_are_built_once(frame):
     before = bool(t.traversable[0])
     t.traversable[0] = not before
     assert t.traversable[0] == (not before)  # not lost in a fresh copy
+
+
+def test_file_errors_are_os_errors(tmp_path, frame):
+    """Every reader raises FileNotFoundError for a missing file and IsADirectoryError for a
+    folder (both OSError, naming the path), and write_labels an OSError when it cannot write."""
+    for read in (travel.read_scan, travel.read_labels):
+        with pytest.raises(FileNotFoundError, match="missing.bin"):
+            read(tmp_path / "missing.bin")
+        with pytest.raises(IsADirectoryError, match=str(tmp_path)):
+            read(tmp_path)
+    r = segment(frame[0])
+    with pytest.raises(OSError, match="no-such-folder"):
+        travel.write_labels(tmp_path / "no-such-folder" / "x.label", r)
