@@ -159,7 +159,7 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
             "from_file",
             [](const py::object& path) {
                 Params p;
-                applyParamsFile(py::str(py::module_::import("os").attr("fspath")(path)), p);
+                applyParamsFile(py::str(py::module_::import("os").attr("fsdecode")(path)), p);
                 return p;
             },
             py::arg("path"),

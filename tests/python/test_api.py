@@ -334,3 +334,17 @@ def test_file_errors_are_os_errors(tmp_path, frame):
     r = segment(frame[0])
     with pytest.raises(OSError, match="no-such-folder"):
         travel.write_labels(tmp_path / "no-such-folder" / "x.label", r)
+
+
+def test_every_path_argument_takes_str_bytes_and_pathlike(tmp_path, frame):
+    config = tmp_path / "robot.yaml"
+    config.write_text("travel:\n  num_rings: 32\n")
+    scan_file = tmp_path / "000000.bin"
+    frame[0].tofile(scan_file)
+    for path in (config, str(config), bytes(config)):
+        assert travel.Params.from_file(path).num_rings == 32, repr(path)
+    for path in (scan_file, str(scan_file), bytes(scan_file)):
+        r = segment(travel.read_scan(path))
+        label_file = tmp_path / "x.label"
+        travel.write_labels(bytes(label_file), r)
+        assert np.array_equal(travel.read_labels(bytes(label_file)) & 0xFFFF, r.labels)
