@@ -38,12 +38,18 @@ py::object getParam(const Params& params, const std::string& key) {
     return out;
 }
 
+/// A Python bool, or a numpy one (what `array.any()` returns; numpy is loaded with the module).
+bool isBool(py::handle value) {
+    return PyBool_Check(value.ptr()) ||
+           py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+}
+
 /// `value` as the text travel::assignKey parses: the Python type must fit the parameter's
-/// (numbers for numbers, bool for bool, str for choices; AutoReal also takes "auto" or
-/// "auto(1.2)"); floats are written with the shortest text that reads back exactly.
+/// (numbers for numbers, bool for bool (numpy's too), str for choices; AutoReal also takes "auto"
+/// or "auto(1.2)"); floats are written with the shortest text that reads back exactly.
 template <class T>
 std::string valueText(const std::string& key, py::handle value) {
-    const bool is_bool = PyBool_Check(value.ptr());
+    const bool is_bool = isBool(value);
     const bool is_str = PyUnicode_Check(value.ptr());
     auto refuse = [&](const char* expected) {
         return ConfigError("invalid value for '" + key + "': expected " + expected + ", got " +
@@ -51,7 +57,7 @@ std::string valueText(const std::string& key, py::handle value) {
     };
     if constexpr (std::is_same_v<T, bool>) {
         if (!is_bool) throw refuse("a bool");
-        return value.ptr() == Py_True ? "true" : "false";
+        return py::bool_(py::reinterpret_borrow<py::object>(value)) ? "true" : "false";
     } else if constexpr (std::is_same_v<T, std::string>) {
         if (!is_str) throw refuse("a str");
         return value.cast<std::string>();

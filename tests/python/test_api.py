@@ -348,3 +348,17 @@ def test_every_path_argument_takes_str_bytes_and_pathlike(tmp_path, frame):
         label_file = tmp_path / "x.label"
         travel.write_labels(bytes(label_file), r)
         assert np.array_equal(travel.read_labels(bytes(label_file)) & 0xFFFF, r.labels)
+
+
+def test_numpy_scalars_are_their_python_types():
+    """A numpy scalar sets a parameter as the Python number or bool it stands for (array.any()
+    is a numpy bool); a bool is still no number."""
+    p = travel.Params()
+    p.deskew = np.bool_(False)
+    p.num_rings = np.int32(32)
+    p.ground_dist = np.float32(0.25)
+    assert (p.deskew, p.num_rings, p.ground_dist) == (False, 32, float(np.float32(0.25)))
+    assert travel.Params(deskew=np.zeros(3).any()).deskew is False
+    for key in ("num_rings", "ground_dist"):
+        with pytest.raises(travel.ConfigError, match="expected a"):
+            setattr(p, key, np.True_)
