@@ -24,6 +24,7 @@
 
 #include "Bindings.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/Preprocessing.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Metrics.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
@@ -321,11 +322,16 @@ FrameInput frameInput(const py::object& attitude, const py::object& gravity,
         const std::vector<double> r = fixedFrom(attitude, 9, "attitude (3x3 rotation)");
         Eigen::Matrix3d rotation;
         for (int i = 0; i < 9; ++i) rotation(i / 3, i % 3) = r[static_cast<std::size_t>(i)];
+        if (!isUsableAttitude(rotation))  // the library would ignore it: a mistake here
+            throw py::value_error(
+                "attitude: not a rotation (orthonormal within 1e-3, determinant +1 expected)");
         input.vehicle_attitude = rotation;
     }
     if (!gravity.is_none()) {
         const std::vector<double> g = fixedFrom(gravity, 3, "gravity");
         input.gravity_in_sensor = Eigen::Vector3d(g[0], g[1], g[2]);
+        if (!isUsableGravity(*input.gravity_in_sensor))
+            throw py::value_error("gravity: the zero vector has no direction");
     }
     if (!velocity.is_none()) {
         const std::vector<double> v = fixedFrom(velocity, 6, "velocity (vx, vy, vz, wx, wy, wz)");

@@ -362,3 +362,18 @@ def test_numpy_scalars_are_their_python_types():
     for key in ("num_rings", "ground_dist"):
         with pytest.raises(travel.ConfigError, match="expected a"):
             setattr(p, key, np.True_)
+
+
+def test_attitude_and_gravity_the_library_would_ignore_are_refused(frame):
+    """The library does not use an attitude that is no rotation, nor a zero gravity (a stream
+    goes on level); in Python such an argument is a mistake and raises instead of being
+    silently ignored."""
+    points = frame[0][:1000]
+    pipeline = travel.Pipeline(travel.Params())
+    for bad in (2 * np.eye(3), np.ones((3, 3)), np.diag([1.0, 1.0, -1.0])):
+        with pytest.raises(ValueError, match="attitude.*not a rotation"):
+            pipeline.process(points, attitude=bad)
+    with pytest.raises(ValueError, match="gravity.*zero"):
+        pipeline.process(points, gravity=[0, 0, 0])
+    tilted = np.array([[1, 0, 0], [0, np.cos(0.1), -np.sin(0.1)], [0, np.sin(0.1), np.cos(0.1)]])
+    pipeline.process(points, attitude=tilted, gravity=[0, 0, -9.81])
