@@ -317,6 +317,8 @@ struct PipelinePy {
 FrameInput frameInput(const py::object& attitude, const py::object& gravity,
                       const py::object& velocity, double reference_time) {
     FrameInput input;
+    if (!std::isfinite(reference_time))  // as velocity's: NaN would silently turn deskew off
+        throw py::value_error("reference_time: not finite");
     input.reference_time = reference_time;
     if (!attitude.is_none()) {
         const std::vector<double> r = fixedFrom(attitude, 9, "attitude (3x3 rotation)");

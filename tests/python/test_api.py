@@ -116,6 +116,11 @@ def test_input_errors(frame):
         pipeline.process(points, attitude=np.eye(2))
     with pytest.raises(ValueError, match="velocity"):
         pipeline.process(points, velocity=[1, 2, 3])
+    times = np.zeros(len(points), np.float32)
+    with pytest.raises(ValueError, match=r"velocity \(.*\): not finite"):
+        pipeline.process(points, times=times, velocity=[np.nan, 0, 0, 0, 0, 0])
+    with pytest.raises(ValueError, match="reference_time: not finite"):  # silently no deskew
+        pipeline.process(points, times=times, velocity=np.ones(6), reference_time=np.nan)
     # An empty frame is not an error: nothing to label.
     assert len(pipeline.process(np.zeros((0, 3), np.float32)).labels) == 0
 
