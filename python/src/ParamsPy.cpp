@@ -130,7 +130,9 @@ void bindParams(py::module_& m) {
 
     py::class_<Params> params(m, "Params", R"doc(
 The parameters of the ground segmentation and object clustering: the `travel` section of the
-library's configuration (docs/parameters.md). Defaults: Velodyne HDL-64E on KITTI.
+library's configuration (docs/parameters.md). Defaults: the library's, tuned for the Velodyne
+HDL-64E on KITTI; travel-kitti starts from Params.from_preset("hdl64") instead (it adds the car's
+self box and min_range 1 m), so use that preset for its labels.
 
 Every parameter is an attribute, documented with its unit and range. Assigning checks the type
 and the range at once (the library's rules, the same messages as in a configuration file) and
@@ -146,7 +148,8 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                    for (const auto& [key, value] : kwargs) setParam(p, py::str(key), value);
                    return p;
                }),
-               "Defaults (HDL-64E on KITTI), then the keyword arguments as attributes.");
+               "The library's defaults (not the preset hdl64 travel-kitti starts from), then the "
+               "keyword arguments as attributes.");
     visitFields(Params{}, [&](const char* name, const auto& value, const char* unit, double lo,
                               double hi, const char* description) {
         using T = fields::Bare<decltype(value)>;
