@@ -72,14 +72,10 @@ def write_labels(path, result, cluster_ids=None):
     """Writes a .label file as travel-kitti does: one little-endian uint32 per point, the class
     in the lower 16 bits, the cluster id in the upper 16 bits (ids above 65535 wrap to 1..65535).
 
-    `result` is a travel.Result, or an (N,) class array with `cluster_ids` given. Raises OSError
+    `result` is a travel.Result, or an (N,) class array with `cluster_ids` given (cluster_ids
+    beside a Result raise ValueError: pass result.labels to write other ids). Raises OSError
     naming the file when it cannot be written.
     """
-    if isinstance(result, Result):
-        labels, cluster_ids = result.labels, result.cluster_ids
-    else:
-        labels = result
-        if cluster_ids is None:
-            raise ValueError("write_labels: give a Result, or labels and cluster_ids")
+    labels, cluster_ids = metrics._classes_and_ids(result, cluster_ids, "write_labels")
     from ._travel import _write_labels
     _write_labels(_os.fspath(path), labels, cluster_ids)

@@ -382,3 +382,21 @@ def test_attitude_and_gravity_the_library_would_ignore_are_refused(frame):
         pipeline.process(points, gravity=[0, 0, 0])
     tilted = np.array([[1, 0, 0], [0, np.cos(0.1), -np.sin(0.1)], [0, np.sin(0.1), np.cos(0.1)]])
     pipeline.process(points, attitude=tilted, gravity=[0, 0, -9.81])
+
+
+def test_cluster_ids_beside_a_result_are_not_ignored(tmp_path, frame):
+    """write_labels and metrics.objects take a Result, or labels with cluster_ids: ids given
+    beside a Result (which has its own) raise instead of being silently dropped."""
+    points, _, is_box = frame
+    r = segment(points)
+    other = np.zeros(len(points), np.uint32)
+    with pytest.raises(ValueError, match="cluster_ids"):
+        travel.write_labels(tmp_path / "x.label", r, other)
+    assert not (tmp_path / "x.label").exists()
+    gt = np.where(is_box, (7 << 16) | 10, 40).astype(np.uint32)
+    with pytest.raises(ValueError, match="cluster_ids"):
+        travel.metrics.objects(r, gt, points, cluster_ids=other)
+    travel.write_labels(tmp_path / "x.label", r.labels, other)  # the labels-array form
+    assert np.array_equal(travel.read_labels(tmp_path / "x.label"), r.labels)
+    assert travel.metrics.objects(r.labels, gt, points, cluster_ids=r.cluster_ids) == \
+        travel.metrics.objects(r, gt, points)
