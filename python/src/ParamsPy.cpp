@@ -221,8 +221,14 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                 }
                 return text + ")";
             })
+        // Unpickling restores the values as they were, not validated: a Params may exist before
+        // validate() passes (the rules between parameters), and pickle must not refuse it.
         .def(py::pickle([](const Params& p) { return paramsToYaml(p); },
-                        [](const std::string& yaml) { return fromYaml(yaml, "<pickle>"); }));
+                        [](const std::string& yaml) {
+                            Params p;
+                            applyParamsText(yaml, "<pickle>", p);
+                            return p;
+                        }));
 }
 
 }  // namespace travel::python

@@ -400,3 +400,14 @@ def test_cluster_ids_beside_a_result_are_not_ignored(tmp_path, frame):
     assert np.array_equal(travel.read_labels(tmp_path / "x.label"), r.labels)
     assert travel.metrics.objects(r.labels, gt, points, cluster_ids=r.cluster_ids) == \
         travel.metrics.objects(r, gt, points)
+
+
+def test_every_params_pickles():
+    """A Params pickles and copies whatever it holds, also before validate() would pass (Params
+    takes values one by one; rules between them are checked by validate() and Pipeline)."""
+    p = travel.Params(min_range=50.0, max_range=40.0)
+    for q in (pickle.loads(pickle.dumps(p)), copy.deepcopy(p), copy.copy(p)):
+        assert q == p and (q.min_range, q.max_range) == (50.0, 40.0)
+    with pytest.raises(travel.ConfigError, match="min_range"):
+        pickle.loads(pickle.dumps(p)).validate()
+
