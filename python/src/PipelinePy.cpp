@@ -714,7 +714,14 @@ velocity: optional (vx, vy, vz, wx, wy, wz), sensor frame [m/s, rad/s], for desk
 Raises ValueError for a wrong shape, dtype or size.
 )doc")
         .def_property_readonly(
-            "params", [](const PipelinePy& p) { return p.pipeline.params(); },
+            "params",
+            [](PipelinePy& p) {
+                // Under the lock, as process() (which writes 'auto' estimates) runs: waiting for
+                // it without the GIL, so that the running call can finish.
+                py::gil_scoped_release release;
+                std::lock_guard<std::mutex> lock(p.mutex);
+                return p.pipeline.params();
+            },
             "The parameters in use ('auto' values replaced by their estimates once known).");
 
     m.def("read_scan", &readScanPy, py::arg("path"), py::arg("format") = "auto", R"doc(
