@@ -346,7 +346,7 @@ FrameInput frameInput(const py::object& attitude, const py::object& gravity,
 ResultPy process(PipelinePy& self, const py::object& points, const py::object& rings,
                  const py::object& times, const py::object& attitude, const py::object& gravity,
                  const py::object& velocity, double reference_time) {
-    const FrameInput input = frameInput(attitude, gravity, velocity, reference_time);
+    FrameInput input = frameInput(attitude, gravity, velocity, reference_time);
     const ScanPy* scan = py::isinstance<ScanPy>(points) ? &points.cast<const ScanPy&>() : nullptr;
     py::array array;
     PointsView view;
@@ -356,7 +356,15 @@ ResultPy process(PipelinePy& self, const py::object& points, const py::object& r
         array = pointsArray(points);
         view = viewOf(array);
         if (!rings.is_none()) ring = vectorFrom<uint16_t>(rings, view.n, "rings", "iu");
-        if (!times.is_none()) time = vectorFrom<float>(times, view.n, "times", "f");
+        if (!times.is_none()) {
+            // Relative to reference_time, in double, before the library's float32: absolute
+            // stamps (1.7e9 s, float32 step 128 s) would otherwise all round to the reference.
+            const auto t = vectorFrom<double>(times, view.n, "times", "f");
+            time.resize(t.size());
+            for (std::size_t i = 0; i < t.size(); ++i)
+                time[i] = static_cast<float>(t[i] - reference_time);
+            input.reference_time = 0.0;
+        }
     } else if (!rings.is_none() || !times.is_none()) {
         throw py::value_error(
             "rings and times come from the Scan; pass its points as an array "
@@ -707,7 +715,8 @@ points: (N, 3) or (N, 4) float32 or float64 array (x, y, z[, intensity]) in the 
   Points with NaN / inf coordinates, all-zero points and points outside [min_range, max_range]
   are labelled 0 (invalid); nothing is dropped, nothing raises.
 rings: optional (N,) integer laser ring (0 = lowest), values in [0, 65535].
-times: optional (N,) float per-point time [s] (same clock as reference_time), for deskew.
+times: optional (N,) float per-point time [s] (same clock as reference_time, absolute stamps
+  fine: taken relative to it in double), for deskew.
 attitude: optional 3x3 rotation vehicle -> gravity-aligned (roll and pitch level the frame).
 gravity: optional 3-vector, the gravity direction measured in the sensor frame (instead).
 velocity: optional (vx, vy, vz, wx, wy, wz), sensor frame [m/s, rad/s], for deskew with times.

@@ -132,6 +132,15 @@ def test_attitude_and_deskew_inputs(frame):
     times = np.linspace(0, 0.1, len(points), dtype=np.float32)
     still = segment(points, times=times, velocity=np.zeros(6))
     assert np.array_equal(still.labels, level.labels)
+    # Absolute float64 stamps (ROS, UNIX time) deskew as the same times relative to the sweep:
+    # in float32 (the library's per-point time) 1.7e9 s has a 128 s step and every dt was 0.
+    relative = np.linspace(0, 0.1, len(points))
+    moving = [5.0, 0, 0, 0, 0, 0.5]
+    deskewed = segment(points, times=(relative - 0.05).astype(np.float32), velocity=moving)
+    assert not np.array_equal(deskewed.labels, level.labels)  # the motion matters here
+    t0 = 1.7e9
+    stamped = segment(points, times=t0 + relative, velocity=moving, reference_time=t0 + 0.05)
+    assert np.array_equal(stamped.labels, deskewed.labels)
 
 
 def test_params_attributes_come_from_the_library():
