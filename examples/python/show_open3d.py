@@ -8,6 +8,7 @@ Classes: ground green, non-ground grey, outlier blue, invalid (not shown) black.
 its own colour, ground green, the rest grey. With --save no window is opened.
 """
 import argparse
+import sys
 
 import numpy as np
 import open3d as o3d
@@ -44,7 +45,8 @@ boxes = [o3d.geometry.AxisAlignedBoundingBox(lo, hi)
                            result.clusters.aabb_max.astype(np.float64))]
 print(f"{shown.sum()} points, {len(result.clusters)} clusters, colour by {args.color}")
 if args.save:
-    o3d.io.write_point_cloud(args.save, cloud)
+    if not o3d.io.write_point_cloud(args.save, cloud):  # Open3D only warns; say it and fail
+        sys.exit(f"error: could not write {args.save} (folder missing? extension not .ply/.pcd?)")
     print(f"written to {args.save}")
 else:
     o3d.visualization.draw_geometries([cloud, *boxes], window_name=f"TRAVEL: {args.scan}")

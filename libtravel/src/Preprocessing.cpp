@@ -123,21 +123,24 @@ Eigen::Matrix3d mountRotation(const Params& params) {
         .toRotationMatrix();
 }
 
+bool isUsableAttitude(const Eigen::Matrix3d& R) {
+    return R.allFinite() && (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-3 &&
+           R.determinant() > 0;
+}
+
+bool isUsableGravity(const Eigen::Vector3d& g) {
+    return g.allFinite() && g.norm() > 0;
+}
+
 Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input) {
     const Eigen::Matrix3d R_mount = mountRotation(params);
     Eigen::Matrix3d R_level = Eigen::Matrix3d::Identity();
     if (params.align_attitude) {
         // As a bad gravity vector below, an attitude that is no rotation (NaN, zero, a
         // reflection) is not used: it would move every point, or all of them to the origin.
-        const auto isRotation = [](const Eigen::Matrix3d& R) {
-            return R.allFinite() &&
-                   (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-3 &&
-                   R.determinant() > 0;
-        };
-        if (input.vehicle_attitude && isRotation(*input.vehicle_attitude)) {
+        if (input.vehicle_attitude && isUsableAttitude(*input.vehicle_attitude)) {
             R_level = withoutYaw(*input.vehicle_attitude);
-        } else if (input.gravity_in_sensor && input.gravity_in_sensor->norm() > 0 &&
-                   input.gravity_in_sensor->allFinite()) {
+        } else if (input.gravity_in_sensor && isUsableGravity(*input.gravity_in_sensor)) {
             // Roll and pitch (ZYX convention, as for vehicle_attitude) that map the measured
             // gravity onto -z: for R = Ry(pitch) Rx(roll), R^T (0,0,-1) is
             // (sin p, -sin r cos p, -cos r cos p). (The minimal rotation between the two

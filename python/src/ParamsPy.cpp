@@ -38,12 +38,18 @@ py::object getParam(const Params& params, const std::string& key) {
     return out;
 }
 
+/// A Python bool, or a numpy one (what `array.any()` returns; numpy is loaded with the module).
+bool isBool(py::handle value) {
+    return PyBool_Check(value.ptr()) ||
+           py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+}
+
 /// `value` as the text travel::assignKey parses: the Python type must fit the parameter's
-/// (numbers for numbers, bool for bool, str for choices; AutoReal also takes "auto" or
-/// "auto(1.2)"); floats are written with the shortest text that reads back exactly.
+/// (numbers for numbers, bool for bool (numpy's too), str for choices; AutoReal also takes "auto"
+/// or "auto(1.2)"); floats are written with the shortest text that reads back exactly.
 template <class T>
 std::string valueText(const std::string& key, py::handle value) {
-    const bool is_bool = PyBool_Check(value.ptr());
+    const bool is_bool = isBool(value);
     const bool is_str = PyUnicode_Check(value.ptr());
     auto refuse = [&](const char* expected) {
         return ConfigError("invalid value for '" + key + "': expected " + expected + ", got " +
@@ -51,7 +57,7 @@ std::string valueText(const std::string& key, py::handle value) {
     };
     if constexpr (std::is_same_v<T, bool>) {
         if (!is_bool) throw refuse("a bool");
-        return value.ptr() == Py_True ? "true" : "false";
+        return py::bool_(py::reinterpret_borrow<py::object>(value)) ? "true" : "false";
     } else if constexpr (std::is_same_v<T, std::string>) {
         if (!is_str) throw refuse("a str");
         return value.cast<std::string>();
@@ -124,7 +130,9 @@ void bindParams(py::module_& m) {
 
     py::class_<Params> params(m, "Params", R"doc(
 The parameters of the ground segmentation and object clustering: the `travel` section of the
-library's configuration (docs/parameters.md). Defaults: Velodyne HDL-64E on KITTI.
+library's configuration (docs/parameters.md). Defaults: the library's, tuned for the Velodyne
+HDL-64E on KITTI; travel-kitti starts from Params.from_preset("hdl64") instead (it adds the car's
+self box and min_range 1 m), so use that preset for its labels.
 
 Every parameter is an attribute, documented with its unit and range. Assigning checks the type
 and the range at once (the library's rules, the same messages as in a configuration file) and
@@ -140,7 +148,8 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                    for (const auto& [key, value] : kwargs) setParam(p, py::str(key), value);
                    return p;
                }),
-               "Defaults (HDL-64E on KITTI), then the keyword arguments as attributes.");
+               "The library's defaults (not the preset hdl64 travel-kitti starts from), then the "
+               "keyword arguments as attributes.");
     visitFields(Params{}, [&](const char* name, const auto& value, const char* unit, double lo,
                               double hi, const char* description) {
         using T = fields::Bare<decltype(value)>;
@@ -159,7 +168,7 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
             "from_file",
             [](const py::object& path) {
                 Params p;
-                applyParamsFile(py::str(py::module_::import("os").attr("fspath")(path)), p);
+                applyParamsFile(py::str(py::module_::import("os").attr("fsdecode")(path)), p);
                 return p;
             },
             py::arg("path"),
@@ -187,8 +196,11 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                 return d;
             },
             "Every parameter as {name: value} (AutoReal: its number; see is_auto()).")
-        .def("__eq__",
-             [](const Params& a, const Params& b) { return paramsToYaml(a) == paramsToYaml(b); })
+        // An operator: with anything but Params, NotImplemented (so == is False), not TypeError.
+        .def(
+            "__eq__",
+            [](const Params& a, const Params& b) { return paramsToYaml(a) == paramsToYaml(b); },
+            py::is_operator())
         .def("__copy__", [](const Params& p) { return Params(p); })
         .def("__deepcopy__", [](const Params& p, const py::dict&) { return Params(p); })
         .def(
@@ -209,8 +221,14 @@ parameters (e.g. min_range < max_range) are checked by validate() and by Pipelin
                 }
                 return text + ")";
             })
+        // Unpickling restores the values as they were, not validated: a Params may exist before
+        // validate() passes (the rules between parameters), and pickle must not refuse it.
         .def(py::pickle([](const Params& p) { return paramsToYaml(p); },
-                        [](const std::string& yaml) { return fromYaml(yaml, "<pickle>"); }));
+                        [](const std::string& yaml) {
+                            Params p;
+                            applyParamsText(yaml, "<pickle>", p);
+                            return p;
+                        }));
 }
 
 }  // namespace travel::python

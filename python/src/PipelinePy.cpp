@@ -11,8 +11,12 @@
 #include <Eigen/Core>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -20,6 +24,7 @@
 
 #include "Bindings.hpp"
 #include "travel/Pipeline.hpp"
+#include "travel/Preprocessing.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Metrics.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
@@ -64,9 +69,13 @@ char dtypeKind(const py::array& a) {
     return a.dtype().kind();
 }
 
-/// An (N,) array-like as a std::vector<T> (numbers converted), or ValueError naming `what`.
+/// An (N,) array-like as a std::vector<T>, or ValueError naming `what`: a wrong shape, a dtype
+/// whose kind is not in `kinds`, or, for an integer T, a value outside [lo, hi] (T's range by
+/// default): integers are converted only when they fit, never wrapped (257 is not class 1).
 template <class T>
-std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds) {
+std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds,
+                          int64_t lo = static_cast<int64_t>(std::numeric_limits<T>::lowest()),
+                          int64_t hi = static_cast<int64_t>(std::numeric_limits<T>::max())) {
     const py::array a = py::array::ensure(object);
     if (!a) throw py::value_error(std::string(what) + ": expected an array");
     if (a.ndim() != 1 || (n >= 0 && a.shape(0) != n))
@@ -74,9 +83,35 @@ std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, co
                               (n >= 0 ? std::to_string(n) : std::string("N")) + ",), got " +
                               std::string(py::str(py::tuple(py::cast(
                                   std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))))));
-    if (!std::string(kinds).empty() && std::string(kinds).find(dtypeKind(a)) == std::string::npos)
+    const char kind = dtypeKind(a);
+    if (!std::string(kinds).empty() && std::string(kinds).find(kind) == std::string::npos)
         throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
                               " is not accepted (kinds '" + kinds + "')");
+    if constexpr (std::is_integral_v<T>) {
+        if (kind == 'i' || kind == 'u') {  // through 64 bits of the input's signedness
+            auto checked = [&](auto typed) {
+                std::vector<T> out(static_cast<std::size_t>(typed.size()));
+                for (std::size_t i = 0; i < out.size(); ++i) {
+                    const auto v = typed.data()[i];
+                    const bool fits =
+                        kind == 'u'
+                            ? static_cast<uint64_t>(v) <= static_cast<uint64_t>(hi) &&
+                                  (lo <= 0 || static_cast<uint64_t>(v) >= static_cast<uint64_t>(lo))
+                            : static_cast<int64_t>(v) >= lo && static_cast<int64_t>(v) <= hi;
+                    if (!fits)
+                        throw py::value_error(std::string(what) + ": values must be in [" +
+                                              std::to_string(lo) + ", " + std::to_string(hi) +
+                                              "], got " + std::to_string(v) + " at index " +
+                                              std::to_string(i));
+                    out[i] = static_cast<T>(v);
+                }
+                return out;
+            };
+            constexpr int flags = py::array::c_style | py::array::forcecast;
+            return kind == 'u' ? checked(py::array_t<uint64_t, flags>::ensure(a))
+                               : checked(py::array_t<int64_t, flags>::ensure(a));
+        }
+    }
     const auto typed = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
     return std::vector<T>(typed.data(), typed.data() + typed.size());
 }
@@ -100,24 +135,43 @@ struct PointsView {
     bool is_double = false;
 };
 
-PointsView checkPoints(const py::array& a) {
+/// `object` (a numpy array, or anything numpy reads: a list, ...) as an (N, 3) or (N, 4) float32
+/// or float64 array in the machine's byte order, or ValueError naming `what`. An array of that
+/// form is returned as is (read in place); one of the other byte order is converted (a copy).
+/// The dtype is compared by its type, not by identity: an unpickled array's float32 dtype is an
+/// equal but distinct object.
+py::array pointsArray(py::handle object, const char* what = "points") {
+    py::array a = py::array::ensure(object);
+    if (!a) throw py::value_error(std::string(what) + ": expected an (N, 3) or (N, 4) array");
     if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4))
         throw py::value_error(
-            "points: expected shape (N, 3) or (N, 4) (x, y, z[, intensity]), "
+            std::string(what) +
+            ": expected shape (N, 3) or (N, 4) (x, y, z[, intensity]), "
             "got ndim " +
             std::to_string(a.ndim()) +
             (a.ndim() >= 2 ? " with " + std::to_string(a.shape(1)) + " columns" : std::string()));
-    const bool f32 = a.dtype().is(py::dtype::of<float>());
-    const bool f64 = a.dtype().is(py::dtype::of<double>());
+    const py::dtype dtype = a.dtype();
+    const bool f32 = dtype.num() == py::dtype::of<float>().num();
+    const bool f64 = dtype.num() == py::dtype::of<double>().num();
     if (!f32 && !f64)
-        throw py::value_error("points: dtype must be float32 or float64, got " +
-                              std::string(py::str(a.dtype())));
+        throw py::value_error(std::string(what) + ": dtype must be float32 or float64, got " +
+                              std::string(py::str(py::handle(dtype))));
+    if (!dtype.attr("isnative").cast<bool>()) {
+        constexpr int flags = py::array::forcecast;
+        a = f64 ? py::array(py::array_t<double, flags>::ensure(a))
+                : py::array(py::array_t<float, flags>::ensure(a));
+    }
+    return a;
+}
+
+/// The layout of an array checked by pointsArray().
+PointsView viewOf(const py::array& a) {
     return {static_cast<const char*>(a.data()),
             a.shape(0),
             a.shape(1),
             a.strides(0),
             a.strides(1),
-            f64};
+            a.dtype().num() == py::dtype::of<double>().num()};
 }
 
 template <class T, int Cols>
@@ -206,9 +260,10 @@ ClustersPy clustersFrom(const std::vector<ClusterSummary>& c) {
     return out;
 }
 
-/// The terrain model of one frame; the arrays are built on first access.
+/// The terrain model of one frame; each per-node array is built on its first read and kept.
 struct TerrainPy {
     std::shared_ptr<const TerrainModel> model;
+    mutable std::map<int, py::object> arrays;  ///< per-node arrays once read, by slot
 };
 
 py::array_t<float> triangleCornersXYZ(const TerrainModel& t) {
@@ -262,16 +317,23 @@ struct PipelinePy {
 FrameInput frameInput(const py::object& attitude, const py::object& gravity,
                       const py::object& velocity, double reference_time) {
     FrameInput input;
+    if (!std::isfinite(reference_time))  // as velocity's: NaN would silently turn deskew off
+        throw py::value_error("reference_time: not finite");
     input.reference_time = reference_time;
     if (!attitude.is_none()) {
         const std::vector<double> r = fixedFrom(attitude, 9, "attitude (3x3 rotation)");
         Eigen::Matrix3d rotation;
         for (int i = 0; i < 9; ++i) rotation(i / 3, i % 3) = r[static_cast<std::size_t>(i)];
+        if (!isUsableAttitude(rotation))  // the library would ignore it: a mistake here
+            throw py::value_error(
+                "attitude: not a rotation (orthonormal within 1e-3, determinant +1 expected)");
         input.vehicle_attitude = rotation;
     }
     if (!gravity.is_none()) {
         const std::vector<double> g = fixedFrom(gravity, 3, "gravity");
         input.gravity_in_sensor = Eigen::Vector3d(g[0], g[1], g[2]);
+        if (!isUsableGravity(*input.gravity_in_sensor))
+            throw py::value_error("gravity: the zero vector has no direction");
     }
     if (!velocity.is_none()) {
         const std::vector<double> v = fixedFrom(velocity, 6, "velocity (vx, vy, vz, wx, wy, wz)");
@@ -284,26 +346,25 @@ FrameInput frameInput(const py::object& attitude, const py::object& gravity,
 ResultPy process(PipelinePy& self, const py::object& points, const py::object& rings,
                  const py::object& times, const py::object& attitude, const py::object& gravity,
                  const py::object& velocity, double reference_time) {
-    const FrameInput input = frameInput(attitude, gravity, velocity, reference_time);
+    FrameInput input = frameInput(attitude, gravity, velocity, reference_time);
     const ScanPy* scan = py::isinstance<ScanPy>(points) ? &points.cast<const ScanPy&>() : nullptr;
     py::array array;
     PointsView view;
     std::vector<uint16_t> ring;
     std::vector<float> time;
     if (!scan) {
-        array = py::array::ensure(points);
-        if (!array) throw py::value_error("points: expected a numpy array or a travel.Scan");
-        view = checkPoints(array);
-        if (!rings.is_none()) {
-            const auto r = vectorFrom<int64_t>(rings, view.n, "rings", "iu");
-            ring.reserve(r.size());
-            for (int64_t v : r) {
-                if (v < 0 || v > 65535)
-                    throw py::value_error("rings: values must be in [0, 65535]");
-                ring.push_back(static_cast<uint16_t>(v));
-            }
+        array = pointsArray(points);
+        view = viewOf(array);
+        if (!rings.is_none()) ring = vectorFrom<uint16_t>(rings, view.n, "rings", "iu");
+        if (!times.is_none()) {
+            // Relative to reference_time, in double, before the library's float32: absolute
+            // stamps (1.7e9 s, float32 step 128 s) would otherwise all round to the reference.
+            const auto t = vectorFrom<double>(times, view.n, "times", "f");
+            time.resize(t.size());
+            for (std::size_t i = 0; i < t.size(); ++i)
+                time[i] = static_cast<float>(t[i] - reference_time);
+            input.reference_time = 0.0;
         }
-        if (!times.is_none()) time = vectorFrom<float>(times, view.n, "times", "f");
     } else if (!rings.is_none() || !times.is_none()) {
         throw py::value_error(
             "rings and times come from the Scan; pass its points as an array "
@@ -362,23 +423,26 @@ ScanPy readScanPy(const std::string& path, const std::string& format) {
     return s;
 }
 
-void writeLabels(const std::string& path, const py::array& labels, const py::array& cluster_ids) {
-    const auto cls = vectorFrom<uint8_t>(labels, -1, "labels", "iu");
-    const auto ids = vectorFrom<uint32_t>(cluster_ids, static_cast<py::ssize_t>(cls.size()),
-                                          "cluster_ids", "iu");
-    std::vector<uint32_t> encoded(cls.size());
-    for (std::size_t i = 0; i < cls.size(); ++i) {
-        if (cls[i] > 3) throw py::value_error("labels: values must be 0..3 (travel classes)");
-        encoded[i] = encodeLabel(static_cast<PointClass>(cls[i]), ids[i]);
-    }
-    writeLabelFile(path, encoded);
-}
-
+/// An (N,) array-like of travel classes (0..3) as PointClass values.
 std::vector<PointClass> classesFrom(const py::handle& labels, py::ssize_t n) {
-    const auto v = vectorFrom<uint8_t>(labels, n, "labels", "iu");
+    const auto v = vectorFrom<uint8_t>(labels, n, "labels", "iu", 0, 3);
     std::vector<PointClass> out(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) out[i] = static_cast<PointClass>(v[i]);
     return out;
+}
+
+void writeLabels(const std::string& path, const py::handle& labels, const py::handle& cluster_ids) {
+    const auto cls = classesFrom(labels, -1);
+    const auto ids = vectorFrom<uint32_t>(cluster_ids, static_cast<py::ssize_t>(cls.size()),
+                                          "cluster_ids", "iu");
+    std::vector<uint32_t> encoded(cls.size());
+    for (std::size_t i = 0; i < cls.size(); ++i) encoded[i] = encodeLabel(cls[i], ids[i]);
+    try {
+        writeLabelFile(path, encoded);
+    } catch (const std::runtime_error& e) {  // the library's message names the file and why
+        PyErr_SetString(PyExc_OSError, e.what());
+        throw py::error_already_set();
+    }
 }
 
 py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py::object& z,
@@ -404,13 +468,14 @@ py::dict groundMetrics(const py::handle& labels, const py::handle& gt, const py:
 }
 
 py::dict objectMetrics(const py::handle& cluster_ids, const py::handle& labels,
-                       const py::handle& gt, const py::array& points,
+                       const py::handle& gt, const py::handle& points,
                        const ObjectEvalOptions& options) {
     const auto pred = classesFrom(labels, -1);
     const auto n = static_cast<py::ssize_t>(pred.size());
     const auto ids = vectorFrom<uint32_t>(cluster_ids, n, "cluster_ids", "iu");
     const auto truth = vectorFrom<uint32_t>(gt, n, "gt", "iu");
-    const PointsView view = checkPoints(points);
+    const py::array array = pointsArray(points);
+    const PointsView view = viewOf(array);
     if (view.n != n) throw py::value_error("points: expected " + std::to_string(n) + " rows");
     PointCloud cloud;
     view.is_double ? copyColumns<double>(view, cloud) : copyColumns<float>(view, cloud);
@@ -503,11 +568,21 @@ under the centroid (NaN if unknown); height_above_ground: of the highest point a
 
     using T = TerrainModel;
     auto nodes = [](auto get) { return [get](const TerrainPy& t) { return get(*t.model); }; };
+    // A per-node array, built on its first read and kept: later reads return the same array.
+    int slots = 0;
+    auto cached = [&slots](auto get) {
+        return [slot = slots++, get](const TerrainPy& t) {
+            py::object& array = t.arrays[slot];
+            if (!array) array = get(*t.model);
+            return array;
+        };
+    };
     py::class_<TerrainPy>(m, "Terrain", R"doc(
 The terrain model of a frame (paper Sec. III): a tri-grid of square cells of side `resolution`,
 4 triangular nodes per cell, node index = 4 * (iy * cells_per_side + ix) + triangle (0 east,
 1 north, 2 west, 3 south). Aligned frame: sensor origin, z up; ground near z = -sensor_height.
-Arrays have one row per node (M = 4 * cells_per_side**2) and are built when first read.
+Arrays have one row per node (M = 4 * cells_per_side**2), built when first read and kept
+(each read returns the same array).
 )doc")
         .def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
         .def_property_readonly("resolution", nodes([](const T& t) { return t.resolution; }))
@@ -518,44 +593,44 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
                                "start node of the first search (-1: none)")
         .def_property_readonly("num_components", nodes([](const T& t) { return t.num_components; }))
         .def_property_readonly(
-            "node_class", nodes([](const T& t) {
+            "node_class", cached([](const T& t) {
                 return columns<uint8_t, 1>(t.nodes, [](const TriNode& n) { return n.node_class; });
             }),
             "(M,) uint8: 0 empty, 1 unknown (too few points), 2 terrain, 3 obstacle (too steep)")
-        .def_property_readonly("num_points", nodes([](const T& t) {
+        .def_property_readonly("num_points", cached([](const T& t) {
                                    return columns<uint32_t, 1>(
                                        t.nodes, [](const TriNode& n) { return n.count; });
                                }),
                                "(M,) uint32")
-        .def_property_readonly("planes", nodes([](const T& t) {
+        .def_property_readonly("planes", cached([](const T& t) {
                                    return columns<float, 4>(t.nodes, [](const TriNode& n) {
                                        return Eigen::Vector4f(n.normal.x(), n.normal.y(),
                                                               n.normal.z(), n.d);
                                    });
                                }),
                                "(M, 4) float32 node-wise PCA plane (sx, sy, sz, d): s.p + d = 0")
-        .def_property_readonly("means", nodes([](const T& t) {
+        .def_property_readonly("means", cached([](const T& t) {
                                    return columns<float, 3>(
                                        t.nodes, [](const TriNode& n) { return n.mean; });
                                }),
                                "(M, 3) float32 mean of the node's points")
-        .def_property_readonly("weights", nodes([](const T& t) {
+        .def_property_readonly("weights", cached([](const T& t) {
                                    return columns<float, 1>(
                                        t.nodes, [](const TriNode& n) { return n.weight; });
                                }),
                                "(M,) float32 the paper's node weight (eq. 1)")
-        .def_property_readonly("reached", nodes([](const T& t) {
+        .def_property_readonly("reached", cached([](const T& t) {
                                    return columns<bool, 1>(
                                        t.nodes, [](const TriNode& n) { return n.reached; });
                                }),
                                "(M,) bool reached by the traversable graph search")
         .def_property_readonly(
-            "traversable", nodes([](const T& t) {
+            "traversable", cached([](const T& t) {
                 return columns<bool, 1>(t.nodes, [](const TriNode& n) { return n.traversable; });
             }),
             "(M,) bool the final decision: the node's points are labelled against ground_planes")
         .def_property_readonly(
-            "ground_planes", nodes([](const T& t) {
+            "ground_planes", cached([](const T& t) {
                 return columns<float, 4>(t.nodes, [](const TriNode& n) {
                     return Eigen::Vector4f(n.refit_normal.x(), n.refit_normal.y(),
                                            n.refit_normal.z(), n.refit_d);
@@ -563,7 +638,7 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
             }),
             "(M, 4) float32 TTMF's refitted plane (sx, sy, sz, d); meaningful where traversable")
         .def_property_readonly(
-            "corners", nodes([](const T& t) { return triangleCornersXYZ(t); }),
+            "corners", cached([](const T& t) { return triangleCornersXYZ(t); }),
             "(M, 3, 3) float32 the triangle's corners (cell centre first, counter-clockwise): "
             "x, y and TTMF's corner height z (NaN where no traversable node voted)")
         .def(
@@ -571,8 +646,9 @@ Arrays have one row per node (M = 4 * cells_per_side**2) and are built when firs
             py::arg("x"), py::arg("y"), "Node index holding (x, y), -1 outside the grid.")
         .def(
             "height_above_ground",
-            [](const TerrainPy& t, const py::array& points) {
-                const PointsView v = checkPoints(points);
+            [](const TerrainPy& t, const py::handle& points) {
+                const py::array array = pointsArray(points);
+                const PointsView v = viewOf(array);
                 PointCloud c;
                 v.is_double ? copyColumns<double>(v, c) : copyColumns<float>(v, c);
                 std::vector<float> h(c.size());
@@ -639,14 +715,22 @@ points: (N, 3) or (N, 4) float32 or float64 array (x, y, z[, intensity]) in the 
   Points with NaN / inf coordinates, all-zero points and points outside [min_range, max_range]
   are labelled 0 (invalid); nothing is dropped, nothing raises.
 rings: optional (N,) integer laser ring (0 = lowest), values in [0, 65535].
-times: optional (N,) float per-point time [s] (same clock as reference_time), for deskew.
+times: optional (N,) float per-point time [s] (same clock as reference_time, absolute stamps
+  fine: taken relative to it in double), for deskew.
 attitude: optional 3x3 rotation vehicle -> gravity-aligned (roll and pitch level the frame).
 gravity: optional 3-vector, the gravity direction measured in the sensor frame (instead).
 velocity: optional (vx, vy, vz, wx, wy, wz), sensor frame [m/s, rad/s], for deskew with times.
 Raises ValueError for a wrong shape, dtype or size.
 )doc")
         .def_property_readonly(
-            "params", [](const PipelinePy& p) { return p.pipeline.params(); },
+            "params",
+            [](PipelinePy& p) {
+                // Under the lock, as process() (which writes 'auto' estimates) runs: waiting for
+                // it without the GIL, so that the running call can finish.
+                py::gil_scoped_release release;
+                std::lock_guard<std::mutex> lock(p.mutex);
+                return p.pipeline.params();
+            },
             "The parameters in use ('auto' values replaced by their estimates once known).");
 
     m.def("read_scan", &readScanPy, py::arg("path"), py::arg("format") = "auto", R"doc(

@@ -16,6 +16,19 @@ def _labels_of(result):
     return result, None
 
 
+def _classes_and_ids(result, cluster_ids, caller):
+    """(labels, cluster_ids) of a Result, or of a labels array with its cluster_ids: `caller`'s
+    two forms. Ids given beside a Result (which has its own) are an error, not dropped."""
+    if isinstance(result, _travel.Result):
+        if cluster_ids is not None:
+            raise ValueError(f"{caller}: cluster_ids are given with a labels array; a Result has "
+                             "its own (pass result.labels to use other cluster_ids)")
+        return result.labels, result.cluster_ids
+    if cluster_ids is None:
+        raise ValueError(f"{caller}: give a Result, or labels and cluster_ids")
+    return result, cluster_ids
+
+
 def ground(labels, gt, protocol="B", z=None, sensor_height=None):
     """Ground precision / recall / F1 / accuracy in percent (never NaN) and the counts.
 
@@ -40,17 +53,12 @@ def objects(result, gt, points, cluster_ids=None, gt_cluster_distance=0.5,
     """Object scores of one frame (libtravel/eval/include/travel/eval/ObjectMetrics.hpp):
     over- / under-segmentation entropy (paper eqs. 6-7) and instance coverage / purity.
 
-    result: a travel.Result, or an (N,) class array with cluster_ids (N,) given.
+    result: a travel.Result, or an (N,) class array with cluster_ids (N,) given (not both).
     gt: (N,) SemanticKITTI labels (instance id = label >> 16). points: (N, 3+) as segmented.
     Returns a dict: ose_sum, use_sum, ose_mean, use_mean, gt_objects, clusters, scored_points,
     mean_coverage, mean_purity, clustered, split, merged, instances (list of dicts).
     """
-    if isinstance(result, _travel.Result):
-        labels, cluster_ids = result.labels, result.cluster_ids
-    else:
-        labels = result
-        if cluster_ids is None:
-            raise ValueError("objects: give a Result, or labels and cluster_ids")
+    labels, cluster_ids = _classes_and_ids(result, cluster_ids, "objects")
     if isinstance(points, _travel.Scan):
         points = points.points
     options = _travel._ObjectEvalOptions()

@@ -116,6 +116,11 @@ def test_input_errors(frame):
         pipeline.process(points, attitude=np.eye(2))
     with pytest.raises(ValueError, match="velocity"):
         pipeline.process(points, velocity=[1, 2, 3])
+    times = np.zeros(len(points), np.float32)
+    with pytest.raises(ValueError, match=r"velocity \(.*\): not finite"):
+        pipeline.process(points, times=times, velocity=[np.nan, 0, 0, 0, 0, 0])
+    with pytest.raises(ValueError, match="reference_time: not finite"):  # silently no deskew
+        pipeline.process(points, times=times, velocity=np.ones(6), reference_time=np.nan)
     # An empty frame is not an error: nothing to label.
     assert len(pipeline.process(np.zeros((0, 3), np.float32)).labels) == 0
 
@@ -127,6 +132,15 @@ def test_attitude_and_deskew_inputs(frame):
     times = np.linspace(0, 0.1, len(points), dtype=np.float32)
     still = segment(points, times=times, velocity=np.zeros(6))
     assert np.array_equal(still.labels, level.labels)
+    # Absolute float64 stamps (ROS, UNIX time) deskew as the same times relative to the sweep:
+    # in float32 (the library's per-point time) 1.7e9 s has a 128 s step and every dt was 0.
+    relative = np.linspace(0, 0.1, len(points))
+    moving = [5.0, 0, 0, 0, 0, 0.5]
+    deskewed = segment(points, times=(relative - 0.05).astype(np.float32), velocity=moving)
+    assert not np.array_equal(deskewed.labels, level.labels)  # the motion matters here
+    t0 = 1.7e9
+    stamped = segment(points, times=t0 + relative, velocity=moving, reference_time=t0 + 0.05)
+    assert np.array_equal(stamped.labels, deskewed.labels)
 
 
 def test_params_attributes_come_from_the_library():
@@ -257,3 +271,178 @@ def test_threads_give_identical_results():
         rs = list(pool.map(lambda k: shared.process(frames[k % 4]), range(8)))
     for k, r in enumerate(rs):
         assert np.array_equal(r.labels, serial[k % 4].labels)
+
+
+def test_float32_of_any_origin_is_accepted(frame):
+    """A float32 array is float32 whatever dtype object describes it: an unpickled array (its
+    dtype is a new, equal object) and a big-endian one give the labels of the native array."""
+    points = frame[0]
+    reference = segment(points)
+    for name, p in {"unpickled": pickle.loads(pickle.dumps(points)),
+                    "big-endian": points.astype(">f4"),
+                    "big-endian float64": points.astype(">f8")}.items():
+        assert np.array_equal(segment(p).labels, reference.labels), name
+        h = reference.terrain.height_above_ground(p[:10])
+        assert np.array_equal(h, reference.terrain.height_above_ground(points[:10]), equal_nan=True)
+    # Every points argument reads what process reads, a list included.
+    h = reference.terrain.height_above_ground([[5.0, 0.5, -1.0]])
+    assert abs(h[0] - 0.73) < 0.05
+    gt = np.full(len(points), 40)
+    assert travel.metrics.objects(reference, gt, points[:, :3].tolist()) == \
+        travel.metrics.objects(reference, gt, points)
+
+
+def test_integers_out_of_range_are_refused_not_wrapped(tmp_path, frame):
+    """Integer arrays are converted only when every value fits: a class 257 or -255 is not
+    class 1, a cluster id -1 or 2**33 is not 65535 or 0 (no cluster), a gt label -1 is not
+    0xFFFFFFFF."""
+    path = tmp_path / "x.label"
+    with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+        travel.write_labels(path, np.array([1, 257]), np.array([0, 0]))
+    with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+        travel.write_labels(path, np.array([1, -255]), np.array([0, 0]))
+    for bad in (-1, 2 ** 33):
+        with pytest.raises(ValueError, match="cluster_ids: values must be in"):
+            travel.write_labels(path, np.array([1, 2]), np.array([0, bad]))
+    assert not path.exists()
+    travel.write_labels(path, np.array([1, 2], np.int64), np.array([0, 2 ** 32 - 1], np.uint64))
+    assert list(travel.read_labels(path)) == [1, (0xFFFF << 16) | 2]
+    labels, gt = segment(frame[0]).labels, np.full(len(frame[0]), 40)
+    for bad in (5, 257):
+        with pytest.raises(ValueError, match=r"labels: values must be in \[0, 3\]"):
+            travel.metrics.ground(np.full(len(gt), bad), gt)
+    with pytest.raises(ValueError, match="gt: values must be in"):
+        travel.metrics.ground(labels, np.full(len(gt), -1))
+    with pytest.raises(ValueError, match=r"rings: values must be in \[0, 65535\]"):
+        segment(frame[0], rings=np.full(len(gt), -1))
+
+
+def test_params_compare_with_anything():
+    """Params == something else is False (not a TypeError), so Params sit in lists and dicts."""
+    p = travel.Params()
+    assert not (p == 1) and p != None and p != "hdl64"  # noqa: E711
+    assert p in [None, travel.Params()] and p not in [1, "x"]
+    assert {"a": p} == {"a": travel.Params()}
+
+
+def test_terrain_arrays_are_built_once(frame):
+    """A terrain array is built on its first read and kept (docs/python.md): reading it in a loop
+    costs nothing more, and the array read is the array kept."""
+    t = segment(frame[0]).terrain
+    for name in ("node_class", "num_points", "planes", "means", "weights", "reached",
+                 "traversable", "ground_planes", "corners"):
+        assert getattr(t, name) is getattr(t, name), name
+    before = bool(t.traversable[0])
+    t.traversable[0] = not before
+    assert t.traversable[0] == (not before)  # not lost in a fresh copy
+
+
+def test_file_errors_are_os_errors(tmp_path, frame):
+    """Every reader raises FileNotFoundError for a missing file and IsADirectoryError for a
+    folder (both OSError, naming the path), and write_labels an OSError when it cannot write."""
+    for read in (travel.read_scan, travel.read_labels):
+        with pytest.raises(FileNotFoundError, match="missing.bin"):
+            read(tmp_path / "missing.bin")
+        with pytest.raises(IsADirectoryError, match=str(tmp_path)):
+            read(tmp_path)
+    r = segment(frame[0])
+    with pytest.raises(OSError, match="no-such-folder"):
+        travel.write_labels(tmp_path / "no-such-folder" / "x.label", r)
+
+
+def test_every_path_argument_takes_str_bytes_and_pathlike(tmp_path, frame):
+    config = tmp_path / "robot.yaml"
+    config.write_text("travel:\n  num_rings: 32\n")
+    scan_file = tmp_path / "000000.bin"
+    frame[0].tofile(scan_file)
+    for path in (config, str(config), bytes(config)):
+        assert travel.Params.from_file(path).num_rings == 32, repr(path)
+    for path in (scan_file, str(scan_file), bytes(scan_file)):
+        r = segment(travel.read_scan(path))
+        label_file = tmp_path / "x.label"
+        travel.write_labels(bytes(label_file), r)
+        assert np.array_equal(travel.read_labels(bytes(label_file)) & 0xFFFF, r.labels)
+
+
+def test_numpy_scalars_are_their_python_types():
+    """A numpy scalar sets a parameter as the Python number or bool it stands for (array.any()
+    is a numpy bool); a bool is still no number."""
+    p = travel.Params()
+    p.deskew = np.bool_(False)
+    p.num_rings = np.int32(32)
+    p.ground_dist = np.float32(0.25)
+    assert (p.deskew, p.num_rings, p.ground_dist) == (False, 32, float(np.float32(0.25)))
+    assert travel.Params(deskew=np.zeros(3).any()).deskew is False
+    for key in ("num_rings", "ground_dist"):
+        with pytest.raises(travel.ConfigError, match="expected a"):
+            setattr(p, key, np.True_)
+
+
+def test_attitude_and_gravity_the_library_would_ignore_are_refused(frame):
+    """The library does not use an attitude that is no rotation, nor a zero gravity (a stream
+    goes on level); in Python such an argument is a mistake and raises instead of being
+    silently ignored."""
+    points = frame[0][:1000]
+    pipeline = travel.Pipeline(travel.Params())
+    for bad in (2 * np.eye(3), np.ones((3, 3)), np.diag([1.0, 1.0, -1.0])):
+        with pytest.raises(ValueError, match="attitude.*not a rotation"):
+            pipeline.process(points, attitude=bad)
+    with pytest.raises(ValueError, match="gravity.*zero"):
+        pipeline.process(points, gravity=[0, 0, 0])
+    tilted = np.array([[1, 0, 0], [0, np.cos(0.1), -np.sin(0.1)], [0, np.sin(0.1), np.cos(0.1)]])
+    pipeline.process(points, attitude=tilted, gravity=[0, 0, -9.81])
+
+
+def test_cluster_ids_beside_a_result_are_not_ignored(tmp_path, frame):
+    """write_labels and metrics.objects take a Result, or labels with cluster_ids: ids given
+    beside a Result (which has its own) raise instead of being silently dropped."""
+    points, _, is_box = frame
+    r = segment(points)
+    other = np.zeros(len(points), np.uint32)
+    with pytest.raises(ValueError, match="cluster_ids"):
+        travel.write_labels(tmp_path / "x.label", r, other)
+    assert not (tmp_path / "x.label").exists()
+    gt = np.where(is_box, (7 << 16) | 10, 40).astype(np.uint32)
+    with pytest.raises(ValueError, match="cluster_ids"):
+        travel.metrics.objects(r, gt, points, cluster_ids=other)
+    travel.write_labels(tmp_path / "x.label", r.labels, other)  # the labels-array form
+    assert np.array_equal(travel.read_labels(tmp_path / "x.label"), r.labels)
+    assert travel.metrics.objects(r.labels, gt, points, cluster_ids=r.cluster_ids) == \
+        travel.metrics.objects(r, gt, points)
+
+
+def test_every_params_pickles():
+    """A Params pickles and copies whatever it holds, also before validate() would pass (Params
+    takes values one by one; rules between them are checked by validate() and Pipeline)."""
+    p = travel.Params(min_range=50.0, max_range=40.0)
+    for q in (pickle.loads(pickle.dumps(p)), copy.deepcopy(p), copy.copy(p)):
+        assert q == p and (q.min_range, q.max_range) == (50.0, 40.0)
+    with pytest.raises(travel.ConfigError, match="min_range"):
+        pickle.loads(pickle.dumps(p)).validate()
+
+
+
+def test_params_read_waits_for_a_running_process(tmp_path, frame):
+    """Pipeline.params is read under the Pipeline's lock, as process() runs under it (process may
+    write 'auto' estimates into the parameters): a read from another thread waits for the
+    running call instead of copying the parameters while they change."""
+    import threading
+    import time
+    frame[0].tofile(tmp_path / "000000.bin")
+    scan = travel.read_scan(tmp_path / "000000.bin")
+    pipeline = travel.Pipeline(travel.Params(sensor_height="auto"))
+    started = threading.Event()
+
+    def run():  # the C++ loop of python/bench/overhead.py: 200 frames under the lock, no GIL
+        started.set()
+        travel._travel._bench_cpp(pipeline, scan, 200)
+
+    worker = threading.Thread(target=run)
+    worker.start()
+    started.wait()
+    time.sleep(0.2)  # the worker holds the lock by now (about a second of work ahead)
+    start = time.perf_counter()
+    params = pipeline.params  # waits for the worker's frames (before: returned at once)
+    waited = time.perf_counter() - start
+    worker.join()
+    assert waited > 0.2 and params == pipeline.params

@@ -49,6 +49,12 @@ def test_show_open3d_headless(sequence, tmp_path):
         out = tmp_path / f"{colour}.ply"
         run("show_open3d.py", sequence / "velodyne/000000.bin", "--color", colour, "--save", out)
         assert out.stat().st_size > 1000
+    # A file Open3D cannot write fails the script (Open3D itself only prints a warning).
+    for bad in (tmp_path / "no-such-folder" / "x.ply", tmp_path / "x.unknown-extension"):
+        done = subprocess.run([sys.executable, str(EXAMPLES / "show_open3d.py"),
+                               sequence / "velodyne/000000.bin", "--save", bad],
+                              capture_output=True, text=True, timeout=300, env=os.environ.copy())
+        assert done.returncode != 0 and "could not write" in done.stderr, bad
 
 
 def test_evaluate_folder(sequence):

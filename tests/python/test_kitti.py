@@ -61,3 +61,22 @@ def test_threads_on_real_frames(kitti_sequence):
     for k, r in enumerate(results):
         assert np.array_equal(r.labels, serial[k % 3].labels)
         assert np.array_equal(r.cluster_ids, serial[k % 3].cluster_ids)
+
+
+def test_params_are_travel_kittis():
+    """Same parameter names, defaults and presets as the CLI: travel-kitti's --print-config
+    (its default preset hdl64, then each preset by name) reads back as Params.from_preset."""
+    kitti = os.environ.get("TRAVEL_KITTI", "")
+    if not os.path.isfile(kitti):
+        pytest.skip("travel-kitti not built (TRAVEL_BUILD_MRPT=OFF): nothing to compare with")
+
+    def printed(*args):
+        done = subprocess.run([kitti, "--print-config", *args], check=True, capture_output=True,
+                              text=True)
+        return travel.Params.from_yaml(done.stdout, "travel-kitti --print-config")
+
+    assert printed() == travel.Params.from_preset("hdl64")
+    assert printed() != travel.Params()  # the library's defaults: no car box (docs/python.md)
+    for name in travel.Params.presets():
+        assert printed("-p", name) == travel.Params.from_preset(name), name
+    assert printed("--set", "travel.sensor_height=auto").is_auto("sensor_height")

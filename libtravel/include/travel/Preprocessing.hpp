@@ -50,6 +50,14 @@ struct AlignedCloud {
 /// Rz(yaw) Ry(pitch) Rx(roll) (MRPT's CPose3D convention).
 Eigen::Matrix3d mountRotation(const Params& params);
 
+/// Whether `R` may be used as FrameInput::vehicle_attitude: finite, orthonormal within 1e-3,
+/// determinant > 0 (not a reflection). Another matrix is ignored by alignmentRotation.
+bool isUsableAttitude(const Eigen::Matrix3d& R);
+
+/// Whether `g` may be used as FrameInput::gravity_in_sensor: finite, of length > 0. Another
+/// vector is ignored by alignmentRotation.
+bool isUsableGravity(const Eigen::Vector3d& g);
+
 /// Rotation from the sensor frame to the aligned frame for this frame's parameters and input:
 /// R = R_level * R_mount, where R_mount comes from mount_{roll,pitch,yaw}_deg and R_level
 /// removes the vehicle's roll and pitch (or the measured gravity tilt).
