@@ -86,11 +86,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     // composed from the identity, else the latest CObservationOdometry record).
     travel_mrpt::RawlogMotion motion(map.filter());
     ProgressLine progress("travel-map", 0, o.verbosity);
-    notes.attach(&progress);
-    struct Detach {
-        Notes& notes;
-        ~Detach() { notes.attach(nullptr); }
-    } detach{notes};
+    const Notes::Attached attached(notes, progress);
     bool warned_no_pose = false;
     RejectionNotes rejections;
     long record = -1;  // the index of the record being read
@@ -163,7 +159,7 @@ fs::path sequenceFolder(const travel::ScanList& scans, const std::string& input)
 }
 
 void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTraversabilityMap& map,
-              Stats& stats, std::optional<PoseFileSource> pose_file) {
+              Stats& stats, std::optional<PoseFileSource> pose_file, Notes& notes) {
     const std::vector<std::string>& files = scans.files;
     const fs::path dir = sequenceFolder(scans, o.input);
     std::string calib = o.calib;
@@ -184,6 +180,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
     const std::size_t count =
         o.max_frames > 0 ? std::min(files.size(), std::size_t(o.max_frames)) : files.size();
     ProgressLine progress("travel-map", count, o.verbosity);
+    const Notes::Attached attached(notes, progress);  // notes come from the producing threads
 
     // Each scan is read straight into travel's cloud, segmented and fused into the grid on the
     // producing thread (map.segment, map.fuseGrid), then its rays update the OctoMap on the

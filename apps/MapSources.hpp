@@ -68,8 +68,9 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
 /// KITTI sequence folder, also when `input` is its velodyne/ folder, else `input` itself.
 std::filesystem::path sequenceFolder(const travel::ScanList& scans, const std::string& input);
 
-/// Maps `scans`, those of o.input (a KITTI sequence folder or a folder of scans).
+/// Maps `scans`, those of o.input (a KITTI sequence folder or a folder of scans); `notes` as for
+/// mapRawlog.
 void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTraversabilityMap& map,
-              Stats& stats, std::optional<PoseFileSource> pose_file);
+              Stats& stats, std::optional<PoseFileSource> pose_file, Notes& notes);
 
 }  // namespace travel::apps

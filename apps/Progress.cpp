@@ -128,16 +128,20 @@ ProgressLine::~ProgressLine() {
 }
 
 void ProgressLine::update(std::size_t done) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     state_.done = done;
     maybeDraw(false);
 }
 
 void ProgressLine::update(std::size_t done, double fraction) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     state_.fraction = fraction;
-    update(done);
+    state_.done = done;
+    maybeDraw(false);
 }
 
 void ProgressLine::updateSimTime(std::size_t done, double t, double t_total) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     state_.done = done;
     state_.sim_time = t;
     state_.sim_total = t_total;
@@ -183,6 +187,7 @@ std::string mountNoteLine(const std::string& app, const std::string& context,
 }
 
 void ProgressLine::note(const std::string& line) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (mode_ == Mode::Terminal && printed_) std::fputc('\n', stderr);
     printed_ = false;  // the next draw starts a fresh line
     std::fprintf(stderr, "%s\n", line.c_str());
@@ -190,6 +195,7 @@ void ProgressLine::note(const std::string& line) {
 }
 
 void ProgressLine::finish() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (mode_ == Mode::Off) return;
     if (mode_ == Mode::Terminal && printed_) {
         maybeDraw(true);

@@ -79,7 +79,8 @@ std::string mountNoteLine(const std::string& app, const std::string& context,
 std::string formatDuration(double seconds);
 
 /// One progress display on stderr. update() is cheap when nothing is due (one clock read).
-/// Nothing at all with Verbosity::Quiet. finish() (or the destructor) ends the line.
+/// Nothing at all with Verbosity::Quiet. finish() (or the destructor) ends the line. Every
+/// method may be called from any thread (notes come from workers while the main thread draws).
 class ProgressLine {
   public:
     ProgressLine(std::string label, std::size_t total, Verbosity verbosity,
@@ -94,7 +95,10 @@ class ProgressLine {
     void update(std::size_t done, double fraction);
     /// travel-nav-sim: `done` steps, simulated time `t` of `t_total` seconds.
     void updateSimTime(std::size_t done, double t, double t_total);
-    void setTotal(std::size_t total) { state_.total = total; }
+    void setTotal(std::size_t total) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        state_.total = total;
+    }
     /// Prints `line` (a warning) on stderr on a line of its own, even with -q, the progress line
     /// going on below it.
     void note(const std::string& line);
@@ -106,6 +110,7 @@ class ProgressLine {
     void maybeDraw(bool force);
     void draw();
 
+    std::mutex mutex_;  // notes come from worker threads (-j 2) while the main thread updates
     std::string label_, unit_;
     Mode mode_;
     ProgressState state_;
@@ -132,6 +137,18 @@ class Notes {
     void once(const std::string& text);
     /// `line` as it is.
     void say(const std::string& line);
+
+    /// attach(&progress) for the lifetime of this object, then attach(nullptr).
+    class Attached {
+      public:
+        Attached(Notes& notes, ProgressLine& progress) : notes_(notes) { notes_.attach(&progress); }
+        ~Attached() { notes_.attach(nullptr); }
+        Attached(const Attached&) = delete;
+        Attached& operator=(const Attached&) = delete;
+
+      private:
+        Notes& notes_;
+    };
 
   private:
     std::string app_;

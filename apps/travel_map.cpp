@@ -193,7 +193,7 @@ int run(int argc, char** argv) {
     Stats stats;
     const double cpu_start = cpuSeconds();
     if (kitti)
-        travel::apps::mapKitti(o, *scans, map, stats, pose_file);
+        travel::apps::mapKitti(o, *scans, map, stats, pose_file, notes);
     else
         travel::apps::mapRawlog(o, map, stats, pose_file, notes);
     const double map_seconds = std::chrono::duration<double>(Clock::now() - start).count();
