@@ -33,6 +33,7 @@
 #include "travel/Errors.hpp"
 #include "travel/Params.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/Text.hpp"
 #include "travel/io/ScanIO.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
 
@@ -228,13 +229,7 @@ inline double parseNumber(const std::string& text, const std::string& flag) {
 /// names them for the message ("X,Y in metres").
 inline std::vector<double> parseNumbers(const std::string& text, std::size_t count,
                                         const std::string& flag, const std::string& expected) {
-    std::vector<std::string> parts(1);
-    for (const char c : text) {
-        if (c == ',')
-            parts.emplace_back();
-        else
-            parts.back().push_back(c);
-    }
+    const std::vector<std::string> parts = travel::splitList(text, ',');
     if (parts.size() != count)
         throw usageError(flag + ": expected " + expected + ", got '" + text + "'");
     std::vector<double> values;

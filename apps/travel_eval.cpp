@@ -33,6 +33,7 @@
 #include "Progress.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/Text.hpp"
 #include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
@@ -367,9 +368,8 @@ int run(int argc, char** argv) {
     const travel::Params& params = configuration.travel;
     const std::string setup = flags.config.describe();
 
-    std::vector<std::string> names = methods.isSet()
-                                         ? travel::eval::splitList(methods.getValue(), ',')
-                                         : travel::eval::methodNames();
+    std::vector<std::string> names =
+        methods.isSet() ? travel::splitList(methods.getValue(), ',') : travel::eval::methodNames();
     if (is_sweep || is_merges) names = {method.getValue()};
     if (names.empty()) throw travel::apps::usageError("--methods names no method");
     for (const std::string& name : names) {

@@ -22,6 +22,7 @@
 #include "travel/ParamsIO.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
+#include "travel/Text.hpp"
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
@@ -90,7 +91,7 @@ Options parseCommandLine(int argc, char** argv) {
     travel_mrpt::requirePictureName(o.out);
     travel::apps::checkOutputsApart({{"-i", o.scan}}, {{"-o", o.out}});
     o.quiet = flags.quiet();
-    for (const std::string& m : travel::eval::splitList(methods.getValue(), ','))
+    for (const std::string& m : travel::splitList(methods.getValue(), ','))
         if (!m.empty()) o.methods.push_back(m);
     o.mpp = picture.metresPerPixel();
     o.size = picture.sidePixels();

@@ -12,6 +12,7 @@
 #include "travel/Errors.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
+#include "travel/Text.hpp"
 #include "travel/TraversableGraphSearch.hpp"
 #include "travel/TriGridField.hpp"
 
@@ -297,3 +298,13 @@ TEST(Params, ValidateRejectsOutOfRangeAndHugeGrids) {
 
 }  // namespace
 }  // namespace travel
+
+TEST(Text, SplitListKeepsEmptyItems) {
+    using V = std::vector<std::string>;
+    EXPECT_EQ(travel::splitList("", ','), V{});
+    EXPECT_EQ(travel::splitList("a", ','), V{"a"});
+    EXPECT_EQ(travel::splitList("a,b,c", ','), (V{"a", "b", "c"}));
+    EXPECT_EQ(travel::splitList("a,,b", ','), (V{"a", "", "b"}));
+    EXPECT_EQ(travel::splitList("a,b,", ','), (V{"a", "b", ""}));
+    EXPECT_EQ(travel::splitList(",", ','), (V{"", ""}));
+}

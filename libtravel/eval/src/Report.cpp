@@ -1,5 +1,6 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/eval/Report.hpp"
+#include "travel/Text.hpp"
 
 #include <unistd.h>
 
@@ -48,15 +49,6 @@ std::string nowText() {
 }
 
 }  // namespace
-
-std::vector<std::string> splitList(const std::string& text, char sep) {
-    std::vector<std::string> items;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, sep)) items.push_back(item);
-    if (!text.empty() && text.back() == sep) items.emplace_back();  // "a,b," has an empty last
-    return items;
-}
 
 std::string sequenceName(const std::string& scans_dir) {
     fs::path p = fs::path(scans_dir).lexically_normal();
@@ -219,7 +211,7 @@ SweepSpec parseSweep(const std::string& spec, const Params& base) {
         "--sweep '" + spec + "': expected KEY=v1,v2,... (e.g. " + "tgf_resolution=2,4,6,8,10)";
     const std::size_t eq = spec.find('=');
     if (eq == std::string::npos || eq == 0) throw ConfigError(help);
-    SweepSpec s{spec.substr(0, eq), splitList(spec.substr(eq + 1), ',')};
+    SweepSpec s{spec.substr(0, eq), travel::splitList(spec.substr(eq + 1), ',')};
     if (s.values.empty()) throw ConfigError(help + ": no values");
     for (const std::string& v : s.values) {
         if (v.empty()) throw ConfigError(help + ": empty value");

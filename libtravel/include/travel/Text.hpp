@@ -6,6 +6,7 @@
 #include <cctype>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace travel {
 
@@ -19,6 +20,18 @@ inline std::string toLower(std::string_view text) {
     std::string out(text);
     for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return out;
+}
+
+/// "a,b,c" -> {"a", "b", "c"} for sep ','; "" -> {}; "a,,b" and "a,b," keep their empty items.
+inline std::vector<std::string> splitList(std::string_view text, char sep) {
+    std::vector<std::string> items;
+    if (text.empty()) return items;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = text.find(sep, start);
+        items.emplace_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+        if (end == std::string_view::npos) return items;
+        start = end + 1;
+    }
 }
 
 }  // namespace travel

@@ -16,9 +16,6 @@
 
 namespace travel::eval {
 
-/// "a,b,c" -> {"a", "b", "c"}; "a,b," has an empty last item.
-std::vector<std::string> splitList(const std::string& text, char sep);
-
 struct FrameRef {
     std::string scan, label, name;  ///< name: "<sequence>/<stem>"
     ScanFormat format = ScanFormat::Auto;
