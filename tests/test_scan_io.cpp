@@ -107,7 +107,7 @@ TEST(ScanIO, RealNuScenesIsDetectedAsNuScenes) {
     if (!fs::exists(file)) GTEST_SKIP() << "nuScenes scan not found: " << file;
     EXPECT_EQ(travel::detectScanFormat(file.string()), ScanFormat::NuScenesBin);
     PointCloud cloud;
-    readScan(file.string(), cloud);
+    EXPECT_EQ(readScan(file.string(), cloud), ScanFormat::NuScenesBin);  // the format it read
     ASSERT_EQ(cloud.size(), 34688u);
     ASSERT_TRUE(cloud.hasRing());
     EXPECT_FALSE(cloud.hasTime());
@@ -141,6 +141,7 @@ TEST(ScanIO, RealKittiAndOusterAreDetectedAsKitti) {
         const std::string copy = dir.file("loose_" + e.path().filename().string());
         fs::copy_file(e.path(), copy);
         EXPECT_EQ(travel::detectScanFormat(copy), ScanFormat::KittiBin) << copy;
+        EXPECT_EQ(readScan(copy, cloud), ScanFormat::KittiBin) << copy;
     }
     EXPECT_EQ(travel::detectScanFormat(ouster.string()), ScanFormat::KittiBin);
     readScan(ouster.string(), cloud);

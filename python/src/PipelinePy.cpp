@@ -416,8 +416,7 @@ ScanPy readScanPy(const std::string& path, const std::string& format) {
     ScanFormat used = f;
     {
         py::gil_scoped_release release;
-        if (f == ScanFormat::Auto) used = detectScanFormat(path);
-        readScan(path, s.cloud, used);
+        used = readScan(path, s.cloud, f);
     }
     s.path = path, s.format = toString(used);
     return s;

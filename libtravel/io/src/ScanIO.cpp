@@ -175,7 +175,7 @@ ScanFormat detectScanFormat(const std::string& path) {
     return detectFormat(path, bytes);
 }
 
-void readScan(const std::string& path, PointCloud& cloud, ScanFormat format) {
+ScanFormat readScan(const std::string& path, PointCloud& cloud, ScanFormat format) {
     auto& bytes = scratchBuffer();
     readFileBytes(path, bytes);
     if (format == ScanFormat::Auto) format = detectFormat(path, bytes);
@@ -197,7 +197,7 @@ void readScan(const std::string& path, PointCloud& cloud, ScanFormat format) {
     if (n == 0) fail(path, "0 points, not a scan");
     for (std::size_t i = 0; i < n; ++i)
         if (std::isfinite(cloud.x[i]) && std::isfinite(cloud.y[i]) && std::isfinite(cloud.z[i]))
-            return;
+            return format;
     fail(path, "none of its " + std::to_string(n) + " points has finite x, y, z");
 }
 

@@ -53,8 +53,10 @@ ScanFormat detectScanFormat(const std::string& path);
 /// always have one value per point (intensity 0 when the file has none); ring and time are
 /// filled when the file has them and cleared otherwise. Throws InputError naming the file.
 /// An explicit `format` is trusted (no plausibility check), but the file must still be well
-/// formed, non-empty, and hold at least one point with finite x, y, z.
-void readScan(const std::string& path, PointCloud& cloud, ScanFormat format = ScanFormat::Auto);
+/// formed, non-empty, and hold at least one point with finite x, y, z. Returns the format read
+/// (`format`, or the one detectScanFormat() finds for Auto: the file is read once).
+ScanFormat readScan(const std::string& path, PointCloud& cloud,
+                    ScanFormat format = ScanFormat::Auto);
 
 /// Writes `cloud` as a KITTI .bin (a missing intensity is written as 0). Throws
 /// std::invalid_argument if x, y, z (or a non-empty intensity) differ in size.
