@@ -339,9 +339,8 @@ inline std::string memoryLimitNote() {
 /// The apps' main(): runs `run`, turning any exception into one line on stderr,
 /// "<name>: configuration error: ..." or "<name>: error: ...", and exit code 1 (never a crash
 /// or an uncaught exception). Ctrl-C / SIGTERM: "<name>: interrupted" and exit code 130, after
-/// the stack unwound (temporary files and partial outputs removed). After an error or an
-/// interruption, the folders the run created and left empty are removed. `error_code`: the exit
-/// code of an error (travel-regress keeps 1 for "outside the tolerances").
+/// the stack unwound (temporary files and partial outputs removed). `error_code`: the exit code
+/// of an error (travel-regress keeps 1 for "outside the tolerances").
 template <class Run>
 int runMain(const char* name, Run&& run, int argc, char** argv, int error_code = 1) {
     installInterruptHandlers();
@@ -352,7 +351,6 @@ int runMain(const char* name, Run&& run, int argc, char** argv, int error_code =
         return kInterruptedExitCode;
     } catch (const Interrupted&) {
         std::cerr << name << ": interrupted\n";
-        CreatedFolders::instance().removeEmpty();
         return kInterruptedExitCode;
     } catch (const TCLAP::ArgException& e) {
         std::cerr << name << ": " << e.error() << "\nRun '" << name
@@ -372,7 +370,6 @@ int runMain(const char* name, Run&& run, int argc, char** argv, int error_code =
     } catch (...) {
         std::cerr << name << ": error: unknown exception\n";
     }
-    CreatedFolders::instance().removeEmpty();
     return error_code;
 }
 

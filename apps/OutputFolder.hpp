@@ -6,7 +6,6 @@
 #pragma once
 
 #include <filesystem>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -19,44 +18,9 @@ struct AppError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// The folders this run created, each after its parent. runMain() removes those still empty
-/// when the run fails: a run that stops before writing anything leaves no empty folder behind.
-class CreatedFolders {
-  public:
-    static CreatedFolders& instance() {
-        static CreatedFolders folders;
-        return folders;
-    }
-    /// Remembers the missing folders on the way to `folder` (call before creating it).
-    void noteMissing(const std::filesystem::path& folder) {
-        std::vector<std::filesystem::path> missing;
-        std::error_code ec;
-        for (std::filesystem::path p = std::filesystem::absolute(folder, ec).lexically_normal();
-             !ec && p.has_relative_path() && !std::filesystem::exists(p, ec); p = p.parent_path())
-            missing.push_back(p);
-        const std::lock_guard<std::mutex> lock(mutex_);
-        created_.insert(created_.end(), missing.rbegin(), missing.rend());
-    }
-    /// Removes the created folders that are empty, deepest first (a folder holding anything
-    /// stays, and so do its parents).
-    void removeEmpty() {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
-            std::error_code ec;
-            if (std::filesystem::is_empty(*it, ec) && !ec) std::filesystem::remove(*it, ec);
-        }
-        created_.clear();
-    }
-
-  private:
-    std::mutex mutex_;
-    std::vector<std::filesystem::path> created_;
-};
-
 /// Creates `folder` and its parents (nothing to do when it exists or is "").
 inline void createFolder(const std::string& folder) {
     if (folder.empty()) return;
-    CreatedFolders::instance().noteMissing(folder);
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw AppError("cannot create folder " + folder + ": " + ec.message());

@@ -104,34 +104,43 @@ TEST(TriGridField, EmbeddingAgreesWithNodeOfUpToTheGridEdge) {
 }
 
 TEST(TriGridField, ValidPointsOnTheRangeEdgeAreInTheEdgeNodes) {
-    // max_range / tgf_resolution is whole (20 / 4): the grid's edge is the range window's, and a
-    // point at exactly +max_range is valid, so it must be in a node (design.md: every valid
-    // point is in a node), as the one at -max_range is.
-    const Params p = smallGrid();
-    TriGridField field;
-    field.configure(p);
-    const float probes[][2] = {{20.f, 0.f}, {0.f, 20.f}, {-20.f, 0.f}, {0.f, -20.f}};
-    for (const auto& xy : probes) {
-        PointCloud cloud;
-        cloud.push_back(xy[0], xy[1], 0.f);
-        const int expected = field.nodeOf(xy[0], xy[1]);
-        EXPECT_GE(expected, 0) << xy[0] << ", " << xy[1];
-        for (const bool nodes_in_preprocess : {false, true}) {
-            AlignedCloud aligned;
-            preprocess(cloud, p, {}, aligned, nodes_in_preprocess ? &field.geometry() : nullptr);
-            ASSERT_EQ(aligned.num_valid, 1u);
-            if (nodes_in_preprocess) {
-                EXPECT_EQ(static_cast<int>(aligned.node[0]), expected);
+    // A point at exactly +-max_range is valid, so it must be in a node (design.md: every valid
+    // point is in a node): where max_range / tgf_resolution is whole (the grid's edge is the
+    // range window's), also when 1 / r is inexact in float (r = 7: the edge's grid coordinate
+    // rounds above 24), and when float(r) * cells falls short of max_range (r = 0.9, R = 81).
+    for (const auto& [r, range] :
+         {std::pair{4.0, 20.0}, {7.0, 84.0}, {3.5, 70.0}, {0.9, 81.0}, {2.1, 63.0}, {8.0, 80.0}}) {
+        Params p;
+        p.tgf_resolution = r;
+        p.max_range = range;
+        TriGridField field;
+        field.configure(p);
+        const float R = static_cast<float>(range);
+        const float probes[][2] = {{R, 0.f}, {0.f, R}, {-R, 0.f}, {0.f, -R}};
+        for (const auto& xy : probes) {
+            PointCloud cloud;
+            cloud.push_back(xy[0], xy[1], 0.f);
+            const int expected = field.nodeOf(xy[0], xy[1]);
+            EXPECT_GE(expected, 0) << "r " << r << ", point " << xy[0] << ", " << xy[1];
+            for (const bool nodes_in_preprocess : {false, true}) {
+                AlignedCloud aligned;
+                preprocess(cloud, p, {}, aligned,
+                           nodes_in_preprocess ? &field.geometry() : nullptr);
+                ASSERT_EQ(aligned.num_valid, 1u);
+                if (nodes_in_preprocess) {
+                    EXPECT_EQ(static_cast<int>(aligned.node[0]), expected);
+                }
+                TerrainModel model;
+                field.embed(aligned, model);
+                int embedded = -1;
+                for (int k = 0; k < field.numNodes(); ++k)
+                    if (model.nodes[k].count == 1) embedded = k;
+                EXPECT_EQ(embedded, expected) << "r " << r << ", point " << xy[0] << ", " << xy[1];
             }
-            TerrainModel model;
-            field.embed(aligned, model);
-            int embedded = -1;
-            for (int k = 0; k < field.numNodes(); ++k)
-                if (model.nodes[k].count == 1) embedded = k;
-            EXPECT_EQ(embedded, expected) << xy[0] << ", " << xy[1];
         }
+        // Beyond the edge (half a cell past it) is outside.
+        EXPECT_EQ(field.nodeOf(-field.originXY() + 0.5f * static_cast<float>(r), 0.f), -1) << r;
     }
-    EXPECT_EQ(field.nodeOf(20.01f, 0.f), -1);
 }
 
 TEST(TriGridField, HugeAndNonFiniteCoordinatesAreOutside) {

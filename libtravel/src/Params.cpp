@@ -13,6 +13,7 @@
 #include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
 #include "travel/RangeImage.hpp"
+#include "travel/TerrainModel.hpp"
 
 namespace travel {
 
@@ -76,8 +77,8 @@ void Params::validate() const {
     }
 
     // The grid covers [-max_range, max_range] in x and y; a partial cell still costs a cell.
-    // Exactly what TriGridField::configure builds: 2 * ceil(R / r) cells per side.
-    const double cells_per_side = 2.0 * std::ceil(max_range / tgf_resolution);
+    // Exactly what TriGridField::configure builds (about 2 * ceil(R / r) cells per side).
+    const double cells_per_side = 2.0 * TriGridGeometry::halfCellsFor(max_range, tgf_resolution);
     if (cells_per_side > static_cast<double>(max_grid_cells_per_side)) {
         throw ConfigError("tri-grid too large: 2 * max_range / tgf_resolution = 2 * " +
                           formatForMessage(max_range) + " / " + formatForMessage(tgf_resolution) +

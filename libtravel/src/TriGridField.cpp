@@ -11,8 +11,8 @@ namespace travel {
 
 void TriGridField::configure(const Params& params) {
     const float r = static_cast<float>(params.tgf_resolution);
-    const int half = static_cast<int>(std::ceil(params.max_range / params.tgf_resolution));
-    const int n = 2 * std::max(half, 1);
+    const int half = TriGridGeometry::halfCellsFor(params.max_range, params.tgf_resolution);
+    const int n = 2 * half;
     if (r == geometry_.resolution && n == geometry_.cells_per_side) return;
     geometry_.resolution = r;
     geometry_.cells_per_side = n;

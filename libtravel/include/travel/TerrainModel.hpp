@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -96,6 +97,17 @@ struct TriGridGeometry {
     float origin_xy = 0.f;   ///< x and y of the grid's lower-left corner (= -R)
 
     bool hasCells() const { return cells_per_side > 0 && resolution > 0.f; }
+
+    /// Cells from the sensor to the grid's edge for the range window [-max_range, max_range]
+    /// [m] and cells of `resolution` [m]: ceil(max_range / r), and one more when the float
+    /// extent half * float(r) falls short of float(max_range) (r = 0.9, R = 81: 80.9999978), so
+    /// that every valid point is in a node. The grid is 2 * half cells per side.
+    static int halfCellsFor(double max_range, double resolution) {
+        const float r = static_cast<float>(resolution), range = static_cast<float>(max_range);
+        int half = std::max(1, static_cast<int>(std::ceil(max_range / resolution)));
+        while (static_cast<float>(half) * r < range) ++half;
+        return half;
+    }
     int numNodes() const { return 4 * cells_per_side * cells_per_side; }
 
     Eigen::Vector2f cellCenter(int cell) const {
@@ -109,10 +121,18 @@ struct TriGridGeometry {
                origin_xy == other.origin_xy;
     }
 
-    /// Grid coordinates (metres / r from the lower-left corner) of the grid's last cell's far
-    /// edge, moved just inside it: the grid is closed, [origin, -origin] in x and y like the
-    /// range window [-max_range, max_range], so a valid point at exactly +max_range falls in
-    /// the last cell rather than off the grid.
+    /// The grid is closed, [origin, origin + n r] in x and y like the range window
+    /// [-max_range, max_range], so that a valid point at exactly +max_range is in the last cell.
+    /// edgeGridCoord(): the grid coordinate ((x - origin) * (1 / r), as every point's) of the far
+    /// edge; rounding is monotonic, so no x up to the edge maps above it, though it may be a
+    /// float step above n when 1 / r is inexact (r = 7, n r = 84: 24.0000019). Plus a few float
+    /// steps: a point checked against max_range in 3-D and then rotated may round a step past.
+    float edgeGridCoord() const {
+        const float upper = origin_xy + static_cast<float>(cells_per_side) * resolution;
+        return (upper - origin_xy) * (1.f / resolution) * (1.f + 8.f * 1.1920929e-7f);
+    }
+    /// The largest grid coordinate inside the last cell: points between it and edgeGridCoord()
+    /// are moved there.
     float lastGridCoord() const { return std::nextafter(static_cast<float>(cells_per_side), 0.f); }
 
     /// Node holding (x, y), or -1 outside the grid (also for NaN and huge coordinates).
@@ -121,7 +141,7 @@ struct TriGridGeometry {
         const float inv_r = 1.f / resolution;
         const float gx = (x - origin_xy) * inv_r, gy = (y - origin_xy) * inv_r;
         // Bounds before the float->int conversion (huge values would be undefined).
-        const float limit = static_cast<float>(cells_per_side);
+        const float limit = edgeGridCoord();
         if (!(gx >= 0.f && gy >= 0.f && gx <= limit && gy <= limit)) return -1;
         const float last = lastGridCoord();
         return triangleNodeOfGridCoords(gx < last ? gx : last, gy < last ? gy : last,
@@ -167,7 +187,7 @@ struct NodeLocator {
     explicit NodeLocator(const TriGridGeometry& grid)
         : inv_r(1.f / grid.resolution),
           origin(grid.origin_xy),
-          limit(static_cast<float>(grid.cells_per_side)),
+          limit(grid.edgeGridCoord()),
           last(grid.lastGridCoord()),
           side(grid.cells_per_side),
           outside(static_cast<uint32_t>(grid.numNodes())) {}
