@@ -5,6 +5,10 @@
 // check that no output is an input or another output.
 #pragma once
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -24,6 +28,25 @@ inline void createFolder(const std::string& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw AppError("cannot create folder " + folder + ": " + ec.message());
+}
+
+/// Throws AppError unless `folder` is a folder or can be created: its nearest existing ancestor
+/// is a folder this process may write in. An app checks its output folder with this before a
+/// long run and creates it only when it writes, so that a run failing on its input leaves no
+/// empty folder behind.
+inline void requireCreatableFolder(const std::string& folder) {
+    namespace fs = std::filesystem;
+    if (folder.empty()) return;
+    std::error_code ec;
+    fs::path existing = fs::absolute(folder, ec);
+    while (!fs::exists(existing, ec) && existing.has_relative_path())
+        existing = existing.parent_path();
+    if (!fs::is_directory(existing, ec))
+        throw AppError("cannot create folder " + folder + ": " + existing.string() +
+                       " is not a folder");
+    if (::access(existing.c_str(), W_OK | X_OK) != 0)
+        throw AppError("cannot create folder " + folder + ": " + existing.string() + ": " +
+                       std::strerror(errno));
 }
 
 /// Creates the folder that will hold the file `path`.

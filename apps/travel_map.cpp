@@ -188,7 +188,7 @@ int run(int argc, char** argv) {
             "--calib needs a KITTI pose file (--poses, or poses.txt beside the scans) to apply "
             "its Tr to");
 
-    travel::apps::createFolder(o.output_dir);
+    travel::apps::requireCreatableFolder(o.output_dir);  // created when the map is written
 
     Stats stats;
     const double cpu_start = cpuSeconds();
@@ -210,6 +210,7 @@ int run(int argc, char** argv) {
 
     const std::string name = fs::is_directory(o.input) ? fs::path(o.input).filename().string()
                                                        : fs::path(o.input).stem().string();
+    travel::apps::createFolder(o.output_dir);
     const std::string prefix = (fs::path(o.output_dir) / name).string();
     const auto export_start = Clock::now();
     std::vector<std::string> written;

@@ -183,6 +183,17 @@ if(EXISTS ${WORK_DIR}/new_parent OR NOT IS_DIRECTORY ${WORK_DIR}/kept)
 endif()
 expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
   -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/bad)
+# The output folder is checked first and created when the map is written: a run that fails on
+# its input leaves none; one that cannot create it says so before mapping.
+file(REMOVE_RECURSE ${WORK_DIR}/new_parent)
+expect_failure_mentioning("not_a_rawlog.rawlog: record 0" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/new_parent/maps)
+if(EXISTS ${WORK_DIR}/new_parent)
+  message(FATAL_ERROR "a travel-map run that failed on its input left its output folder")
+endif()
+file(WRITE ${WORK_DIR}/a_file "x")
+expect_failure_mentioning("cannot create folder ${WORK_DIR}/a_file/maps" ${TRAVEL_MAP}
+  -i ${WORK_DIR}/not_a_rawlog.rawlog -o ${WORK_DIR}/a_file/maps)
 file(WRITE ${WORK_DIR}/columns.txt "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 1\n")
 expect_failure_mentioning("columns.txt:2: expected 8 numbers" ${TRAVEL_MAP}
   -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/bad --poses ${WORK_DIR}/columns.txt)
