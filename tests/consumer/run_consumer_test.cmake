@@ -8,6 +8,30 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_
 if(rc)
   message(FATAL_ERROR "install failed: ${rc}")
 endif()
+# The installed apps find the share directory of the prefix they are installed in (here not the
+# configured CMAKE_INSTALL_PREFIX): a preset and a world that only this prefix has.
+if(WITH_MRPT)
+  set(share ${WORK_DIR}/prefix/share/travel)
+  configure_file(${share}/presets/vlp16.yaml ${share}/presets/installed_only.yaml COPYONLY)
+  configure_file(${share}/worlds/flat_obstacles.world ${share}/worlds/installed_only.world
+                 COPYONLY)
+  file(GLOB apps ${WORK_DIR}/prefix/bin/travel-*)
+  foreach(app IN LISTS apps)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=TRAVEL_SHARE_DIR
+                            ${app} -p installed_only --print-config
+                    RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+    if(rc)
+      message(FATAL_ERROR "${app} -p installed_only: ${rc} ${err}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=TRAVEL_SHARE_DIR
+                          ${WORK_DIR}/prefix/bin/travel-nav-sim -i installed_only.world -t 0.5
+                          --no-navlog -q -o ${WORK_DIR}/nav
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(rc)
+    message(FATAL_ERROR "travel-nav-sim -i installed_only.world: ${rc} ${err}")
+  endif()
+endif()
 # A sanitized libtravel.a needs the sanitizer runtime in the consumer's link too.
 set(flags "")
 if(SANITIZE)
