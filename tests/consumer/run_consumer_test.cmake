@@ -1,7 +1,8 @@
 # Install the build tree into WORK_DIR/prefix, then build and run the consumer against it (with
 # WITH_MRPT=ON, also one program per MRPT library: travel::mrpt_obs, _maps, _nav, and the
 # consumer's rawlog regression test: a golden rawlog written by the installed travel-rawlog,
-# compared by the installed travel_add_rawlog_regression, run through ctest).
+# compared by the installed travel_add_rawlog_regression, run through ctest). Also: the
+# installed apps use the prefix's share/travel, and no installed binary holds a source path.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -31,6 +32,21 @@ if(WITH_MRPT)
   if(rc)
     message(FATAL_ERROR "travel-nav-sim -i installed_only.world: ${rc} ${err}")
   endif()
+endif()
+# No path of the source tree in the installed binaries' constant data (__FILE__ in messages),
+# but its share/, the lookup of runs from the build tree. Debug information is not looked at.
+find_program(READELF readelf)
+if(READELF AND TRAVEL_SOURCE_DIR)
+  file(GLOB_RECURSE binaries ${WORK_DIR}/prefix/bin/* ${WORK_DIR}/prefix/lib/*.so)
+  foreach(binary IN LISTS binaries)
+    execute_process(COMMAND ${READELF} -p .rodata ${binary} OUTPUT_VARIABLE rodata ERROR_QUIET)
+    string(REPLACE "${TRAVEL_SOURCE_DIR}/share" "" rodata "${rodata}")
+    string(FIND "${rodata}" "${TRAVEL_SOURCE_DIR}/" pos)
+    if(NOT pos EQUAL -1)
+      string(SUBSTRING "${rodata}" ${pos} 200 where)
+      message(FATAL_ERROR "${binary} holds a source path: ${where}")
+    endif()
+  endforeach()
 endif()
 # A sanitized libtravel.a needs the sanitizer runtime in the consumer's link too.
 set(flags "")
