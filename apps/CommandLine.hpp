@@ -119,7 +119,7 @@ struct ConfigFlags {
             std::string list;
             for (const std::string& name : availablePresets())
                 list += (list.empty() ? "" : ", ") + name;
-            return list;
+            return list.empty() ? "none found" : list;
         } catch (const std::exception&) {
             return "none found";
         }

@@ -4,6 +4,9 @@
 // goes through the one Config loader (ConfigIO.cpp). Also where shared data is found.
 #include "travel/ParamsIO.hpp"
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -57,9 +60,50 @@ Params loadPreset(const std::string& name) {
     return loadPresetConfig(name).travel;
 }
 
+/// <prefix>/<datadir>/travel when this code runs in a binary installed in <prefix>/<bindir>,
+/// <libdir> or the Python package's directory, wherever <prefix> is now (`cmake --install
+/// --prefix`, DESTDIR, a moved prefix), existing or not; empty otherwise (the build tree).
+static std::string installedShareDirNextToBinary() {
+#if defined(TRAVEL_INSTALL_DATADIR) && defined(TRAVEL_INSTALL_BINARY_DIRS)
+    // The executable, plugin or Python extension this code was linked into.
+    Dl_info info{};
+    link_map* map = nullptr;
+    if (dladdr1(reinterpret_cast<void*>(&installedShareDirNextToBinary), &info,
+                reinterpret_cast<void**>(&map), RTLD_DL_LINKMAP) == 0) {
+        return {};
+    }
+    const bool is_executable = map == nullptr || map->l_name == nullptr || *map->l_name == '\0';
+    std::error_code ec;
+    const fs::path binary =
+        fs::canonical(is_executable ? "/proc/self/exe" : info.dli_fname, ec).parent_path();
+    if (ec) return {};
+    // <prefix>/<one of the install dirs of binaries>/binary -> <prefix>/<datadir>/travel.
+    std::string dirs = TRAVEL_INSTALL_BINARY_DIRS;
+#ifdef TRAVEL_INSTALL_PYTHON_PACKAGE_DIR
+    dirs += std::string(":") + TRAVEL_INSTALL_PYTHON_PACKAGE_DIR;
+#endif
+    for (std::size_t begin = 0, end = 0; begin <= dirs.size(); begin = end + 1) {
+        end = std::min(dirs.find(':', begin), dirs.size());
+        const fs::path relative = fs::path(dirs.substr(begin, end - begin)).lexically_normal();
+        if (relative.empty() || relative.is_absolute()) continue;
+        fs::path prefix = binary;
+        bool matches = true;
+        for (auto part = relative.end(); part != relative.begin();) {
+            --part;
+            if (part->empty()) continue;  // a trailing '/'
+            matches = matches && prefix.filename() == *part;
+            prefix = prefix.parent_path();
+        }
+        if (matches) return (prefix / TRAVEL_INSTALL_DATADIR).string();
+    }
+#endif
+    return {};
+}
+
 std::vector<std::string> shareSearchDirs() {
     std::vector<std::string> dirs;
     if (const char* env = std::getenv("TRAVEL_SHARE_DIR"); env && *env) dirs.emplace_back(env);
+    dirs.push_back(installedShareDirNextToBinary());
 #ifdef TRAVEL_SOURCE_SHARE_DIR
     dirs.emplace_back(TRAVEL_SOURCE_SHARE_DIR);
 #endif

@@ -34,8 +34,10 @@ std::string findPresetFile(const std::string& name);
 /// Names (without .yaml) of the presets in all shareSearchDirs(), sorted, without duplicates.
 std::vector<std::string> availablePresets();
 
-/// Where shared data is looked for, in order: $TRAVEL_SHARE_DIR (when set), the source tree's
-/// share/ (runs from the build tree), then the installed share/travel. Existing or not.
+/// Where shared data is looked for, in order: $TRAVEL_SHARE_DIR (when set), share/travel of the
+/// prefix the running binary is installed in (found from the binary's own path, so a moved
+/// prefix works), the source tree's share/ (runs from the build tree), then share/travel of the
+/// configured CMAKE_INSTALL_PREFIX. Existing or not.
 std::vector<std::string> shareSearchDirs();
 
 /// The first existing directory of shareSearchDirs(); throws ConfigError if none exists.
