@@ -16,6 +16,7 @@
 #include "travel/ConfigFields.hpp"
 #include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
+#include "travel/Text.hpp"
 
 namespace travel {
 
@@ -82,9 +83,8 @@ static std::string installedShareDirNextToBinary() {
 #ifdef TRAVEL_INSTALL_PYTHON_PACKAGE_DIR
     dirs += std::string(":") + TRAVEL_INSTALL_PYTHON_PACKAGE_DIR;
 #endif
-    for (std::size_t begin = 0, end = 0; begin <= dirs.size(); begin = end + 1) {
-        end = std::min(dirs.find(':', begin), dirs.size());
-        const fs::path relative = fs::path(dirs.substr(begin, end - begin)).lexically_normal();
+    for (const std::string& dir : splitList(dirs, ':')) {
+        const fs::path relative = fs::path(dir).lexically_normal();
         if (relative.empty() || relative.is_absolute()) continue;
         fs::path prefix = binary;
         bool matches = true;
