@@ -452,6 +452,12 @@ TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
         EXPECT_FALSE(std::filesystem::exists(blocked + ".part")) << suffix;
         std::filesystem::remove_all(blocked);
     }
+    // A part file that cannot be opened: the reason is in the message.
+    const std::string nowhere = dir + "/no_such_folder/scene";
+    const std::string reason = errorOf([&] { map_->saveTo(nowhere); });
+    EXPECT_NE(reason.find(nowhere + ".travelgrid: cannot write (No such file or directory)"),
+              std::string::npos)
+        << reason;
 
     // Bad input: an error naming the file; the map keeps its contents.
     const std::string before = loaded.asString();

@@ -14,9 +14,11 @@
 
 #include <algorithm>
 #include <bitset>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -509,30 +511,33 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
     // Written beside and moved (travel::movePartInPlace), so that a failed save never leaves
     // half a file under the name, nor a part file behind.
     const std::string grid_path = prefix + ".travelgrid", tree_path = prefix + ".ot";
-    const auto fail = [](const std::string& part, const std::string& path) {
+    const auto fail = [](const std::string& part, const std::string& path,
+                         const std::string& reason) {
         std::error_code ignored;
         std::filesystem::remove(part, ignored);
-        throw std::runtime_error(path + ": cannot write");
+        throw std::runtime_error(path + ": cannot write (" + reason + ")");
     };
     {
         mrpt::io::CFileGZOutputStream out;
-        if (!out.open(grid_path + ".part")) fail(grid_path + ".part", grid_path);
+        if (!out.open(grid_path + ".part"))
+            fail(grid_path + ".part", grid_path, std::strerror(errno));
         try {
             auto archive = mrpt::serialization::archiveFrom(out);
             archive << std::string(kGridFileMagic) << kGridFileVersion;
             writeGridState(archive);
             out.close();
-        } catch (const std::exception&) {
+        } catch (const std::exception& e) {
             out.close();
-            fail(grid_path + ".part", grid_path);
+            fail(grid_path + ".part", grid_path, travel_mrpt::mrptMessage(e.what()));
         }
     }
     travel::movePartInPlace(grid_path + ".part", grid_path);
     {
         std::ofstream out(tree_path + ".part", std::ios::binary);
         if (!out || !octree().write(out) || !out.flush()) {
+            const std::string reason = std::strerror(errno);
             out.close();
-            fail(tree_path + ".part", tree_path);
+            fail(tree_path + ".part", tree_path, reason);
         }
     }
     travel::movePartInPlace(tree_path + ".part", tree_path);
