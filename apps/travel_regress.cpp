@@ -112,7 +112,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, RegressOptions& o,
     if (pictures.getValue() < 0) throw travel::apps::usageError("--pictures must be >= 0");
     if (pictures.isSet() && !flags.output.isSet())
         throw travel::apps::usageError("--pictures needs -o (the pictures are written there)");
-    picture.requirePictures(flags.output.isSet(), "-o (the pictures are written there)");
+    picture.requirePictures(flags.output.isSet() && pictures.getValue() > 0,
+                            "-o and --pictures above 0 (the pictures are drawn)");
     o.golden = golden.getValue();
     o.report_dir = flags.output.isSet() ? flags.output.getValue() : "";
     o.pictures = static_cast<std::size_t>(pictures.getValue());

@@ -84,3 +84,4 @@ regress(2 ARGS --pictures -1 MATCH "--pictures must be >= 0")
 # Picture flags without -o, where the pictures are written, would be ignored: named instead.
 regress(2 ARGS --pictures 2 MATCH "--pictures needs -o")
 regress(2 ARGS --size 400 MATCH "--mpp and --size need -o")
+regress(2 ARGS -o ${WORK_DIR}/no_pictures --pictures 0 --mpp 0.1 MATCH "--mpp and --size need")
