@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -74,8 +75,8 @@ char dtypeKind(const py::array& a) {
 /// default): integers are converted only when they fit, never wrapped (257 is not class 1).
 template <class T>
 std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, const char* kinds,
-                          int64_t lo = static_cast<int64_t>(std::numeric_limits<T>::lowest()),
-                          int64_t hi = static_cast<int64_t>(std::numeric_limits<T>::max())) {
+                          std::optional<int64_t> lo_bound = std::nullopt,
+                          std::optional<int64_t> hi_bound = std::nullopt) {
     const py::array a = py::array::ensure(object);
     if (!a) throw py::value_error(std::string(what) + ": expected an array");
     if (a.ndim() != 1 || (n >= 0 && a.shape(0) != n))
@@ -88,6 +89,10 @@ std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, co
         throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
                               " is not accepted (kinds '" + kinds + "')");
     if constexpr (std::is_integral_v<T>) {
+        // T's range only here: converting a float type's range to int64_t is undefined.
+        const int64_t lo =
+            lo_bound.value_or(static_cast<int64_t>(std::numeric_limits<T>::lowest()));
+        const int64_t hi = hi_bound.value_or(static_cast<int64_t>(std::numeric_limits<T>::max()));
         if (kind == 'i' || kind == 'u') {  // through 64 bits of the input's signedness
             auto checked = [&](auto typed) {
                 std::vector<T> out(static_cast<std::size_t>(typed.size()));
@@ -572,7 +577,12 @@ under the centroid (NaN if unknown); height_above_ground: of the highest point a
     auto cached = [&slots](auto get) {
         return [slot = slots++, get](const TerrainPy& t) {
             py::object& array = t.arrays[slot];
-            if (!array) array = get(*t.model);
+            if (!array) {
+                // Read-only: the Terrain's methods (node_at, height_above_ground) read the model,
+                // which an edit of the array would not change.
+                array = get(*t.model);
+                array.attr("setflags")(py::arg("write") = false);
+            }
             return array;
         };
     };
@@ -581,7 +591,7 @@ The terrain model of a frame (paper Sec. III): a tri-grid of square cells of sid
 4 triangular nodes per cell, node index = 4 * (iy * cells_per_side + ix) + triangle (0 east,
 1 north, 2 west, 3 south). Aligned frame: sensor origin, z up; ground near z = -sensor_height.
 Arrays have one row per node (M = 4 * cells_per_side**2), built when first read and kept
-(each read returns the same array).
+(each read returns the same array), read-only (copy one to edit it).
 )doc")
         .def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
         .def_property_readonly("resolution", nodes([](const T& t) { return t.resolution; }))
