@@ -419,30 +419,3 @@ def test_every_params_pickles():
         assert q == p and (q.min_range, q.max_range) == (50.0, 40.0)
     with pytest.raises(travel.ConfigError, match="min_range"):
         pickle.loads(pickle.dumps(p)).validate()
-
-
-
-def test_params_read_waits_for_a_running_process(tmp_path, frame):
-    """Pipeline.params is read under the Pipeline's lock, as process() runs under it (process may
-    write 'auto' estimates into the parameters): a read from another thread waits for the
-    running call instead of copying the parameters while they change."""
-    import threading
-    import time
-    frame[0].tofile(tmp_path / "000000.bin")
-    scan = travel.read_scan(tmp_path / "000000.bin")
-    pipeline = travel.Pipeline(travel.Params(sensor_height="auto"))
-    started = threading.Event()
-
-    def run():  # the C++ loop of python/bench/overhead.py: 200 frames under the lock, no GIL
-        started.set()
-        travel._travel._bench_cpp(pipeline, scan, 200)
-
-    worker = threading.Thread(target=run)
-    worker.start()
-    started.wait()
-    time.sleep(0.2)  # the worker holds the lock by now (about a second of work ahead)
-    start = time.perf_counter()
-    params = pipeline.params  # waits for the worker's frames (before: returned at once)
-    waited = time.perf_counter() - start
-    worker.join()
-    assert waited > 0.2 and params == pipeline.params
