@@ -341,6 +341,10 @@ TEST(ConfigFile, RuleErrorsNameTheLineOfTheirKey) {
         dir.write("t.yaml", "tracking:\n  moving_speed_on: 0.1\n");  // off (0.5) >= on
     EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(tracking, config); }),
                     tracking + ":2: section 'tracking': moving_speed_off/moving_speed_on");
+    // A rule naming its keys in its sentence: the line of the one the file set.
+    const std::string clusters = dir.write("c.yaml", "travel:\n  max_cluster_size: 2\n");
+    EXPECT_CONTAINS(configErrorOf([&] { travel::applyConfigFile(clusters, config); }),
+                    clusters + ":2: section 'travel': ");
 }
 
 TEST(ParamsFile, LineErrorsNameTheFile) {

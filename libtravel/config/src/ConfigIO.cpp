@@ -268,25 +268,27 @@ class Applier {
     }
 
   private:
-    /// A rule's message is "section 'S': KEY...", KEY being the key it is about, or "K1/K2"
-    /// for a rule on two keys (Config::validate, the sections' rules): the line of the first of
-    /// them that this source set, 0 when it set none (a default or a preset's value broke it).
+    /// A rule's message is "section 'S': ..." naming the keys it is about, the first one first
+    /// ("max_motion_age must be > 0", "min_x/max_x: need ...", "min_range = 50 m must be smaller
+    /// than max_range = 40": Config::validate, the sections' rules): the line of the first key
+    /// named that this source set, 0 when it set none (a default or a preset's value broke it).
     int lineOfRuleKey(std::string_view message) const {
         constexpr std::string_view prefix = "section '";
         if (message.rfind(prefix, 0) != 0) return 0;
         const std::size_t close = message.find('\'', prefix.size());
         if (close == std::string_view::npos || message.substr(close, 3) != "': ") return 0;
         const std::string section(message.substr(prefix.size(), close - prefix.size()));
-        for (std::size_t at = close + 3;; ++at) {
+        constexpr std::string_view word_chars = "abcdefghijklmnopqrstuvwxyz0123456789_";
+        for (std::size_t at = message.find_first_of(word_chars, close + 3);
+             at != std::string_view::npos; at = message.find_first_of(word_chars, at)) {
             const std::size_t end =
-                message.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_", at);
-            if (end == at || end == std::string_view::npos) return 0;
+                std::min(message.find_first_not_of(word_chars, at), message.size());
             const auto line =
                 first_line_.find(section + "." + std::string(message.substr(at, end - at)));
             if (line != first_line_.end()) return line->second;
-            if (message[end] != '/') return 0;
             at = end;
         }
+        return 0;
     }
 
     static bool looksLikeIni(const std::string& text) {
