@@ -131,8 +131,11 @@ class RawlogSegmenter {
         }
     }
 
-    /// Notes and warnings go through `progress` from now on (it must outlive this object's use).
-    void attach(ProgressLine& progress) { notes_.attach(&progress); }
+    /// Notes and warnings go through `progress` while the returned object lives (declare it
+    /// after `progress`, so that it goes first).
+    [[nodiscard]] Notes::Attached attach(ProgressLine& progress) {
+        return Notes::Attached(notes_, progress);
+    }
 
     /// Motion records (IMU, odometry, odometry actions) go to the filter's motion estimate.
     bool processMotion(const mrpt::serialization::CSerializable& record) {

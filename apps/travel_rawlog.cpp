@@ -433,7 +433,7 @@ int run(int argc, char** argv) {
     const auto start = Clock::now();
     travel::apps::ProgressLine progress(
         "travel-rawlog", 0, travel::apps::verbosityFrom(options.quiet, options.verbose));
-    segmenter.attach(progress);
+    const auto attached = segmenter.attach(progress);
     try {
         if (options.jobs <= 1)
             replayInOneThread(reader, segmenter, out, progress);

@@ -263,7 +263,7 @@ int run(int argc, char** argv) {
                                             travel::apps::filterOptionsFrom(configuration));
     travel::apps::ProgressLine progress(
         "travel-regress", 0, travel::apps::verbosityFrom(o.replay.quiet, o.replay.verbose));
-    segmenter.attach(progress);
+    const auto attached = segmenter.attach(progress);
     std::vector<mrpt::obs::CObservation::Ptr> added;
     const auto compareAdded = [&] {
         for (const auto& obs : added)
