@@ -130,3 +130,11 @@ TEST(TerrainModel, StepBetweenNeighboursNeedsAllThreeMeasures) {
 
 }  // namespace
 }  // namespace travel
+
+TEST(TerrainModel, LastGridCoordIsTheFloatBelowTheCellCount) {
+    travel::TriGridGeometry g;
+    for (int n : {1, 2, 3, 20, 24, 91, 160, 1024, 8000}) {
+        g.cells_per_side = n;
+        EXPECT_EQ(g.lastGridCoord(), std::nextafter(static_cast<float>(n), 0.f)) << n;
+    }
+}

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -133,7 +134,17 @@ struct TriGridGeometry {
     }
     /// The largest grid coordinate inside the last cell: points between it and edgeGridCoord()
     /// are moved there.
-    float lastGridCoord() const { return std::nextafter(static_cast<float>(cells_per_side), 0.f); }
+    /// (std::nextafter(n, 0), n >= 1: the bits of n less one, inline; nextafterf is a libm call,
+    /// and nodeAt runs for every point of a frame fused into a map.)
+    float lastGridCoord() const {
+        const float n = static_cast<float>(cells_per_side);
+        uint32_t bits;
+        std::memcpy(&bits, &n, sizeof bits);
+        --bits;
+        float last;
+        std::memcpy(&last, &bits, sizeof last);
+        return last;
+    }
 
     /// Node holding (x, y), or -1 outside the grid (also for NaN and huge coordinates).
     int nodeAt(float x, float y) const {
