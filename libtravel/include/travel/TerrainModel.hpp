@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -130,7 +131,8 @@ struct TriGridGeometry {
     /// steps: a point checked against max_range in 3-D and then rotated may round a step past.
     float edgeGridCoord() const {
         const float upper = origin_xy + static_cast<float>(cells_per_side) * resolution;
-        return (upper - origin_xy) * (1.f / resolution) * (1.f + 8.f * 1.1920929e-7f);
+        return (upper - origin_xy) * (1.f / resolution) *
+               (1.f + 8.f * std::numeric_limits<float>::epsilon());
     }
     /// The largest grid coordinate inside the last cell: points between it and edgeGridCoord()
     /// are moved there.
