@@ -16,8 +16,11 @@
 #include <mrpt/nav/reactive/CLogFileRecord.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "TempDir.hpp"
 #include "nav/Simulation.hpp"
@@ -150,6 +153,54 @@ TEST(NavClosedLoop, HeightThresholdClimbsTheRampButHitsTheKerbOnTheSlope) {
     // The collision happens on the slope: the robot is already 0.3 m+ up the ramp.
     const TrajectorySample& last = r.trajectory.back();
     EXPECT_GT(last.z, 0.3);
+}
+
+// The navigator's "not approaching the target" alarm counts simulated seconds, not wall-clock
+// ones: a goal inside a closed square, 3 s of alarm. The robot drives up to the square and
+// stops approaching; the navigator gives up 3 s of simulated time after the last step that
+// brought it nearer the goal (within two 0.1 s steps: the alarm fires at a navigation step,
+// the loop sees it at the next), however fast the machine runs the simulation (1.3-1.6 x real
+// time here, slower under sanitizers). On MRPT's wall clock, years after the stamps the
+// simulation hands the navigator, this run drove 8.7 m along the square and had not given up
+// after 20 s. Two runs are identical step for step.
+TEST(NavClosedLoop, TheNavigatorsAlarmCountsSimulatedSeconds) {
+    namespace fs = std::filesystem;
+    const travel_test::TempDir tmp("travel_test_nav_sim_clock");
+    std::ifstream in(kShare + "/configs/nav/reactive3d_travel.ini");
+    std::stringstream ini;
+    ini << in.rdbuf();
+    std::string text = ini.str();
+    const std::string key = "alarm_seems_not_approaching_target_timeout   = 20.0";
+    ASSERT_NE(text.find(key), std::string::npos);
+    text.replace(text.find(key), key.size(), "alarm_seems_not_approaching_target_timeout = 3.0");
+    SimOptions o = options(SourceKind::Travel, 20.0);
+    o.nav_config_file = (tmp.path / "short_alarm.ini").string();
+    std::ofstream(o.nav_config_file) << text;
+
+    const World w = parseWorld(
+        "name boxed_goal\nstart 0 0 0\ngoal 4 0\nbounds -2 -3 7 3\n"
+        "wall 2.5 -1.5 2.5 1.5 0.2 1.0\nwall 2.5 1.5 5.5 1.5 0.2 1.0\n"
+        "wall 2.5 -1.5 5.5 -1.5 0.2 1.0\nwall 5.5 -1.5 5.5 1.5 0.2 1.0\n",
+        "boxed_goal");
+    const RunReport r = runSimulation(w, o);
+    print("travel, goal in a closed square", r);
+    ASSERT_EQ(r.outcome, Outcome::NavigatorGaveUp) << r.detail;
+    // The last step that brought the robot nearer the goal.
+    double nearest = 1e9, nearest_t = 0;
+    for (const TrajectorySample& s : r.trajectory) {
+        const double d = std::hypot(s.x - w.goal.x(), s.y - w.goal.y());
+        if (d < nearest) nearest = d, nearest_t = s.t;
+    }
+    EXPECT_GT(r.time - nearest_t, 3.0);
+    EXPECT_LE(r.time - nearest_t, 3.0 + 0.2 + 1e-6);
+
+    const RunReport again = runSimulation(w, o);
+    ASSERT_EQ(again.trajectory.size(), r.trajectory.size());
+    for (std::size_t k = 0; k < r.trajectory.size(); ++k) {
+        const TrajectorySample &a = r.trajectory[k], &b = again.trajectory[k];
+        ASSERT_TRUE(a.x == b.x && a.y == b.y && a.yaw == b.yaw && a.v == b.v && a.w == b.w)
+            << "step " << k << ": " << a.x << " " << a.y << " against " << b.x << " " << b.y;
+    }
 }
 
 TEST(NavClosedLoop, NavlogDeserializesAsLogFileRecords) {

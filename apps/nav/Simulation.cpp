@@ -2,6 +2,7 @@
 #include "nav/Simulation.hpp"
 
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/core/Clock.h>
 #include <mrpt/kinematics/CVehicleSimul_DiffDriven.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/nav/reactive/CReactiveNavigationSystem3D.h>
@@ -118,6 +119,28 @@ std::string formatSeconds(double s) {
 mrpt::Clock::time_point simStamp(double t) {
     return mrpt::Clock::fromDouble(1.7e9 + t);
 }
+
+/// MRPT's clock on the simulated time while a run lasts. The navigator reads mrpt::Clock::now()
+/// itself (its "not approaching the target" alarm, its model of sensing and command delays): on
+/// the wall clock it compared the simulated stamps with a time years later and counted the
+/// alarm in wall seconds of a simulation running 1-20 x faster than real time, so how far it
+/// drove before giving up depended on the machine's load, and two runs of one world and seed
+/// could end differently. One run at a time (the clock is process-wide); the previous source
+/// comes back at the end, also on exceptions.
+class SimulatedMrptClock {
+  public:
+    explicit SimulatedMrptClock(double t) : previous_(mrpt::Clock::getActiveClock()) {
+        set(t);  // before the switch, so that now() is never undefined
+        mrpt::Clock::setActiveClock(mrpt::Clock::Simulated);
+    }
+    ~SimulatedMrptClock() { mrpt::Clock::setActiveClock(previous_); }
+    SimulatedMrptClock(const SimulatedMrptClock&) = delete;
+    SimulatedMrptClock& operator=(const SimulatedMrptClock&) = delete;
+    void set(double t) { mrpt::Clock::setSimulatedTime(simStamp(t)); }
+
+  private:
+    mrpt::Clock::Source previous_;
+};
 
 /// MRPT's simulator interface, with obstacles from an ObstacleSource and simulated time stamps.
 class SimRobot : public mrpt::nav::CRobot2NavInterfaceForSimulator_DiffDriven {
@@ -283,6 +306,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         (".travel-nav-sim-" + std::to_string(::getpid()) + "-" + std::to_string(run_counter++)));
 
     mrpt::kinematics::CVehicleSimul_DiffDriven sim;
+    SimulatedMrptClock clock(sim.getTime());
     sim.setCurrentGTPose(mrpt::math::TPose2D(world.start.x(), world.start.y(), world.start.z()));
     SimRobot robot(sim, chain ? chain->source() : *source);
     RunReport report;
@@ -324,6 +348,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
                                             o.verbosity, "steps");
         for (;; ++steps) {
             const double t = sim.getTime();
+            clock.set(t);
             progress.updateSimTime(std::size_t(steps), t, o.timeout);
             travel::apps::throwIfInterrupted();  // unwinds: the scratch directory goes
             const mrpt::math::TPose2D p = sim.getCurrentGTPose();
