@@ -217,15 +217,13 @@ int run(int argc, char** argv) {
     {
         const travel::apps::MuteLibraryStderr mute;  // liboctomap's " done." per tree write
         written = travel_mrpt::exportAll(map, prefix);
+        travel::PartFile file(prefix + ".travelmap");
         mrpt::io::CFileGZOutputStream out;
-        const std::string path = prefix + ".travelmap";
-        travel::apps::PartialOutput part_guard(path + ".part");
-        if (!out.open(path + ".part")) throw std::runtime_error(path + ": cannot write");
+        if (!out.open(file.part())) throw std::runtime_error(file.path() + ": cannot write");
         mrpt::serialization::archiveFrom(out) << map;
         out.close();
-        travel::movePartInPlace(path + ".part", path);
-        part_guard.commit();
-        written.push_back(path);
+        file.commit();
+        written.push_back(file.path());
     }
     const double export_seconds =
         std::chrono::duration<double>(Clock::now() - export_start).count();

@@ -23,7 +23,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -58,7 +57,6 @@
 #include "travel_mrpt/Registration.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
-namespace fs = std::filesystem;
 using mrpt::obs::CObservation;
 using mrpt::obs::CObservationPointCloud;
 using mrpt::obs::CSensoryFrame;
@@ -425,9 +423,9 @@ int run(int argc, char** argv) {
     travel::apps::PartialOutput csv_guard(options.csv), reference_guard(options.label_reference);
     RawlogSegmenter segmenter(options, filter_options);
     travel::apps::createParentFolder(options.output);
-    const std::string partial = options.output + ".part";
+    travel::PartFile output(options.output);  // never a half-written rawlog under the name
     mrpt::io::CFileGZOutputStream out_file;
-    if (!out_file.open(partial)) throw AppError(partial + ": cannot open for writing");
+    if (!out_file.open(output.part())) throw AppError(output.part() + ": cannot open for writing");
     auto out = mrpt::serialization::archiveFrom(out_file);
 
     const auto start = Clock::now();
@@ -443,13 +441,11 @@ int run(int argc, char** argv) {
         progress.finish();
     } catch (...) {
         progress.finish();
-        out_file.close();
-        std::error_code ec;
-        fs::remove(partial, ec);  // never leave a half-written rawlog behind
+        out_file.close();  // before `output` removes the part file
         throw;
     }
     out_file.close();
-    travel::movePartInPlace(partial, options.output);
+    output.commit();
 
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!options.quiet) printSummary(options, segmenter.totals(), reader.index(), seconds);

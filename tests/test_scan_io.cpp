@@ -16,6 +16,7 @@
 
 #include "TempDir.hpp"
 #include "travel/Errors.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel/io/ScanIO.hpp"
 
 namespace fs = std::filesystem;
@@ -463,4 +464,45 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
         p = dir.write("bad" + std::to_string(k++) + ".ply", cs.text);
         EXPECT_EQ(error(p), p + cs.message);
     }
+}
+
+// travel::PartFile, the one home of "write beside, move in place": committed, the file is under
+// its name and no part file is left; unwound before commit() (an error), neither is; a move that
+// fails (the name is a folder) throws naming the file and removes the part file.
+TEST(PartFile, MovesInPlaceOnCommitAndLeavesNothingOtherwise) {
+    namespace fs = std::filesystem;
+    const travel_test::TempDir tmp("travel_test_part_file");
+    const std::string path = tmp.file("out.bin");
+    {
+        travel::PartFile file(path);
+        EXPECT_EQ(file.part(), path + ".part");
+        std::ofstream(file.part()) << "complete";
+        file.commit();
+    }
+    EXPECT_TRUE(fs::is_regular_file(path));
+    EXPECT_FALSE(fs::exists(path + ".part"));
+
+    const std::string failed = tmp.file("failed.bin");
+    try {
+        travel::PartFile file(failed);
+        std::ofstream(file.part()) << "half";
+        throw std::runtime_error("write error");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_FALSE(fs::exists(failed));
+    EXPECT_FALSE(fs::exists(failed + ".part"));
+
+    const std::string folder = tmp.file("folder");
+    fs::create_directories(folder + "/inside");
+    travel::PartFile file(folder);
+    std::ofstream(file.part()) << "complete";
+    try {
+        file.commit();
+        ADD_FAILURE() << "moving onto a non-empty folder did not throw";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(folder + ": cannot write"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(fs::exists(folder + ".part"));
+    EXPECT_TRUE(fs::is_directory(folder + "/inside"));
 }

@@ -470,10 +470,9 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
 }
 
 void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
-    const std::string part = path + ".part";
-    apps::PartialOutput part_guard(part);  // removed on a write error
+    travel::PartFile file(path);  // the part file is removed on a write error
     {
-        std::ofstream f(part);
+        std::ofstream f(file.part());
         if (!f) throw std::runtime_error(path + ": cannot write the trajectory CSV");
         const bool movers = r.min_mover_clearance < 1e9;
         f << "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles"
@@ -493,8 +492,7 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
         }
         if (!f) throw std::runtime_error(path + ": write error");
     }
-    travel::movePartInPlace(part, path);
-    part_guard.commit();
+    file.commit();
 }
 
 }  // namespace travel::navsim

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "travel/Errors.hpp"
 
@@ -52,6 +53,19 @@ void movePartInPlace(const std::string& part, const std::string& path) {
     std::filesystem::remove(part, ignored);
     throw std::runtime_error(path + ": cannot write (moving " + part + " there: " + ec.message() +
                              ")");
+}
+
+PartFile::PartFile(std::string path) : path_(std::move(path)), part_(path_ + ".part") {}
+
+PartFile::~PartFile() {
+    if (done_) return;
+    std::error_code ignored;
+    std::filesystem::remove(part_, ignored);
+}
+
+void PartFile::commit() {
+    done_ = true;  // movePartInPlace removes the part file itself when the move fails
+    movePartInPlace(part_, path_);
 }
 
 }  // namespace travel

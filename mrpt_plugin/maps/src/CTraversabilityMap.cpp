@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -508,39 +507,35 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
 }
 
 void CTraversabilityMap::saveTo(const std::string& prefix) const {
-    // Written beside and moved (travel::movePartInPlace), so that a failed save never leaves
-    // half a file under the name, nor a part file behind.
-    const std::string grid_path = prefix + ".travelgrid", tree_path = prefix + ".ot";
-    const auto fail = [](const std::string& part, const std::string& path,
-                         const std::string& reason) {
-        std::error_code ignored;
-        std::filesystem::remove(part, ignored);
-        throw std::runtime_error(path + ": cannot write (" + reason + ")");
+    // Written beside and moved (travel::PartFile), so that a failed save never leaves half a
+    // file under the name, nor a part file behind.
+    const auto cannotWrite = [](const travel::PartFile& file, const std::string& reason) {
+        return std::runtime_error(file.path() + ": cannot write (" + reason + ")");
     };
     {
-        mrpt::io::CFileGZOutputStream out;
-        if (!out.open(grid_path + ".part"))
-            fail(grid_path + ".part", grid_path, std::strerror(errno));
-        try {
-            auto archive = mrpt::serialization::archiveFrom(out);
-            archive << std::string(kGridFileMagic) << kGridFileVersion;
-            writeGridState(archive);
-            out.close();
-        } catch (const std::exception& e) {
-            out.close();
-            fail(grid_path + ".part", grid_path, travel_mrpt::mrptMessage(e.what()));
+        travel::PartFile grid(prefix + ".travelgrid");
+        {
+            mrpt::io::CFileGZOutputStream out;
+            if (!out.open(grid.part())) throw cannotWrite(grid, std::strerror(errno));
+            try {
+                auto archive = mrpt::serialization::archiveFrom(out);
+                archive << std::string(kGridFileMagic) << kGridFileVersion;
+                writeGridState(archive);
+                out.close();
+            } catch (const std::exception& e) {
+                out.close();
+                throw cannotWrite(grid, travel_mrpt::mrptMessage(e.what()));
+            }
         }
+        grid.commit();
     }
-    travel::movePartInPlace(grid_path + ".part", grid_path);
+    travel::PartFile tree(prefix + ".ot");
     {
-        std::ofstream out(tree_path + ".part", std::ios::binary);
-        if (!out || !octree().write(out) || !out.flush()) {
-            const std::string reason = std::strerror(errno);
-            out.close();
-            fail(tree_path + ".part", tree_path, reason);
-        }
+        std::ofstream out(tree.part(), std::ios::binary);
+        if (!out || !octree().write(out) || !out.flush())
+            throw cannotWrite(tree, std::strerror(errno));
     }
-    travel::movePartInPlace(tree_path + ".part", tree_path);
+    tree.commit();
 }
 
 void CTraversabilityMap::loadFrom(const std::string& prefix) {

@@ -27,6 +27,28 @@ void writeFileBytes(const std::string& path, const unsigned char* data, std::siz
 /// std::runtime_error naming `path` and the reason: no orphaned part file is left behind.
 void movePartInPlace(const std::string& part, const std::string& path);
 
+/// A file written under a temporary name beside its final one, `path + ".part"`, and moved in
+/// place by commit() (movePartInPlace) once complete. Destroyed before commit() (an error, an
+/// exception, an interrupt that unwinds), it removes the part file: a failed write leaves
+/// neither half a file under `path` nor a part file. Declare it before the stream that writes
+/// part(), so that the stream is closed when the part file goes.
+class PartFile {
+  public:
+    explicit PartFile(std::string path);
+    ~PartFile();
+    PartFile(const PartFile&) = delete;
+    PartFile& operator=(const PartFile&) = delete;
+
+    const std::string& path() const { return path_; }
+    const std::string& part() const { return part_; }
+    /// Moves part() to path(); throws std::runtime_error naming path() (the part file removed).
+    void commit();
+
+  private:
+    std::string path_, part_;
+    bool done_ = false;
+};
+
 namespace le {
 
 #if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && \
