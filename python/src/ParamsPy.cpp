@@ -68,7 +68,15 @@ std::string valueText(const std::string& key, py::handle value) {
         if (std::is_same_v<T, AutoReal> && is_str) return value.cast<std::string>();
         if (is_bool || is_str || !PyNumber_Check(value.ptr()))
             throw refuse(std::is_same_v<T, AutoReal> ? "a number or 'auto'" : "a number");
-        return fields::format(py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
+        try {
+            return fields::format(
+                py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
+        } catch (py::error_already_set& e) {  // an int beyond the double range (10**400)
+            if (!e.matches(PyExc_OverflowError)) throw;
+            throw ConfigError("invalid value for '" + key +
+                              "': " + std::string(py::str(py::type::of(value).attr("__name__"))) +
+                              " too large for a float");
+        }
     }
 }
 

@@ -182,6 +182,11 @@ def test_params_errors_carry_the_library_messages():
         p.ground_dist = "0.2"
     with pytest.raises(ValueError, match="did you mean 'ground_dist'"):
         travel.Params(groun_dist=0.2)
+    # Ints beyond any float or int parameter: ConfigError naming the key, not OverflowError.
+    with pytest.raises(travel.ConfigError, match="ground_dist.*too large for a float"):
+        travel.Params(ground_dist=10**400)
+    with pytest.raises(travel.ConfigError, match="num_rings"):
+        p.num_rings = 10**400
     with pytest.raises(AttributeError):
         p.no_such_parameter = 1
     p.min_range = 50.0
