@@ -308,6 +308,33 @@ TEST(Params, ValidateRejectsOutOfRangeAndHugeGrids) {
 }  // namespace
 }  // namespace travel
 
+// Binary bytes given where text is expected are named by where they start; UTF-8 is text.
+TEST(Text, NotTextReasonNamesTheFirstByteThatIsNoText) {
+    using travel::notTextReason;
+    EXPECT_EQ(notTextReason(""), "");
+    EXPECT_EQ(notTextReason("key: 1.5\r\n\tother = x # \xC3\xA9 \xE2\x9C\x93 \xF0\x9F\x9A\x97\n"),
+              "");
+    EXPECT_EQ(notTextReason(std::string("ab\0c", 4)), "byte 0x00 at offset 2");
+    EXPECT_EQ(notTextReason("a\x1B[0m"), "byte 0x1B at offset 1");
+    EXPECT_EQ(notTextReason("ab\x7F"), "byte 0x7F at offset 2");
+    EXPECT_EQ(notTextReason("\xFF"), "byte 0xFF at offset 0");          // never in UTF-8
+    EXPECT_EQ(notTextReason("x\xC3"), "byte 0xC3 at offset 1");         // truncated
+    EXPECT_EQ(notTextReason("\xC0\x80"), "byte 0xC0 at offset 0");      // overlong NUL
+    EXPECT_EQ(notTextReason("\xED\xA0\x80"), "byte 0xED at offset 0");  // a surrogate
+    EXPECT_EQ(notTextReason("\xA9"), "byte 0xA9 at offset 0");          // stray continuation
+}
+
+// A message echoing user input stays one readable line: control and non-UTF-8 bytes escaped,
+// long input cut with its size.
+TEST(Text, QuotedExcerptEscapesAndCuts) {
+    using travel::quotedExcerpt;
+    EXPECT_EQ(quotedExcerpt("abc"), "'abc'");
+    EXPECT_EQ(quotedExcerpt("caf\xC3\xA9"), "'caf\xC3\xA9'");
+    EXPECT_EQ(quotedExcerpt(std::string("a\0\n\xFF", 4)), "'a\\x00\\x0A\\xFF'");
+    EXPECT_EQ(quotedExcerpt(std::string(5000, '9'), 10), "'9999999999'... (5000 bytes)");
+    EXPECT_EQ(quotedExcerpt("\xC3\xA9\xC3\xA9\xC3\xA9", 2), "'\xC3\xA9\xC3\xA9'... (6 bytes)");
+}
+
 TEST(Text, SplitListKeepsEmptyItems) {
     using V = std::vector<std::string>;
     EXPECT_EQ(travel::splitList("", ','), V{});

@@ -6,6 +6,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <thread>
 
 #include "NavPoints.hpp"
@@ -235,6 +237,20 @@ TEST(NavWorld, ErrorsNameFileLineAndExpectation) {
     EXPECT_THROW(parseWorld("start 0 0 x\ngoal 1 1\n", "w.world"), std::runtime_error);
     EXPECT_THROW(parseWorld("start 0 0 0\ngoal 1 1\nteapot 1\n", "w.world"), std::runtime_error);
     EXPECT_THROW(loadWorld("/nonexistent/x.world"), std::runtime_error);
+    {  // a binary file given as a world is named, not echoed
+        const std::string path = testing::TempDir() + "travel_test_binary.world";
+        std::ofstream(path, std::ios::binary) << std::string("start\0\x01\xFF", 8);
+        try {
+            loadWorld(path);
+            ADD_FAILURE() << "no error";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(
+                std::string(e.what()).find(path + ": not a text file (byte 0x00 at offset 5)"),
+                std::string::npos)
+                << e.what();
+        }
+        std::remove(path.c_str());
+    }
     const World w = parseWorld("start 1 2 90\ngoal 3 4\nkerb 5 0 90 2 0.3 0.2\n", "w.world");
     ASSERT_EQ(w.obstacles.size(), 1u);
     ASSERT_EQ(w.scene.steps.size(), 1u);

@@ -323,6 +323,26 @@ TEST(ParamsFile, ValidatesAfterwardsWithFileName) {
     EXPECT_CONTAINS(msg, "min_range");
 }
 
+// A binary file given as a configuration (a scan, by mistake) is named as such, not echoed; a
+// value of thousands of characters is quoted in part, with its size.
+TEST(ConfigFile, BinaryFilesAndHugeValuesGiveShortMessages) {
+    TempDir dir;
+    travel::Config config;
+    const std::string scan = dir.write("scan.bin", std::string("\x12\x34\0\0\xFF\xFE key: 1", 12));
+    const std::string binary = configErrorOf([&] { travel::applyConfigFile(scan, config); });
+    EXPECT_CONTAINS(binary, scan + ": not a text file (byte 0x12 at offset 0)");
+    const std::string huge =
+        dir.write("huge.yaml", "travel:\n  ground_dist: " + std::string(5000, 'x') + "\n");
+    const std::string message = configErrorOf([&] { travel::applyConfigFile(huge, config); });
+    EXPECT_CONTAINS(message, huge + ":2");
+    EXPECT_CONTAINS(message, "... (5000 bytes) is not a finite number");
+    EXPECT_LT(message.size(), 300u) << message;
+    const std::string line = dir.write("line.ini", "[travel]\n" + std::string(3000, 'y') + "\n");
+    const std::string no_equals = configErrorOf([&] { travel::applyConfigFile(line, config); });
+    EXPECT_CONTAINS(no_equals, "... (3000 bytes)");
+    EXPECT_LT(no_equals.size(), 300u) << no_equals;
+}
+
 TEST(ConfigFile, RuleErrorsNameTheLineOfTheirKey) {
     TempDir dir;
     travel::Config config;

@@ -188,6 +188,10 @@ TEST(PoseFiles, ErrorsNameTheFileLineAndWhatWasExpected) {
     EXPECT_NE(poseError("2 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n").find(":2: timestamp"),
               std::string::npos);
     EXPECT_NE(poseError("1 2 3\n").find(":1: expected 8 numbers (TUM"), std::string::npos);
+    // A binary file (a scan given as poses) is named, not parsed and echoed.
+    EXPECT_NE(poseError(std::string("\x3F\x80\0\0 1 2 3\n", 10))
+                  .find(": not a text file (byte 0x80 at offset 1)"),
+              std::string::npos);
     EXPECT_NE(poseError("").find("no poses"), std::string::npos);
     EXPECT_NE(poseError("1 0 0 0 0 0 0 5\n").find("unit length"), std::string::npos);
     const std::string calib = writeTemp("calib_bad.txt", "P0: 1 2 3\n");

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "travel/Text.hpp"
+
 namespace travel::navsim {
 namespace {
 
@@ -33,8 +35,8 @@ struct Line {
     std::vector<double> values;
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw std::runtime_error(source + ":" + std::to_string(number) + ": '" + keyword +
-                                 "': " + what);
+        throw std::runtime_error(source + ":" + std::to_string(number) + ": " +
+                                 travel::quotedExcerpt(keyword) + ": " + what);
     }
     void expect(std::size_t min_count, std::size_t max_count, const char* usage) const {
         if (values.size() < min_count || values.size() > max_count)
@@ -83,7 +85,7 @@ World parseWorld(const std::string& text, const std::string& source_name) {
                 if (used != token.size() || !std::isfinite(v)) throw std::invalid_argument(token);
                 line.values.push_back(v);
             } catch (const std::exception&) {
-                line.fail("'" + token + "' is not a finite number");
+                line.fail(travel::quotedExcerpt(token) + " is not a finite number");
             }
         }
         const auto& v = line.values;
@@ -224,6 +226,9 @@ World loadWorld(const std::string& path) {
     std::ostringstream text;
     text << f.rdbuf();
     if (f.bad()) throw std::runtime_error(path + ": read error");
+    if (const std::string why = travel::notTextReason(text.str()); !why.empty())
+        throw std::runtime_error(path + ": not a text file (" + why +
+                                 "); a world is text, one item a line (apps/nav/World.hpp)");
     return parseWorld(text.str(), path);
 }
 

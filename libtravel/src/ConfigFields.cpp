@@ -123,24 +123,24 @@ std::string formatBound(double bound) {
 
 std::string parse(const std::string& text, double& out) {
     if (text.empty()) return "empty value, expected a number";
-    if (!parseReal(text, out)) return inQuotes(text) + " is not a finite number";
+    if (!parseReal(text, out)) return quotedExcerpt(text) + " is not a finite number";
     return {};
 }
 
 std::string parse(const std::string& text, float& out) {
     if (text.empty()) return "empty value, expected a number";
-    if (!parseReal(text, out)) return inQuotes(text) + " is not a finite number";
+    if (!parseReal(text, out)) return quotedExcerpt(text) + " is not a finite number";
     return {};
 }
 
 std::string parse(const std::string& text, int& out) {
     if (text.empty()) return "empty value, expected an integer";
     double value = 0;
-    if (!parseReal(text, value)) return inQuotes(text) + " is not a number";
-    if (value != std::floor(value)) return inQuotes(text) + " is not an integer";
+    if (!parseReal(text, value)) return quotedExcerpt(text) + " is not a number";
+    if (value != std::floor(value)) return quotedExcerpt(text) + " is not an integer";
     if (value < static_cast<double>(std::numeric_limits<int>::min()) ||
         value > static_cast<double>(std::numeric_limits<int>::max())) {
-        return inQuotes(text) + " does not fit in an int";
+        return quotedExcerpt(text) + " does not fit in an int";
     }
     out = static_cast<int>(value);
     return {};
@@ -153,7 +153,7 @@ std::string parse(const std::string& text, bool& out) {
     } else if (lower == "false" || lower == "no" || lower == "off" || lower == "0") {
         out = false;
     } else {
-        return inQuotes(text) + " is not a boolean (true/false, yes/no, on/off, 1/0)";
+        return quotedExcerpt(text) + " is not a boolean (true/false, yes/no, on/off, 1/0)";
     }
     return {};
 }
@@ -188,7 +188,7 @@ std::string parseChoice(const std::string& text, const char* choices, int& index
             return {};
         }
     }
-    return inQuotes(text) + " is not one of " + choices;
+    return quotedExcerpt(text) + " is not one of " + choices;
 }
 
 std::string parse(const std::string& text, std::string& out, const char* choices) {

@@ -17,6 +17,7 @@
 #include "travel/ConfigFields.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
+#include "travel/Text.hpp"
 
 namespace travel {
 namespace fs = std::filesystem;
@@ -204,8 +205,8 @@ class Applier {
             at.line > 0 ? " at " + std::to_string(at.line) + ":" + std::to_string(at.column) : "";
         if (suspect > 0) {
             while (!suspect_text.empty() && suspect_text.back() == '\r') suspect_text.pop_back();
-            fail({suspect, 0}, "expected 'key: value', got '" + suspect_text +
-                                   "' (YAML syntax: " + why + where + ")");
+            fail({suspect, 0}, "expected 'key: value', got " + quotedExcerpt(suspect_text) +
+                                   " (YAML syntax: " + why + where + ")");
         }
         fail(at, "YAML syntax: " + why);
     }
@@ -340,13 +341,14 @@ std::vector<IniEntry> readIni(const std::string& text, const std::string& source
                 close == std::string::npos ? "" : trimmed(content.substr(close + 1));
             if (close == std::string::npos ||
                 !(after.empty() || after[0] == '#' || after[0] == ';'))
-                fail("malformed section header '" + content + "'");
+                fail("malformed section header " + quotedExcerpt(content));
             section = trimmed(content.substr(1, close - 1));
             if (section.empty()) fail("empty section name '" + content + "'");
             continue;
         }
         const std::size_t equals = content.find('=');
-        if (equals == std::string::npos) fail("expected 'key = value', got '" + content + "'");
+        if (equals == std::string::npos)
+            fail("expected 'key = value', got " + quotedExcerpt(content));
         IniEntry e{section, trimmed(content.substr(0, equals)), "", number, int(start) + 1};
         if (e.key.empty()) fail("missing key before '='");
         try {
@@ -395,6 +397,9 @@ std::string readConfigFile(const std::string& path) {
     std::ostringstream contents;
     if (in) contents << in.rdbuf();
     if (!in || in.bad()) throw ConfigError("cannot read config file '" + path + "'");
+    if (const std::string why = notTextReason(contents.str()); !why.empty())
+        throw ConfigError(path + ": not a text file (" + why +
+                          "); a configuration is YAML or ini text");
     return contents.str();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cctype>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,73 @@ inline std::vector<std::string> splitList(std::string_view text, char sep) {
         if (end == std::string_view::npos) return items;
         start = end + 1;
     }
+}
+
+/// Length of the UTF-8 sequence starting at bytes[i] (1-4), or 0 when none starts there (a
+/// stray continuation byte, an overlong or truncated sequence, a surrogate, beyond U+10FFFF).
+inline std::size_t utf8SequenceLength(std::string_view bytes, std::size_t i) {
+    const auto at = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    const unsigned char b = at(i);
+    if (b < 0x80) return 1;
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xBF;  // the second byte's range
+    if (b >= 0xC2 && b <= 0xDF)
+        n = 2;
+    else if (b == 0xE0)
+        n = 3, lo = 0xA0;
+    else if (b >= 0xE1 && b <= 0xEF)
+        n = 3, hi = b == 0xED ? 0x9F : 0xBF;
+    else if (b == 0xF0)
+        n = 4, lo = 0x90;
+    else if (b >= 0xF1 && b <= 0xF4)
+        n = 4, hi = b == 0xF4 ? 0x8F : 0xBF;
+    if (n == 0 || i + n > bytes.size()) return 0;
+    if (at(i + 1) < lo || at(i + 1) > hi) return 0;
+    for (std::size_t k = 2; k < n; ++k)
+        if (at(i + k) < 0x80 || at(i + k) > 0xBF) return 0;
+    return n;
+}
+
+/// "" when `bytes` are text (UTF-8 without control bytes other than tab, line feed and carriage
+/// return), else where they stop being text: "byte 0x00 at offset 12". Readers of text files
+/// (configurations, pose files, worlds) check it first, so that a binary file given by mistake
+/// (a scan as a configuration) is named as such instead of being echoed by a parser.
+inline std::string notTextReason(std::string_view bytes) {
+    for (std::size_t i = 0; i < bytes.size();) {
+        const unsigned char b = static_cast<unsigned char>(bytes[i]);
+        const std::size_t n = utf8SequenceLength(bytes, i);
+        if (n == 0 || (b < 0x20 && b != '\t' && b != '\n' && b != '\r') || b == 0x7F) {
+            char reason[64];
+            std::snprintf(reason, sizeof reason, "byte 0x%02X at offset %zu", b, i);
+            return reason;
+        }
+        i += n;
+    }
+    return {};
+}
+
+/// 'text' for a message that echoes what a user wrote (a value, a line): control bytes and bytes
+/// that are no UTF-8 as \xNN, and cut after `max` characters with "... (N bytes)", so that a
+/// message stays one readable line whatever the input held.
+inline std::string quotedExcerpt(std::string_view text, std::size_t max = 80) {
+    std::string out = "'";
+    std::size_t shown = 0, i = 0;
+    for (; i < text.size() && shown < max; ++shown) {
+        const unsigned char b = static_cast<unsigned char>(text[i]);
+        const std::size_t n = utf8SequenceLength(text, i);
+        if (n == 0 || b < 0x20 || b == 0x7F) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02X", b);
+            out += escaped;
+            ++i;
+        } else {
+            out.append(text.substr(i, n));
+            i += n;
+        }
+    }
+    out += "'";
+    if (i < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
 }
 
 }  // namespace travel

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "travel/Text.hpp"
+
 namespace travel {
 namespace {
 
@@ -24,8 +26,15 @@ std::runtime_error error(const std::string& path, int line, const std::string& w
 /// Data lines of a whitespace-separated numeric file ('#' comments, blank lines skipped).
 /// `prefix` (e.g. "Tr:") selects lines starting with it and drops it.
 std::vector<Line> readNumericLines(const std::string& path, const std::string& prefix = "") {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open for reading");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw std::runtime_error(path + ": cannot open for reading");
+    std::ostringstream bytes;
+    bytes << file.rdbuf();
+    if (file.bad()) throw std::runtime_error(path + ": read error");
+    if (const std::string why = notTextReason(bytes.str()); !why.empty())
+        throw std::runtime_error(path + ": not a text file (" + why +
+                                 "); expected lines of numbers");
+    std::istringstream in(bytes.str());
     std::vector<Line> lines;
     std::string text;
     int number = 0;
@@ -46,14 +55,13 @@ std::vector<Line> readNumericLines(const std::string& path, const std::string& p
             char* end = nullptr;
             const double v = std::strtod(word.c_str(), &end);
             if (end != word.c_str() + word.size() || !std::isfinite(v))
-                throw error(
-                    path, number,
-                    "column " + std::to_string(column) + ": '" + word + "' is not a finite number");
+                throw error(path, number,
+                            "column " + std::to_string(column) + ": " + quotedExcerpt(word) +
+                                " is not a finite number");
             line.values.push_back(v);
         }
         if (!line.values.empty()) lines.push_back(std::move(line));
     }
-    if (in.bad()) throw std::runtime_error(path + ": read error");
     return lines;
 }
 
