@@ -404,10 +404,10 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
     };
     const Case pcd_cases[] = {
         {head + "SIZE 4 4 4\n", ":3: FIELDS has 4 names but SIZE has 3"},
-        {"VERSION 0.5\n", ":1: VERSION 0.5 is not supported (expected 0.7)"},
+        {"VERSION 0.5\n", ":1: VERSION '0.5' is not supported (expected 0.7)"},
         {"garbage here\n", ":1: 'garbage here' is not a PCD header line"},
         {head + "SIZE 4 4 4 3\nTYPE F F F F\nWIDTH 1\nHEIGHT 1\nDATA ascii\n1 2 3 4\n",
-         ":7: field 'intensity' has SIZE 3 TYPE F, not one of F4 F8 U1 U2 U4 I1 I2 I4"},
+         ":7: field 'intensity' has SIZE 3 TYPE 'F', not one of F4 F8 U1 U2 U4 I1 I2 I4"},
         {head + good + "POINTS 2\nDATA ascii\n1 2 3 4\n", ":8: POINTS 2 but WIDTH*HEIGHT = 1"},
         {head + good + "POINTS 1\n", ": the header ends without a DATA line"},
         {head + good + "DATA json\n", ":8: DATA 'json' is not ascii, binary or binary_compressed"},
@@ -440,7 +440,7 @@ TEST(ScanIO, BadFilesNameTheFileAndTheProblem) {
     const std::string ply = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n";
     const Case ply_cases[] = {
         {"ply\nformat binary_big_endian 1.0\n",
-         ":2: format binary_big_endian is not supported (ascii or binary_little_endian only)"},
+         ":2: format 'binary_big_endian' is not supported (ascii or binary_little_endian only)"},
         {ply + "property float y\nend_header\n1 2\n", ":6: element vertex has no x, y and z"},
         {"ply\nformat ascii 1.0\nelement face 0\nend_header\n",
          ":4: the header has no vertex element"},

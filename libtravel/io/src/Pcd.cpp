@@ -78,8 +78,9 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
                                         what + " has " + std::to_string(n));
         };
         if (key == "VERSION") {
-            need(n == 1 && (w[1] == "0.7" || w[1] == ".7"),
-                 "VERSION " + excerpt(n ? w[1] : "") + " is not supported (expected 0.7)");
+            need(
+                n == 1 && (w[1] == "0.7" || w[1] == ".7"),
+                "VERSION " + quotedExcerpt(n ? w[1] : "", 24) + " is not supported (expected 0.7)");
             has_version = true;
         } else if (key == "FIELDS") {
             need(n > 0, "FIELDS names no field");
@@ -89,7 +90,8 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
             sizes.resize(n);
             for (std::size_t k = 0; k < n; ++k)
                 need(parseCount(w[k + 1], sizes[k]) && sizes[k] > 0,
-                     "SIZE '" + excerpt(w[k + 1]) + "' of field '" + names[k] + "' is not a size");
+                     "SIZE " + quotedExcerpt(w[k + 1], 24) + " of field '" + names[k] +
+                         "' is not a size");
         } else if (key == "TYPE") {
             perField("TYPE");
             types.assign(w.begin() + 1, w.end());
@@ -97,9 +99,9 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
             perField("COUNT");
             counts.resize(n);
             for (std::size_t k = 0; k < n; ++k)
-                need(
-                    parseCount(w[k + 1], counts[k]) && counts[k] > 0 && counts[k] < 65536,
-                    "COUNT '" + excerpt(w[k + 1]) + "' of field '" + names[k] + "' is not a count");
+                need(parseCount(w[k + 1], counts[k]) && counts[k] > 0 && counts[k] < 65536,
+                     "COUNT " + quotedExcerpt(w[k + 1], 24) + " of field '" + names[k] +
+                         "' is not a count");
         } else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS") {
             std::size_t value = 0;
             need(n == 1 && parseCount(w[1], value), key + " is not a number of points");
@@ -110,10 +112,11 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
             need(n == 7, "VIEWPOINT has " + std::to_string(n) + " numbers, expected 7");
         } else if (key == "DATA") {
             need(n == 1 && (w[1] == "ascii" || w[1] == "binary" || w[1] == "binary_compressed"),
-                 "DATA '" + excerpt(n ? w[1] : "") + "' is not ascii, binary or binary_compressed");
+                 "DATA " + quotedExcerpt(n ? w[1] : "", 24) +
+                     " is not ascii, binary or binary_compressed");
             data = w[1];
         } else {
-            failAt(path, line_no, "'" + excerpt(line) + "' is not a PCD header line");
+            failAt(path, line_no, quotedExcerpt(line, 24) + " is not a PCD header line");
         }
     }
     // The header is complete: check it as a whole (messages point at the DATA line).
@@ -142,7 +145,7 @@ void readPcd(const std::string& path, const std::vector<unsigned char>& bytes, P
         f.name = names[k];
         need(types[k].size() == 1 && pcdType(sizes[k], types[k][0], f.type),
              "field '" + f.name + "' has SIZE " + std::to_string(sizes[k]) + " TYPE " +
-                 excerpt(types[k]) + ", not one of F4 F8 U1 U2 U4 I1 I2 I4");
+                 quotedExcerpt(types[k], 24) + ", not one of F4 F8 U1 U2 U4 I1 I2 I4");
         f.count = static_cast<unsigned>(counts[k]);
         f.target = targetOf(f.name, f.type, f.scale);
         if (f.target != Target::Skip) {

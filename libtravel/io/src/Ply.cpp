@@ -59,7 +59,7 @@ void readPly(const std::string& path, const std::vector<unsigned char>& bytes, P
             if (!ok) failAt(path, line_no, message);
         };
         if (line_no == 1) {
-            need(line == "ply", "'" + excerpt(line) + "' is not 'ply': not a PLY file");
+            need(line == "ply", quotedExcerpt(line, 24) + " is not 'ply': not a PLY file");
             continue;
         }
         std::istringstream in(line);
@@ -67,16 +67,17 @@ void readPly(const std::string& path, const std::vector<unsigned char>& bytes, P
         for (std::string s; in >> s;) w.push_back(s);
         if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
         if (w[0] == "format") {
-            need(w.size() == 3 && w[2] == "1.0", "'" + excerpt(line) + "' is not a PLY 1.0 format");
+            need(w.size() == 3 && w[2] == "1.0",
+                 quotedExcerpt(line, 24) + " is not a PLY 1.0 format");
             need(w[1] == "ascii" || w[1] == "binary_little_endian",
-                 "format " + excerpt(w[1]) +
+                 "format " + quotedExcerpt(w[1], 24) +
                      " is not supported (ascii or binary_little_endian only)");
             format = w[1];
         } else if (w[0] == "element") {
             Element e;
             need(w.size() == 3 && w[2].find_first_not_of("0123456789") == std::string::npos &&
                      w[2].size() < 19,
-                 "'" + excerpt(line) + "' is not 'element NAME COUNT'");
+                 quotedExcerpt(line, 24) + " is not 'element NAME COUNT'");
             e.name = w[1];
             e.count = std::strtoull(w[2].c_str(), nullptr, 10);
             elements.push_back(e);
@@ -87,12 +88,12 @@ void readPly(const std::string& path, const std::vector<unsigned char>& bytes, P
             if (w.size() == 5 && w[1] == "list") {
                 need(
                     plyType(w[2], f.count_type) && isInteger(f.count_type) && plyType(w[3], f.type),
-                    "'" + excerpt(line) + "' has an unknown or non-integer list type");
+                    quotedExcerpt(line, 24) + " has an unknown or non-integer list type");
                 f.list = true;
                 f.name = w[4];
             } else {
                 need(w.size() == 3 && plyType(w[1], f.type),
-                     "'" + excerpt(line) + "' is not 'property TYPE NAME' with a PLY type");
+                     quotedExcerpt(line, 24) + " is not 'property TYPE NAME' with a PLY type");
                 f.name = w[2];
             }
             if (e.name == "vertex") {
@@ -107,7 +108,7 @@ void readPly(const std::string& path, const std::vector<unsigned char>& bytes, P
             need(!format.empty(), "the header has no format line");
             header_done = true;
         } else {
-            need(false, "'" + excerpt(line) + "' is not a PLY header line");
+            need(false, quotedExcerpt(line, 24) + " is not a PLY header line");
         }
     }
     const Element* vertex = nullptr;

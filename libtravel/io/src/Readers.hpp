@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "travel/PointCloud.hpp"
+#include "travel/Text.hpp"  // quotedExcerpt: file contents quoted in messages
 
 namespace travel::io_detail {
 
@@ -100,8 +101,5 @@ std::vector<unsigned char> lzfCompress(const unsigned char* in, std::size_t size
 
 /// "points", "vertices", "faces": `what` in the plural, for messages.
 std::string plural(const std::string& what);
-
-/// At most 24 printable characters of `text`, for quoting file contents in a message.
-std::string excerpt(const std::string& text);
 
 }  // namespace travel::io_detail

@@ -35,15 +35,6 @@ void failAt(const std::string& path, std::size_t line, const std::string& messag
     throw InputError(path + ":" + std::to_string(line) + ": " + message);
 }
 
-std::string excerpt(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (out.size() == 24) return out + "...";
-        out += (c >= 32 && c < 127) ? c : '?';
-    }
-    return out;
-}
-
 std::size_t sizeOf(ValueType type) {
     switch (type) {
         case ValueType::I8:
@@ -151,7 +142,7 @@ double ValueSource::next(ValueType type) {
     token[len] = '\0';
     char* parsed_end = nullptr;
     const double v = std::strtod(token, &parsed_end);
-    if (parsed_end != token + len) fail("'" + excerpt(token) + "' is not a number");
+    if (parsed_end != token + len) fail(quotedExcerpt(token, 24) + " is not a number");
     return v;
 }
 
