@@ -388,7 +388,8 @@ int run(int argc, char** argv) {
         is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
-        flags.inputs(), labels.getValue(), max_frames.count(), flags.scanFormat());
+        flags.inputs(), labels.getValue(), static_cast<std::size_t>(max_frames.count()),
+        flags.scanFormat());
     travel::apps::createFolder(out);
     const fs::path dir(out);
 

@@ -72,6 +72,14 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
     message(FATAL_ERROR "frames.csv has ${n} lines, expected 3 (header + 2 rows)")
   endif()
 
+  # --max-frames above 2^32: all (three) frames, not the count modulo 2^32 (1).
+  run_ok(${TRAVEL_EVAL} report -i ${seq} --max-frames 4294967297 -o ${WORK_DIR}/all --methods tgs)
+  file(STRINGS ${WORK_DIR}/all/frames.csv rows)
+  list(LENGTH rows n)
+  if(NOT n EQUAL 4)
+    message(FATAL_ERROR "--max-frames 4294967297: frames.csv has ${n} lines, expected 4")
+  endif()
+
   run_ok(${TRAVEL_EVAL} sweep -i ${seq} --max-frames 2 -o ${WORK_DIR}/sweep
          --sweep tgf_resolution=4,8)
   file(STRINGS ${WORK_DIR}/sweep/sweep_tgf_resolution.csv rows)

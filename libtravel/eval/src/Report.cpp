@@ -58,7 +58,7 @@ std::string sequenceName(const std::string& scans_dir) {
 }
 
 std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
-                                     const std::vector<std::string>& labels, int max_frames,
+                                     const std::vector<std::string>& labels, std::size_t max_frames,
                                      ScanFormat format) {
     if (!labels.empty() && labels.size() != inputs.size())
         throw InputError(
@@ -89,8 +89,7 @@ std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
             dirs += (s ? ", " : "") + inputs[s] + " with " + labels_dirs[s];
         throw InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
     }
-    if (max_frames > 0 && frames.size() > static_cast<std::size_t>(max_frames))
-        frames.resize(max_frames);
+    if (max_frames > 0 && frames.size() > max_frames) frames.resize(max_frames);
     return frames;
 }
 

@@ -29,7 +29,7 @@ std::string sequenceName(const std::string& scans_dir);
 /// `labels` is empty (each input's own labels/ folder) or has one labels folder per input.
 /// Throws InputError for a missing labels folder or when no scan has a label.
 std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
-                                     const std::vector<std::string>& labels, int max_frames,
+                                     const std::vector<std::string>& labels, std::size_t max_frames,
                                      ScanFormat format = ScanFormat::Auto);
 
 /// "sequence 00, 000000-000002; sequence 01, ..." for the report header.
