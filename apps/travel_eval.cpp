@@ -331,8 +331,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> methods("", "methods",
                                          "report: comma-separated methods (default: all of them)",
                                          false, "", "A,B,...", cmd);
-    TCLAP::ValueArg<std::string> method("", "method", "sweep: the method (default travel)", false,
-                                        "travel", "NAME", cmd);
+    TCLAP::ValueArg<std::string> method("", "method", "sweep, merges: the method (default travel)",
+                                        false, "travel", "NAME", cmd);
     TCLAP::ValueArg<std::string> loo_score(
         "", "loo-score",
         "sweep: what the leave-one-out choice maximises per frame: f1b (ground F1, protocol B; "
@@ -357,10 +357,11 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const travel::apps::Verbosity verbosity =
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
-    if (is_sweep && methods.isSet())
-        throw travel::apps::usageError("sweep runs one --method, not --methods");
-    if (!is_sweep && !is_merges && (sweep.isSet() || method.isSet()))
-        throw travel::apps::usageError("report takes --methods; --sweep/--method are for sweep");
+    if ((is_sweep || is_merges) && methods.isSet())
+        throw travel::apps::usageError(command.getValue() + " runs one --method, not --methods");
+    if (!is_sweep && !is_merges && method.isSet())
+        throw travel::apps::usageError("report takes --methods; --method is for sweep and merges");
+    if (!is_sweep && sweep.isSet()) throw travel::apps::usageError("--sweep is for sweep");
     if (is_sweep && !sweep.isSet())
         throw travel::apps::usageError("sweep needs --sweep KEY=v1,v2,...");
     if (!is_sweep && loo_score.isSet()) throw travel::apps::usageError("--loo-score is for sweep");

@@ -51,6 +51,10 @@ expect_failure_mentioning("--loo-score is for sweep" ${TRAVEL_EVAL} report ${io}
 # merges diagnoses TRAVEL's object stage: not a baseline's, not with the stage off
 expect_failure_mentioning("--method travel or travel-no-ttmf, not 'gpf'" ${TRAVEL_EVAL} merges ${io} --method gpf)
 expect_failure_mentioning("merges diagnoses the object stage" ${TRAVEL_EVAL} merges ${io} --set cluster_objects=false)
+# A flag the command does not use is refused, not ignored
+expect_failure_mentioning("merges runs one --method, not --methods" ${TRAVEL_EVAL} merges ${io} --methods gpf)
+expect_failure_mentioning("--sweep is for sweep" ${TRAVEL_EVAL} merges ${io} --sweep tgf_resolution=2,4)
+expect_failure_mentioning("--method is for sweep and merges" ${TRAVEL_EVAL} report ${io} --method gpf)
 # Unknown subcommand; no scan; missing directory
 expect_failure_mentioning("report" ${TRAVEL_EVAL} frob ${io})
 expect_failure_mentioning("missing the command: report, sweep or merges" ${TRAVEL_EVAL} ${io})
