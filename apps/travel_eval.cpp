@@ -20,6 +20,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -51,12 +52,18 @@ using travel::eval::MethodRun;
 // ---------------------------------------------------------------------------------------------
 // Running one method over the frames, with a progress display
 
+/// Called on the worker that evaluated frame `f`, right after it, with that worker's segmenter
+/// (its pipeline still holds the frame): merges reads the object stage's state there.
+using FrameHook = std::function<void(std::size_t f, const travel::eval::FrameEvaluation& frame,
+                                     const travel::eval::Segmenter& segmenter)>;
+
 // Frames are evaluated on `jobs` workers (one segmenter each, built with the first one and given
 // its state once its mount is settled) and added to the run in frame order: the same run as with
 // one worker.
 MethodRun runMethod(const std::string& method, const travel::Params& params,
                     const std::vector<FrameRef>& frames, const std::string& progress_label,
-                    travel::apps::Verbosity verbosity, unsigned jobs) {
+                    travel::apps::Verbosity verbosity, unsigned jobs,
+                    const FrameHook& on_frame = {}) {
     // -v: one line per frame (its name) instead of the progress line.
     const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
     travel::apps::ProgressLine progress(
@@ -82,6 +89,7 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
             }
             travel::eval::evaluateFrame(frames[f].scan, frames[f].label, *segmenters[w], frame,
                                         frames[f].format);
+            if (on_frame) on_frame(f, frame, *segmenters[w]);
         },
         [&](std::size_t f, const travel::eval::FrameEvaluation& frame) {
             travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
@@ -391,24 +399,31 @@ int run(int argc, char** argv) {
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
         flags.inputs(), labels.getValue(), static_cast<std::size_t>(max_frames.count()),
         flags.scanFormat());
-    travel::apps::createFolder(out);
+    // Created when the outputs are written, after every frame ran: a run that fails on a frame
+    // (or is interrupted) leaves nothing behind.
+    travel::apps::requireCreatableFolder(out);
     const fs::path dir(out);
 
     if (is_merges) {
-        auto segmenter = travel::eval::makeSegmenter(names[0], params);
-        travel::eval::FrameEvaluation frame;
+        // Each frame's parts are read on the worker that segmented it (its pipeline holds the
+        // frame's range image); they are tabulated and written in frame order at the end.
+        std::vector<std::vector<travel::eval::MergedPart>> parts(frames.size());
+        runMethod(names[0], params, frames, names[0], verbosity, jobs.count(),
+                  [&](std::size_t f, const travel::eval::FrameEvaluation& frame,
+                      const travel::eval::Segmenter& segmenter) {
+                      parts[f] = travel::eval::mergedParts(frame.segmentation.cluster_id,
+                                                           frame.ground_truth, frame.cloud,
+                                                           *segmenter.objectPipeline());
+                  });
         travel::eval::MergeTable table;
-        std::ofstream csv = openOut(dir / "merges.csv");
+        std::ostringstream csv;
         for (std::size_t k = 0; k < frames.size(); ++k) {
-            const FrameRef& f = frames[k];
-            travel::eval::evaluateFrame(f.scan, f.label, *segmenter, frame, f.format);
-            const std::vector<travel::eval::MergedPart> parts =
-                travel::eval::mergedParts(frame.segmentation.cluster_id, frame.ground_truth,
-                                          frame.cloud, *segmenter->objectPipeline());
-            table.add(parts);
-            travel::eval::writeMergedPartsCsv(csv, f.name, parts, k == 0);
+            table.add(parts[k]);
+            travel::eval::writeMergedPartsCsv(csv, frames[k].name, parts[k], k == 0);
         }
         const std::string md = table.markdown();
+        travel::apps::createFolder(out);
+        openOut(dir / "merges.csv") << csv.str();
         openOut(dir / "merges.md") << md;
         if (!quiet)
             std::cout << md << "\nWritten: " << (dir / "merges.md").string() << ", "
@@ -420,6 +435,7 @@ int run(int argc, char** argv) {
         for (const std::string& name : names)
             runs.push_back(runMethod(name, params, frames, name, verbosity, jobs.count()));
         const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
+        travel::apps::createFolder(out);
         openOut(dir / "report.md") << md;
         std::ofstream frames_csv = openOut(dir / "frames.csv");
         travel::eval::writeFramesCsv(frames_csv, runs);
@@ -448,6 +464,7 @@ int run(int argc, char** argv) {
                         s.objects.mean_purity, s.use.mean, s.ose.mean);
         std::printf("  ms %.2f + %.2f\n", s.ground_ms, s.objects_ms);
     }
+    travel::apps::createFolder(out);
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
     if (frames.size() >= 2) {

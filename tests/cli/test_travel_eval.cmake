@@ -115,6 +115,33 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
       message(FATAL_ERROR "merges.csv: unexpected row '${row}'")
     endif()
   endforeach()
+
+  # merges on two workers: the same tables and rows as on one.
+  run_ok(${TRAVEL_EVAL} merges -i ${seq} --max-frames 2 -j 2 -o ${WORK_DIR}/merges2)
+  run_ok(${TRAVEL_EVAL} merges -i ${seq} --max-frames 2 -j 1 -o ${WORK_DIR}/merges1)
+  foreach(file merges.md merges.csv)
+    file(MD5 ${WORK_DIR}/merges1/${file} one)
+    file(MD5 ${WORK_DIR}/merges2/${file} two)
+    if(NOT one STREQUAL two)
+      message(FATAL_ERROR "merges -j 2 wrote another ${file} than -j 1")
+    endif()
+  endforeach()
+
+  # A label file of the wrong length on the second frame: an error naming it, and no output at all (no
+  # merges.csv holding the first frame's rows, no empty folder).
+  file(MAKE_DIRECTORY ${WORK_DIR}/cut/velodyne ${WORK_DIR}/cut/labels)
+  file(COPY ${seq}/velodyne/000000.bin ${seq}/velodyne/000001.bin
+       DESTINATION ${WORK_DIR}/cut/velodyne)
+  file(COPY ${seq}/labels/000000.label DESTINATION ${WORK_DIR}/cut/labels)
+  file(WRITE ${WORK_DIR}/cut/labels/000001.label "12345678")  # 2 labels for 124k points
+  foreach(command report merges)
+    expect_failure_mentioning("000001.label" ${TRAVEL_EVAL} ${command} -i ${WORK_DIR}/cut -j 1
+                              -o ${WORK_DIR}/cut_${command})
+    if(EXISTS ${WORK_DIR}/cut_${command})
+      file(GLOB left ${WORK_DIR}/cut_${command}/*)
+      message(FATAL_ERROR "${command}: a run that failed on a frame left ${WORK_DIR}/cut_${command} (${left})")
+    endif()
+  endforeach()
 else()
   message(STATUS "SemanticKITTI frames not found in ${seq}: real-data part skipped")
 endif()
