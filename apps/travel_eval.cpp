@@ -23,6 +23,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -399,6 +400,11 @@ int run(int argc, char** argv) {
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
         flags.inputs(), labels.getValue(), static_cast<std::size_t>(max_frames.count()),
         flags.scanFormat());
+    if (loo_score.isSet() && frames.size() < 2)
+        throw travel::apps::usageError(
+            "--loo-score: the leave-one-out needs two labelled frames "
+            "or more; " +
+            std::to_string(frames.size()) + " found");
     // Created when the outputs are written, after every frame ran: a run that fails on a frame
     // (or is interrupted) leaves nothing behind.
     travel::apps::requireCreatableFolder(out);
@@ -464,11 +470,15 @@ int run(int argc, char** argv) {
                         s.objects.mean_purity, s.use.mean, s.ose.mean);
         std::printf("  ms %.2f + %.2f\n", s.ground_ms, s.objects_ms);
     }
+    // Before anything is written: a score the runs do not have (coverage of a ground-only
+    // method) is an error that leaves no files.
+    std::optional<travel::eval::LeaveOneOut> leave_one_out;
+    if (frames.size() >= 2) leave_one_out = travel::eval::leaveOneOut(rows, score);
     travel::apps::createFolder(out);
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
-    if (frames.size() >= 2) {
-        const travel::eval::LeaveOneOut loo = travel::eval::leaveOneOut(rows, score);
+    if (leave_one_out) {
+        const travel::eval::LeaveOneOut& loo = *leave_one_out;
         std::ofstream loo_csv = openOut(stem + "_loo.csv");
         travel::eval::writeLeaveOneOutCsv(loo_csv, spec, score, loo);
         if (!quiet) {

@@ -245,6 +245,7 @@ TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
         for (int f = 0; f < 3; ++f) {
             rows[v][f].frame = "00/" + std::to_string(f);
             rows[v][f].ground[1].f1 = f1[v][f];
+            rows[v][f].objects = true;
             rows[v][f].coverage = 0.5 + 0.1 * f;  // the same for both values: ties
         }
     const eval::LeaveOneOut loo = eval::leaveOneOut(rows, eval::SweepScore::GroundF1B);
@@ -267,6 +268,26 @@ TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
     EXPECT_THROW(eval::parseSweepScore("f2"), ConfigError);
     EXPECT_THROW(eval::leaveOneOut({{rows[0][0]}}, eval::SweepScore::GroundF1B),
                  std::invalid_argument);
+}
+
+// A method that never clustered (travel-eval sweep --method tgs --loo-score coverage) has no
+// coverage or purity to choose on: an error, not folds of zeros choosing the first value.
+TEST(LeaveOneOut, CoverageOrPurityOfAMethodThatNeverClusteredIsAnError) {
+    std::vector<std::vector<eval::FrameRow>> rows(2, std::vector<eval::FrameRow>(2));
+    for (auto& value : rows)
+        for (eval::FrameRow& row : value) row.ground[1].f1 = 98.0;  // objects false
+    for (const eval::SweepScore score : {eval::SweepScore::Coverage, eval::SweepScore::Purity}) {
+        try {
+            eval::leaveOneOut(rows, score);
+            FAIL() << "no error for " << eval::sweepScoreName(score);
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("no frame was clustered"), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_NO_THROW(eval::leaveOneOut(rows, eval::SweepScore::GroundF1B));
+    rows[1][0].objects = true;  // clustered at one value: scored (the others' 0 is honest)
+    EXPECT_NO_THROW(eval::leaveOneOut(rows, eval::SweepScore::Coverage));
 }
 
 }  // namespace

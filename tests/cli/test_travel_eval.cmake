@@ -101,6 +101,17 @@ if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
     message(FATAL_ERROR "sweep_tgf_resolution_loo.csv has ${n} lines, expected 5:\n${rows}")
   endif()
 
+  # Leave-one-out on coverage of a ground-only method: an error, and no sweep files of it;
+  # --loo-score where there is no leave-one-out (one frame): a usage error.
+  expect_failure_mentioning("choose f1b or f1a" ${TRAVEL_EVAL} sweep -i ${seq} --max-frames 2
+                            --method tgs --sweep tgf_resolution=4,8 --loo-score coverage
+                            -o ${WORK_DIR}/sweep_tgs)
+  if(EXISTS ${WORK_DIR}/sweep_tgs)
+    message(FATAL_ERROR "sweep --loo-score coverage of tgs left ${WORK_DIR}/sweep_tgs")
+  endif()
+  expect_failure_mentioning("two labelled frames or more; 1 found" ${TRAVEL_EVAL} sweep ${real}
+                            --sweep tgf_resolution=4,8 --loo-score f1a -o ${WORK_DIR}/sweep_one)
+
   # merges: the three tables, and one CSV row per part whose rule is one of the six names.
   run_ok(${TRAVEL_EVAL} merges ${real} -o ${WORK_DIR}/merges)
   expect_file_contains(${WORK_DIR}/merges/merges.md

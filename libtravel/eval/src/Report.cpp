@@ -299,6 +299,18 @@ LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepSco
     if (frames < 2) throw std::invalid_argument("leaveOneOut: needs two frames or more");
     for (const auto& r : rows)
         if (r.size() != frames) throw std::invalid_argument("leaveOneOut: frame counts differ");
+    // Coverage and purity exist only where the method clustered (FrameRow::objects; the sweep
+    // CSV leaves them empty otherwise): a fold of zeros would choose the first value on nothing.
+    if (score == SweepScore::Coverage || score == SweepScore::Purity) {
+        bool clustered = false;
+        for (const auto& r : rows)
+            for (const FrameRow& row : r) clustered = clustered || row.objects;
+        if (!clustered)
+            throw std::invalid_argument(
+                std::string("leave-one-out on ") + sweepScoreName(score) +
+                ": no frame was clustered at any value (a ground-only method, or cluster_objects "
+                "false): choose f1b or f1a");
+    }
     // Mean score of value v over every frame but `skip` (skip = frames: none skipped).
     const auto mean_without = [&](std::size_t v, std::size_t skip) {
         double sum = 0;

@@ -110,7 +110,8 @@ struct LeaveOneOut {
     double in_sample_mean = 0;  ///< its mean score over all frames
 };
 /// `rows[v]` are the frame rows of value v (MethodRun::rows, same frames in the same order for
-/// every value). Needs two frames or more; throws std::invalid_argument otherwise.
+/// every value). Needs two frames or more, and for coverage or purity a clustered frame
+/// (FrameRow::objects); throws std::invalid_argument otherwise.
 LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score);
 
 /// sweep_KEY_loo.csv: one row per fold, then the in-sample row.
