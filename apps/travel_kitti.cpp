@@ -401,18 +401,25 @@ int run(int argc, char** argv) {
                         unlabelled_frames);
         const travel::eval::EvaluationSummary sum = totals.summary();
         for (int p = 0; p < 2; ++p)
-            std::printf(
-                "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
-                "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
-                travel::protocolName(travel::eval::kGroundProtocols[p]), sum.f1[p].n,
-                sum.precision[p].mean, sum.precision[p].std, sum.recall[p].mean, sum.recall[p].std,
-                sum.f1[p].mean, sum.f1[p].std, sum.accuracy[p].mean, sum.accuracy[p].std);
+            if (sum.f1[p].n == 0)  // no value, not a score of 0
+                std::printf("Ground, protocol %-26s not scored: no frame holds ground truth\n",
+                            travel::protocolName(travel::eval::kGroundProtocols[p]));
+            else
+                std::printf(
+                    "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
+                    "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
+                    travel::protocolName(travel::eval::kGroundProtocols[p]), sum.f1[p].n,
+                    sum.precision[p].mean, sum.precision[p].std, sum.recall[p].mean,
+                    sum.recall[p].std, sum.f1[p].mean, sum.f1[p].std, sum.accuracy[p].mean,
+                    sum.accuracy[p].std);
         const bool clusters_objects =
             std::any_of(stages[kObjectsStage].ms.begin(), stages[kObjectsStage].ms.end(),
                         [](double ms) { return ms > 0.0; });
         if (!clusters_objects) {
             std::printf("Objects: not evaluated (%s segments ground only)\n",
                         method.getValue().c_str());
+        } else if (sum.objects.frames == 0) {
+            std::printf("Objects: not evaluated (no frame holds ground truth)\n");
         } else {
             const travel::ObjectSummary& o = sum.objects;
             std::printf(

@@ -290,5 +290,17 @@ TEST(LeaveOneOut, CoverageOrPurityOfAMethodThatNeverClusteredIsAnError) {
     EXPECT_NO_THROW(eval::leaveOneOut(rows, eval::SweepScore::Coverage));
 }
 
+// travel-eval report on frames whose labels hold no ground truth (all unlabeled): no value ('-')
+// rather than P / R / F1 of 0.00, and a line saying how many frames were scored.
+TEST(ReportMarkdown, AProtocolWithNoScoredFrameHasNoValues) {
+    std::vector<eval::MethodRun> runs(1);
+    runs[0].method = "tgs";  // summary of no scored frame: every MeanStd has n = 0
+    const std::vector<eval::FrameRef> frames = {{"s.bin", "s.label", "00/000000"}};
+    const std::string md = eval::reportMarkdown(runs, frames, "preset none");
+    EXPECT_NE(md.find("| tgs | - | - | - | - | - | - | - |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("0.00"), std::string::npos) << md;
+    EXPECT_NE(md.find("Scored frames (of 1): tgs 0"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace travel::eval

@@ -150,14 +150,26 @@ std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector
         md << "\n## Ground, protocol " << protocolName(kGroundProtocols[p]) << "\n\n"
            << "| method | P | R | F1 μ | F1 σ | accuracy μ | accuracy σ | ms |\n"
            << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        std::string partly;  // the methods whose means leave frames out
         for (std::size_t m = 0; m < runs.size(); ++m) {
             const EvaluationSummary& s = runs[m].summary;
-            md << "| " << runs[m].method << " | " << format("%.2f", s.precision[p].mean) << " | "
-               << format("%.2f", s.recall[p].mean) << " | " << format("%.2f", s.f1[p].mean) << " | "
-               << format("%.2f", s.f1[p].std) << " | " << format("%.2f", s.accuracy[p].mean)
-               << " | " << format("%.2f", s.accuracy[p].std) << " | " << format("%.1f", s.ground_ms)
-               << " |\n";
+            // No frame with ground truth under this protocol: no value, not a score of 0.
+            const bool none = s.f1[p].n == 0;
+            const auto cell = [&](const char* fmt, double v) {
+                return none ? "-" : format(fmt, v);
+            };
+            md << "| " << runs[m].method << " | " << cell("%.2f", s.precision[p].mean) << " | "
+               << cell("%.2f", s.recall[p].mean) << " | " << cell("%.2f", s.f1[p].mean) << " | "
+               << cell("%.2f", s.f1[p].std) << " | " << cell("%.2f", s.accuracy[p].mean) << " | "
+               << cell("%.2f", s.accuracy[p].std) << " | "
+               << (s.f1[0].n + s.f1[1].n == 0 ? "-" : format("%.1f", s.ground_ms)) << " |\n";
+            if (s.f1[p].n < frames.size())
+                partly +=
+                    (partly.empty() ? "" : ", ") + runs[m].method + " " + std::to_string(s.f1[p].n);
         }
+        if (!partly.empty())
+            md << "\nScored frames (of " << frames.size() << "): " << partly
+               << "; the others hold no ground truth under this protocol ('-': none does).\n";
     }
     md << "\n## Objects\n\n"
        << "| method | USE μ | USE σ | OSE μ | OSE σ | coverage | purity | split | merged | ms |\n"
