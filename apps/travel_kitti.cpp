@@ -215,6 +215,9 @@ int run(int argc, char** argv) {
                                      " poses for " + std::to_string(files.size()) + " scans");
         tracking.tracker = std::make_unique<travel::FrameTracker>(configuration.tracking);
     }
+    // A file output given as a folder: refused now, not after the run.
+    travel::apps::requireFileName("--csv", csv.getValue());
+    travel::apps::requireFileName("--track-png", track_png.getValue());
     // No output may be an input: the scans, the ground truth (-o its folder: the predicted
     // labels would replace it), the sequence's poses (--track writes OUT/poses.txt).
     std::vector<travel::apps::NamedPath> inputs = {{"the labels folder", labels_dir}};

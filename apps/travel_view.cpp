@@ -89,6 +89,7 @@ Options parseCommandLine(int argc, char** argv) {
     o.scan = scans.files[frame.getValue()];
     o.out = flags.outputPath();
     travel_mrpt::requirePictureName(o.out);
+    travel::apps::requireFileName("-o", o.out);
     travel::apps::checkOutputsApart({{"-i", o.scan}}, {{"-o", o.out}});
     o.quiet = flags.quiet();
     for (const std::string& m : travel::splitList(methods.getValue(), ','))
