@@ -62,6 +62,18 @@ expect_failure_mentioning("no scans" ${TRAVEL_EVAL} report ${io})
 expect_failure_mentioning("no_such_dir" ${TRAVEL_EVAL} report -i ${WORK_DIR}/no_such_dir
                           --labels ${WORK_DIR}/labels -o ${WORK_DIR}/out)
 
+# Two inputs, the second without any label of its scans (an empty labels folder): an error naming
+# it, not a report of the first alone.
+file(MAKE_DIRECTORY ${WORK_DIR}/a/velodyne ${WORK_DIR}/a/labels ${WORK_DIR}/b/velodyne
+     ${WORK_DIR}/b/labels)
+foreach(side a b)
+  file(WRITE ${WORK_DIR}/${side}/velodyne/000000.bin "0123456789abcdef")  # one KITTI point
+endforeach()
+file(WRITE ${WORK_DIR}/a/labels/000000.label "0000")
+expect_failure_mentioning("no labelled frames in '${WORK_DIR}/b': none of its 1 scans"
+                          ${TRAVEL_EVAL} report -i ${WORK_DIR}/a -i ${WORK_DIR}/b --methods tgs
+                          -o ${WORK_DIR}/two)
+
 set(seq ${DATA_DIR}/semantickitti/sequences/00)
 if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
   set(real -i ${seq} --max-frames 1)  # labels/ found beside velodyne/

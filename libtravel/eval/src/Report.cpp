@@ -65,7 +65,6 @@ std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
             "give one labels folder per input (paired by order): " + std::to_string(inputs.size()) +
             " inputs, " + std::to_string(labels.size()) + " labels folders");
     std::vector<FrameRef> frames;
-    std::vector<std::string> labels_dirs;
     for (std::size_t s = 0; s < inputs.size(); ++s) {
         const ScanList scans = listScans(inputs[s], format);
         const std::string labels_dir = labels.empty() ? scans.labels_dir : labels[s];
@@ -74,20 +73,20 @@ std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
                              ": no labels folder (a KITTI sequence folder has labels/ "
                              "beside velodyne/; else give --labels DIR)");
         requireDirectory(labels_dir, "labels directory");
-        labels_dirs.push_back(labels_dir);
         const std::string seq = sequenceName(scans.scans_dir);
+        const std::size_t before = frames.size();
         for (const std::string& scan : scans.files) {
             const std::string stem = fs::path(scan).stem().string();
             const fs::path label = fs::path(labels_dir) / (stem + ".label");
             if (fs::exists(label))
                 frames.push_back({scan, label.string(), seq + "/" + stem, format});
         }
-    }
-    if (frames.empty()) {
-        std::string dirs;
-        for (std::size_t s = 0; s < inputs.size(); ++s)
-            dirs += (s ? ", " : "") + inputs[s] + " with " + labels_dirs[s];
-        throw InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
+        // An input that adds no frame is a mistake (a wrong --labels, labels not yet
+        // downloaded), not a sequence to leave out of the report silently.
+        if (frames.size() == before)
+            throw InputError("no labelled frames in " + inQuotes(inputs[s]) + ": none of its " +
+                             std::to_string(scans.files.size()) + " scans has a <stem>.label in " +
+                             inQuotes(labels_dir));
     }
     if (max_frames > 0 && frames.size() > max_frames) frames.resize(max_frames);
     return frames;

@@ -27,7 +27,7 @@ std::string sequenceName(const std::string& scans_dir);
 /// The scans that have a label file, over all inputs in order (each as listScans() reads it: a
 /// scan, a folder of scans or a KITTI sequence folder), at most max_frames of them (when > 0).
 /// `labels` is empty (each input's own labels/ folder) or has one labels folder per input.
-/// Throws InputError for a missing labels folder or when no scan has a label.
+/// Throws InputError for a missing labels folder or an input none of whose scans has a label.
 std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
                                      const std::vector<std::string>& labels, std::size_t max_frames,
                                      ScanFormat format = ScanFormat::Auto);
