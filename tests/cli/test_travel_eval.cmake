@@ -39,7 +39,10 @@ set(io -i ${WORK_DIR}/scans --labels ${WORK_DIR}/labels -o ${WORK_DIR}/out)
 # Configuration errors come before any file is read, so these need no data.
 # Unknown method: the message lists the valid ones
 expect_failure_mentioning("gpf+slr" ${TRAVEL_EVAL} report ${io} --methods travel,nope)
-expect_failure_mentioning("--methods names no method" ${TRAVEL_EVAL} report ${io} --methods=)
+expect_failure_mentioning("--methods: empty value" ${TRAVEL_EVAL} report ${io} --methods=)
+# An empty number is no number: not --max-frames' default (all frames), nor -j's
+expect_failure_mentioning("--max-frames: empty value" ${TRAVEL_EVAL} report ${io} --max-frames=)
+expect_failure_mentioning("-j/--jobs: empty value" ${TRAVEL_EVAL} report ${io} -j " ")
 # Sweep spec without '=', without values, with an unknown key, with a value out of range
 expect_failure_mentioning("foo" ${TRAVEL_EVAL} sweep ${io} --sweep foo)
 expect_failure_mentioning("tgf_resolution=" ${TRAVEL_EVAL} sweep ${io} --sweep tgf_resolution=)
