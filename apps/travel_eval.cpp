@@ -24,6 +24,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -400,6 +401,18 @@ int run(int argc, char** argv) {
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
         flags.inputs(), labels.getValue(), static_cast<std::size_t>(max_frames.count()),
         flags.scanFormat());
+    // No output in an input: -o is not a sequence, scans or ground-truth labels folder read here
+    // (docs/cli.md), however spelt.
+    std::vector<travel::apps::NamedPath> read;
+    for (const std::string& input : flags.inputs()) read.push_back({"-i", input});
+    std::set<std::string> folders;
+    for (const FrameRef& f : frames) {
+        const std::string scans = fs::path(f.scan).parent_path().string();
+        const std::string truth = fs::path(f.label).parent_path().string();
+        if (folders.insert(scans).second) read.push_back({"the scans folder", scans});
+        if (folders.insert(truth).second) read.push_back({"the labels folder", truth});
+    }
+    travel::apps::checkOutputsApart(read, {{"-o", out}});
     if (loo_score.isSet() && frames.size() < 2)
         throw travel::apps::usageError(
             "--loo-score: the leave-one-out needs two labelled frames "

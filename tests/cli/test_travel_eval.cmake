@@ -76,6 +76,16 @@ file(WRITE ${WORK_DIR}/a/labels/000000.label "0000")
 expect_failure_mentioning("no labelled frames in '${WORK_DIR}/b': none of its 1 scans"
                           ${TRAVEL_EVAL} report -i ${WORK_DIR}/a -i ${WORK_DIR}/b --methods tgs
                           -o ${WORK_DIR}/two)
+# -o in what is read (the ground-truth labels, the scans, the sequence), however spelt: refused
+# before anything is written.
+foreach(o a/labels a/./velodyne/../labels/ a/velodyne a)
+  expect_failure_mentioning("-o ${WORK_DIR}/${o}: the same path as" ${TRAVEL_EVAL} report
+                            -i ${WORK_DIR}/a --methods tgs -o ${WORK_DIR}/${o})
+endforeach()
+file(GLOB written ${WORK_DIR}/a/*.md ${WORK_DIR}/a/*.csv ${WORK_DIR}/a/*/*.md ${WORK_DIR}/a/*/*.csv)
+if(written)
+  message(FATAL_ERROR "a refused -o was written: ${written}")
+endif()
 
 set(seq ${DATA_DIR}/semantickitti/sequences/00)
 if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)
