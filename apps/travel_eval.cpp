@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -40,6 +39,7 @@
 #include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
+#include "travel/io/BinaryFile.hpp"
 
 namespace fs = std::filesystem;
 using mrpt::img::CImage;
@@ -107,10 +107,9 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     return run;
 }
 
-std::ofstream openOut(const fs::path& path) {
-    std::ofstream out(path);
-    if (!out) throw travel::InputError("cannot write " + path.string());
-    return out;
+/// The whole text or an error naming the file (writeFileBytes: no half a file is left).
+void writeText(const fs::path& path, const std::string& text) {
+    travel::writeFileBytes(path.string(), text);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -251,8 +250,9 @@ void savePng(const CImage& img, const fs::path& path) {
 void writeSweep(const fs::path& dir, const std::string& method, const travel::eval::SweepSpec& spec,
                 const std::vector<EvaluationSummary>& sums, std::size_t frames) {
     const std::string stem = "sweep_" + spec.key;
-    std::ofstream csv = openOut(dir / (stem + ".csv"));
+    std::ostringstream csv;
     travel::eval::writeSweepCsv(csv, spec, sums, frames);
+    writeText(dir / (stem + ".csv"), csv.str());
 
     const std::vector<double> xs = travel::eval::sweepPositions(spec.values);
     const std::string what = method + ", " + std::to_string(frames) + " frames";
@@ -442,8 +442,8 @@ int run(int argc, char** argv) {
         }
         const std::string md = table.markdown();
         travel::apps::createFolder(out);
-        openOut(dir / "merges.csv") << csv.str();
-        openOut(dir / "merges.md") << md;
+        writeText(dir / "merges.csv", csv.str());
+        writeText(dir / "merges.md", md);
         if (!quiet)
             std::cout << md << "\nWritten: " << (dir / "merges.md").string() << ", "
                       << (dir / "merges.csv").string() << "\n";
@@ -455,9 +455,10 @@ int run(int argc, char** argv) {
             runs.push_back(runMethod(name, params, frames, name, verbosity, jobs.count()));
         const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
         travel::apps::createFolder(out);
-        openOut(dir / "report.md") << md;
-        std::ofstream frames_csv = openOut(dir / "frames.csv");
+        writeText(dir / "report.md", md);
+        std::ostringstream frames_csv;
         travel::eval::writeFramesCsv(frames_csv, runs);
+        writeText(dir / "frames.csv", frames_csv.str());
         if (!quiet)
             std::cout << md << "\nWritten: " << (dir / "report.md").string() << ", "
                       << (dir / "frames.csv").string() << "\n";
@@ -492,8 +493,9 @@ int run(int argc, char** argv) {
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
     if (leave_one_out) {
         const travel::eval::LeaveOneOut& loo = *leave_one_out;
-        std::ofstream loo_csv = openOut(stem + "_loo.csv");
+        std::ostringstream loo_csv;
         travel::eval::writeLeaveOneOutCsv(loo_csv, spec, score, loo);
+        writeText(stem + "_loo.csv", loo_csv.str());
         if (!quiet) {
             std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others):\n",
                         frames.size(), travel::eval::sweepScoreName(score));

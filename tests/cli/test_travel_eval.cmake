@@ -86,6 +86,14 @@ file(GLOB written ${WORK_DIR}/a/*.md ${WORK_DIR}/a/*.csv ${WORK_DIR}/a/*/*.md ${
 if(written)
   message(FATAL_ERROR "a refused -o was written: ${written}")
 endif()
+# A file that cannot be written whole (a 1-block file size limit, as a full disk): an error
+# naming it and exit 1, not a cut report.md and exit 0.
+execute_process(COMMAND sh -c "ulimit -f 1; trap '' XFSZ; exec \"$0\" \"$@\"" ${TRAVEL_EVAL}
+                        report -i ${WORK_DIR}/a --methods tgs -o ${WORK_DIR}/limited -q
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "cannot write '[^']*report.md'" OR EXISTS ${WORK_DIR}/limited/report.md)
+  message(FATAL_ERROR "report.md over the file size limit (${rc}): ${err}")
+endif()
 
 set(seq ${DATA_DIR}/semantickitti/sequences/00)
 if(EXISTS ${seq}/velodyne/000000.bin AND EXISTS ${seq}/labels/000000.label)

@@ -46,6 +46,14 @@ if(EXISTS ${seq}/velodyne/000000.bin)
   if(NOT rc EQUAL 0 OR not_scored EQUAL -1 OR NOT zero_f1 EQUAL -1)
     message(FATAL_ERROR "labels without ground truth (${rc}):\n${out}${err}")
   endif()
+  # A .label that cannot be written whole (a file size limit, as a full disk): an error naming
+  # it, and no cut .label left under its name.
+  execute_process(COMMAND sh -c "ulimit -f 64; trap '' XFSZ; exec \"$0\" \"$@\"" ${TRAVEL_KITTI}
+                          -i ${WORK_DIR}/scans -o ${WORK_DIR}/limited -q
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(rc EQUAL 0 OR NOT err MATCHES "000000.label" OR EXISTS ${WORK_DIR}/limited/000000.label)
+    message(FATAL_ERROR "a .label over the file size limit (${rc}): ${err}")
+  endif()
   file(WRITE ${WORK_DIR}/labels/000000.label "12345678")
   expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
 else()
