@@ -388,6 +388,16 @@ int run(int argc, char** argv) {
     const double run_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     progress.finish();
+    // The CSV and poses.txt streams are written frame by frame: a write that failed (a full
+    // disk) shows in the stream's state once it is closed, and is an error, not a lost row.
+    const auto close_checked = [](std::ofstream& stream, const std::string& path) {
+        if (!stream.is_open()) return;
+        stream.close();
+        if (stream.fail())
+            throw travel::InputError("cannot write " + path + ": " + std::strerror(errno));
+    };
+    close_checked(csv_out, csv.getValue());
+    close_checked(tracking.poses, (fs::path(out) / "poses.txt").string());
     if (track_png.isSet()) {
         travel::viz::TrackPictureOptions picture;
         travel::viz::writePng(travel::viz::renderTracks(tracking.picture, picture),

@@ -54,6 +54,11 @@ if(EXISTS ${seq}/velodyne/000000.bin)
   if(rc EQUAL 0 OR NOT err MATCHES "000000.label" OR EXISTS ${WORK_DIR}/limited/000000.label)
     message(FATAL_ERROR "a .label over the file size limit (${rc}): ${err}")
   endif()
+  # A CSV whose rows cannot be written (a full disk: Linux's /dev/full) is an error, not exit 0.
+  if(EXISTS /dev/full)
+    expect_failure_mentioning("cannot write /dev/full" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans
+                              -o ${WORK_DIR}/full -q --csv /dev/full)
+  endif()
   file(WRITE ${WORK_DIR}/labels/000000.label "12345678")
   expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
 else()
