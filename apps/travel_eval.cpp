@@ -487,7 +487,11 @@ int run(int argc, char** argv) {
     // Before anything is written: a score the runs do not have (coverage of a ground-only
     // method) is an error that leaves no files.
     std::optional<travel::eval::LeaveOneOut> leave_one_out;
-    if (frames.size() >= 2) leave_one_out = travel::eval::leaveOneOut(rows, score);
+    // Without --loo-score, a sweep whose frames leave fewer than two scored (labels without
+    // ground truth) has no leave-one-out, as one of a single frame; with it, an error.
+    if (frames.size() >= 2 &&
+        (loo_score.isSet() || travel::eval::scoredFrames(rows, score).size() >= 2))
+        leave_one_out = travel::eval::leaveOneOut(rows, score);
     travel::apps::createFolder(out);
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
@@ -497,8 +501,12 @@ int run(int argc, char** argv) {
         travel::eval::writeLeaveOneOutCsv(loo_csv, spec, score, loo);
         writeText(stem + "_loo.csv", loo_csv.str());
         if (!quiet) {
-            std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others):\n",
-                        frames.size(), travel::eval::sweepScoreName(score));
+            std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others)",
+                        loo.folds.size(), travel::eval::sweepScoreName(score));
+            if (loo.folds.size() < frames.size())
+                std::printf("; %zu frames without a score left out",
+                            frames.size() - loo.folds.size());
+            std::printf(":\n");
             for (const auto& fold : loo.folds)
                 std::printf("  held out %-16s chosen %s=%-8s held-out %s %.4g\n",
                             fold.frame.c_str(), spec.key.c_str(), spec.values[fold.chosen].c_str(),
@@ -510,7 +518,7 @@ int run(int argc, char** argv) {
     if (!quiet)
         std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png%s\n", stem.c_str(),
                     stem.c_str(), stem.c_str(), stem.c_str(),
-                    frames.size() >= 2 ? (", " + stem + "_loo.csv").c_str() : "");
+                    leave_one_out ? (", " + stem + "_loo.csv").c_str() : "");
     return 0;
 }
 

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -304,6 +305,30 @@ double sweepScore(const FrameRow& row, SweepScore score) {
     return 0;
 }
 
+std::vector<std::size_t> scoredFrames(const std::vector<std::vector<FrameRow>>& rows,
+                                      SweepScore score) {
+    // A frame has a score when it has something to score at every value: ground truth under the
+    // protocol, or thing instances (a frame without any has coverage and purity 0 by
+    // convention). The others are left out, not averaged in as zeros.
+    const auto scored = [&](const FrameRow& row) {
+        switch (score) {
+            case SweepScore::GroundF1B:
+                return row.ground[1].points > 0;
+            case SweepScore::GroundF1A:
+                return row.ground[0].points > 0;
+            default:
+                return !row.objects || row.instances > 0;  // unclustered: 0, a true score
+        }
+    };
+    std::vector<std::size_t> kept;
+    for (std::size_t f = 0; !rows.empty() && f < rows[0].size(); ++f)
+        if (std::all_of(rows.begin(), rows.end(), [&](const std::vector<FrameRow>& r) {
+                return f < r.size() && scored(r[f]);
+            }))
+            kept.push_back(f);
+    return kept;
+}
+
 LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score) {
     if (rows.empty()) throw std::invalid_argument("leaveOneOut: no values");
     const std::size_t frames = rows[0].size();
@@ -312,7 +337,8 @@ LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepSco
         if (r.size() != frames) throw std::invalid_argument("leaveOneOut: frame counts differ");
     // Coverage and purity exist only where the method clustered (FrameRow::objects; the sweep
     // CSV leaves them empty otherwise): a fold of zeros would choose the first value on nothing.
-    if (score == SweepScore::Coverage || score == SweepScore::Purity) {
+    const bool objects = score == SweepScore::Coverage || score == SweepScore::Purity;
+    if (objects) {
         bool clustered = false;
         for (const auto& r : rows)
             for (const FrameRow& row : r) clustered = clustered || row.objects;
@@ -322,12 +348,20 @@ LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepSco
                 ": no frame was clustered at any value (a ground-only method, or cluster_objects "
                 "false): choose f1b or f1a");
     }
-    // Mean score of value v over every frame but `skip` (skip = frames: none skipped).
+    const std::vector<std::size_t> kept = scoredFrames(rows, score);
+    if (kept.size() < 2)
+        throw std::invalid_argument(
+            std::string("leave-one-out on ") + sweepScoreName(score) + ": " +
+            std::to_string(kept.size()) + " of " + std::to_string(frames) +
+            " frames have a score at every value (" +
+            (objects ? "thing instances" : "ground truth under the protocol") + "); it needs two");
+    // Mean score of value v over every kept frame but `skip` (skip = frames: none skipped).
     const auto mean_without = [&](std::size_t v, std::size_t skip) {
         double sum = 0;
-        for (std::size_t f = 0; f < frames; ++f)
-            if (f != skip) sum += sweepScore(rows[v][f], score);
-        return sum / double(skip < frames ? frames - 1 : frames);
+        std::size_t n = 0;
+        for (const std::size_t f : kept)
+            if (f != skip) sum += sweepScore(rows[v][f], score), ++n;
+        return sum / double(n);
     };
     const auto best_without = [&](std::size_t skip) {
         std::size_t best = 0;
@@ -336,12 +370,12 @@ LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepSco
         return best;
     };
     LeaveOneOut loo;
-    for (std::size_t f = 0; f < frames; ++f) {
+    for (const std::size_t f : kept) {
         LeaveOneOut::Fold fold;
         fold.frame = rows[0][f].frame;
         fold.chosen = best_without(f);
         fold.held_out = sweepScore(rows[fold.chosen][f], score);
-        loo.held_out_mean += fold.held_out / double(frames);
+        loo.held_out_mean += fold.held_out / double(kept.size());
         loo.folds.push_back(fold);
     }
     loo.in_sample = best_without(frames);
