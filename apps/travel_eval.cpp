@@ -477,8 +477,12 @@ int run(int argc, char** argv) {
         rows.push_back(run.rows);
         const EvaluationSummary& s = sums.back();
         if (quiet) continue;
-        std::printf("%s=%-8s B F1 %6.2f  A F1 %6.2f", spec.key.c_str(), value.c_str(), s.f1[1].mean,
-                    s.f1[0].mean);
+        std::printf("%s=%-8s", spec.key.c_str(), value.c_str());
+        for (const int p : {1, 0})  // "-": no frame with ground truth under the protocol
+            if (s.f1[p].n)
+                std::printf("%s F1 %6.2f", p ? " B" : "  A", s.f1[p].mean);
+            else
+                std::printf("%s F1      -", p ? " B" : "  A");
         if (s.clusters)
             std::printf("  coverage %.3f purity %.3f  USE %6.2f OSE %6.2f", s.objects.mean_coverage,
                         s.objects.mean_purity, s.use.mean, s.ose.mean);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "travel/Errors.hpp"
@@ -340,6 +341,10 @@ TEST(ReportMarkdown, AProtocolWithNoScoredFrameHasNoValues) {
     EXPECT_NE(md.find("| tgs | - | - | - | - | - | - | - |"), std::string::npos) << md;
     EXPECT_EQ(md.find("0.00"), std::string::npos) << md;
     EXPECT_NE(md.find("Scored frames (of 1): tgs 0"), std::string::npos) << md;
+    // The sweep's CSV: empty cells, as frames.csv.
+    std::ostringstream csv;
+    eval::writeSweepCsv(csv, {"tgf_resolution", {"4"}}, {runs[0].summary}, 1);
+    EXPECT_NE(csv.str().find("\n4,1,,,,,,,,,,,0,0\n"), std::string::npos) << csv.str();
 }
 
 }  // namespace

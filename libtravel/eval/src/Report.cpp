@@ -257,9 +257,17 @@ void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
            "ground_ms_median,objects_ms_median\n";
     for (std::size_t i = 0; i < sums.size(); ++i) {
         const EvaluationSummary& s = sums[i];
-        csv << spec.values[i] << ',' << frames << ',' << s.precision[1].mean << ','
-            << s.recall[1].mean << ',' << s.f1[1].mean << ',' << s.f1[1].std << ',' << s.f1[0].mean
-            << ',' << s.f1[0].std;
+        // Empty cells, not zeros, where no frame had ground truth under the protocol.
+        csv << spec.values[i] << ',' << frames;
+        if (s.f1[1].n)
+            csv << ',' << s.precision[1].mean << ',' << s.recall[1].mean << ',' << s.f1[1].mean
+                << ',' << s.f1[1].std;
+        else
+            csv << ",,,,";
+        if (s.f1[0].n)
+            csv << ',' << s.f1[0].mean << ',' << s.f1[0].std;
+        else
+            csv << ",,";
         if (s.clusters)
             csv << ',' << s.objects.mean_coverage << ',' << s.objects.mean_purity << ','
                 << s.use.mean << ',' << s.ose.mean;
