@@ -110,6 +110,12 @@ class AppOutput : public TCLAP::StdOutput {
     bool failed_ = false;
 };
 
+/// A command-line mistake found while or after parsing (a missing or contradictory flag): runMain()
+/// prints it with the --help hint.
+inline TCLAP::CmdLineParseException usageError(const std::string& message) {
+    return TCLAP::CmdLineParseException(message);
+}
+
 /// An app's command line: TCLAP's CmdLine with the project version and AppOutput. Declare the
 /// flags on cmd, then parse().
 class CommandLine {
@@ -153,6 +159,20 @@ class CommandLine {
                     break;
                 }
         }
+        // An empty value ("-o ''", "--max-frames=", -o "$UNSET") is a usage error: TCLAP
+        // leaves a number at its default and an empty -o would write into the current folder.
+        for (std::size_t i = 1; i + 1 < args.size(); ++i) {
+            if (args[i] == "--") break;
+            for (const TCLAP::Arg* arg : cmd.getArgList()) {
+                const bool named = args[i] == "--" + arg->getName() ||
+                                   (!arg->getFlag().empty() && args[i] == "-" + arg->getFlag());
+                if (!arg->isValueRequired() || !named) continue;
+                if (args[i + 1].find_first_not_of(" \t") == std::string::npos)
+                    throw usageError(flagName(*arg) + ": empty value");
+                ++i;  // the value, whatever it looks like
+                break;
+            }
+        }
         std::vector<const char*> split(args.size());
         for (std::size_t i = 0; i < args.size(); ++i) split[i] = args[i].c_str();
         if (!cmd.parse(static_cast<int>(split.size()), split.data()))
@@ -169,11 +189,5 @@ class CommandLine {
   public:
     TCLAP::CmdLine cmd;
 };
-
-/// A command-line mistake found after parsing (a missing or contradictory flag): runMain()
-/// prints it with the --help hint.
-inline TCLAP::CmdLineParseException usageError(const std::string& message) {
-    return TCLAP::CmdLineParseException(message);
-}
 
 }  // namespace travel::apps

@@ -19,9 +19,11 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,6 +39,7 @@
 #include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
+#include "travel/io/BinaryFile.hpp"
 
 namespace fs = std::filesystem;
 using mrpt::img::CImage;
@@ -51,12 +54,18 @@ using travel::eval::MethodRun;
 // ---------------------------------------------------------------------------------------------
 // Running one method over the frames, with a progress display
 
+/// Called on the worker that evaluated frame `f`, right after it, with that worker's segmenter
+/// (its pipeline still holds the frame): merges reads the object stage's state there.
+using FrameHook = std::function<void(std::size_t f, const travel::eval::FrameEvaluation& frame,
+                                     const travel::eval::Segmenter& segmenter)>;
+
 // Frames are evaluated on `jobs` workers (one segmenter each, built with the first one and given
 // its state once its mount is settled) and added to the run in frame order: the same run as with
 // one worker.
 MethodRun runMethod(const std::string& method, const travel::Params& params,
                     const std::vector<FrameRef>& frames, const std::string& progress_label,
-                    travel::apps::Verbosity verbosity, unsigned jobs) {
+                    travel::apps::Verbosity verbosity, unsigned jobs,
+                    const FrameHook& on_frame = {}) {
     // -v: one line per frame (its name) instead of the progress line.
     const bool per_frame_lines = verbosity == travel::apps::Verbosity::Verbose;
     travel::apps::ProgressLine progress(
@@ -82,6 +91,7 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
             }
             travel::eval::evaluateFrame(frames[f].scan, frames[f].label, *segmenters[w], frame,
                                         frames[f].format);
+            if (on_frame) on_frame(f, frame, *segmenters[w]);
         },
         [&](std::size_t f, const travel::eval::FrameEvaluation& frame) {
             travel::apps::throwIfInterrupted();  // nothing is written before all frames ran
@@ -97,10 +107,9 @@ MethodRun runMethod(const std::string& method, const travel::Params& params,
     return run;
 }
 
-std::ofstream openOut(const fs::path& path) {
-    std::ofstream out(path);
-    if (!out) throw travel::InputError("cannot write " + path.string());
-    return out;
+/// The whole text or an error naming the file (writeFileBytes: no half a file is left).
+void writeText(const fs::path& path, const std::string& text) {
+    travel::writeFileBytes(path.string(), text);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -241,8 +250,9 @@ void savePng(const CImage& img, const fs::path& path) {
 void writeSweep(const fs::path& dir, const std::string& method, const travel::eval::SweepSpec& spec,
                 const std::vector<EvaluationSummary>& sums, std::size_t frames) {
     const std::string stem = "sweep_" + spec.key;
-    std::ofstream csv = openOut(dir / (stem + ".csv"));
+    std::ostringstream csv;
     travel::eval::writeSweepCsv(csv, spec, sums, frames);
+    writeText(dir / (stem + ".csv"), csv.str());
 
     const std::vector<double> xs = travel::eval::sweepPositions(spec.values);
     const std::string what = method + ", " + std::to_string(frames) + " frames";
@@ -331,8 +341,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> methods("", "methods",
                                          "report: comma-separated methods (default: all of them)",
                                          false, "", "A,B,...", cmd);
-    TCLAP::ValueArg<std::string> method("", "method", "sweep: the method (default travel)", false,
-                                        "travel", "NAME", cmd);
+    TCLAP::ValueArg<std::string> method("", "method", "sweep, merges: the method (default travel)",
+                                        false, "travel", "NAME", cmd);
     TCLAP::ValueArg<std::string> loo_score(
         "", "loo-score",
         "sweep: what the leave-one-out choice maximises per frame: f1b (ground F1, protocol B; "
@@ -357,10 +367,11 @@ int run(int argc, char** argv) {
     const bool quiet = flags.quiet();
     const travel::apps::Verbosity verbosity =
         travel::apps::verbosityFrom(flags.quiet(), flags.verbose());
-    if (is_sweep && methods.isSet())
-        throw travel::apps::usageError("sweep runs one --method, not --methods");
-    if (!is_sweep && !is_merges && (sweep.isSet() || method.isSet()))
-        throw travel::apps::usageError("report takes --methods; --sweep/--method are for sweep");
+    if ((is_sweep || is_merges) && methods.isSet())
+        throw travel::apps::usageError(command.getValue() + " runs one --method, not --methods");
+    if (!is_sweep && !is_merges && method.isSet())
+        throw travel::apps::usageError("report takes --methods; --method is for sweep and merges");
+    if (!is_sweep && sweep.isSet()) throw travel::apps::usageError("--sweep is for sweep");
     if (is_sweep && !sweep.isSet())
         throw travel::apps::usageError("sweep needs --sweep KEY=v1,v2,...");
     if (!is_sweep && loo_score.isSet()) throw travel::apps::usageError("--loo-score is for sweep");
@@ -388,26 +399,51 @@ int run(int argc, char** argv) {
         is_sweep ? travel::eval::parseSweep(sweep.getValue(), params) : travel::eval::SweepSpec{};
 
     const std::vector<FrameRef> frames = travel::eval::labelledFrames(
-        flags.inputs(), labels.getValue(), max_frames.count(), flags.scanFormat());
-    travel::apps::createFolder(out);
+        flags.inputs(), labels.getValue(), static_cast<std::size_t>(max_frames.count()),
+        flags.scanFormat());
+    // No output in an input: -o is not a sequence, scans or ground-truth labels folder read here
+    // (docs/cli.md), however spelt.
+    std::vector<travel::apps::NamedPath> read;
+    for (const std::string& input : flags.inputs()) read.push_back({"-i", input});
+    std::set<std::string> folders;
+    for (const FrameRef& f : frames) {
+        const std::string scans = fs::path(f.scan).parent_path().string();
+        const std::string truth = fs::path(f.label).parent_path().string();
+        if (folders.insert(scans).second) read.push_back({"the scans folder", scans});
+        if (folders.insert(truth).second) read.push_back({"the labels folder", truth});
+    }
+    travel::apps::checkOutputsApart(read, {{"-o", out}});
+    if (loo_score.isSet() && frames.size() < 2)
+        throw travel::apps::usageError(
+            "--loo-score: the leave-one-out needs two labelled frames "
+            "or more; " +
+            std::to_string(frames.size()) + " found");
+    // Created when the outputs are written, after every frame ran: a run that fails on a frame
+    // (or is interrupted) leaves nothing behind.
+    travel::apps::requireCreatableFolder(out);
     const fs::path dir(out);
 
     if (is_merges) {
-        auto segmenter = travel::eval::makeSegmenter(names[0], params);
-        travel::eval::FrameEvaluation frame;
+        // Each frame's parts are read on the worker that segmented it (its pipeline holds the
+        // frame's range image); they are tabulated and written in frame order at the end.
+        std::vector<std::vector<travel::eval::MergedPart>> parts(frames.size());
+        runMethod(names[0], params, frames, names[0], verbosity, jobs.count(),
+                  [&](std::size_t f, const travel::eval::FrameEvaluation& frame,
+                      const travel::eval::Segmenter& segmenter) {
+                      parts[f] = travel::eval::mergedParts(frame.segmentation.cluster_id,
+                                                           frame.ground_truth, frame.cloud,
+                                                           *segmenter.objectPipeline());
+                  });
         travel::eval::MergeTable table;
-        std::ofstream csv = openOut(dir / "merges.csv");
+        std::ostringstream csv;
         for (std::size_t k = 0; k < frames.size(); ++k) {
-            const FrameRef& f = frames[k];
-            travel::eval::evaluateFrame(f.scan, f.label, *segmenter, frame, f.format);
-            const std::vector<travel::eval::MergedPart> parts =
-                travel::eval::mergedParts(frame.segmentation.cluster_id, frame.ground_truth,
-                                          frame.cloud, *segmenter->objectPipeline());
-            table.add(parts);
-            travel::eval::writeMergedPartsCsv(csv, f.name, parts, k == 0);
+            table.add(parts[k]);
+            travel::eval::writeMergedPartsCsv(csv, frames[k].name, parts[k], k == 0);
         }
         const std::string md = table.markdown();
-        openOut(dir / "merges.md") << md;
+        travel::apps::createFolder(out);
+        writeText(dir / "merges.csv", csv.str());
+        writeText(dir / "merges.md", md);
         if (!quiet)
             std::cout << md << "\nWritten: " << (dir / "merges.md").string() << ", "
                       << (dir / "merges.csv").string() << "\n";
@@ -418,9 +454,11 @@ int run(int argc, char** argv) {
         for (const std::string& name : names)
             runs.push_back(runMethod(name, params, frames, name, verbosity, jobs.count()));
         const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
-        openOut(dir / "report.md") << md;
-        std::ofstream frames_csv = openOut(dir / "frames.csv");
+        travel::apps::createFolder(out);
+        writeText(dir / "report.md", md);
+        std::ostringstream frames_csv;
         travel::eval::writeFramesCsv(frames_csv, runs);
+        writeText(dir / "frames.csv", frames_csv.str());
         if (!quiet)
             std::cout << md << "\nWritten: " << (dir / "report.md").string() << ", "
                       << (dir / "frames.csv").string() << "\n";
@@ -439,22 +477,40 @@ int run(int argc, char** argv) {
         rows.push_back(run.rows);
         const EvaluationSummary& s = sums.back();
         if (quiet) continue;
-        std::printf("%s=%-8s B F1 %6.2f  A F1 %6.2f", spec.key.c_str(), value.c_str(), s.f1[1].mean,
-                    s.f1[0].mean);
+        std::printf("%s=%-8s", spec.key.c_str(), value.c_str());
+        for (const int p : {1, 0})  // "-": no frame with ground truth under the protocol
+            if (s.f1[p].n)
+                std::printf("%s F1 %6.2f", p ? " B" : "  A", s.f1[p].mean);
+            else
+                std::printf("%s F1      -", p ? " B" : "  A");
         if (s.clusters)
             std::printf("  coverage %.3f purity %.3f  USE %6.2f OSE %6.2f", s.objects.mean_coverage,
                         s.objects.mean_purity, s.use.mean, s.ose.mean);
         std::printf("  ms %.2f + %.2f\n", s.ground_ms, s.objects_ms);
     }
+    // Before anything is written: a score the runs do not have (coverage of a ground-only
+    // method) is an error that leaves no files.
+    std::optional<travel::eval::LeaveOneOut> leave_one_out;
+    // Without --loo-score, a sweep whose frames leave fewer than two scored (labels without
+    // ground truth) has no leave-one-out, as one of a single frame; with it, an error.
+    if (frames.size() >= 2 &&
+        (loo_score.isSet() || travel::eval::scoredFrames(rows, score).size() >= 2))
+        leave_one_out = travel::eval::leaveOneOut(rows, score);
+    travel::apps::createFolder(out);
     writeSweep(dir, names[0], spec, sums, frames.size());
     const std::string stem = (dir / ("sweep_" + spec.key)).string();
-    if (frames.size() >= 2) {
-        const travel::eval::LeaveOneOut loo = travel::eval::leaveOneOut(rows, score);
-        std::ofstream loo_csv = openOut(stem + "_loo.csv");
+    if (leave_one_out) {
+        const travel::eval::LeaveOneOut& loo = *leave_one_out;
+        std::ostringstream loo_csv;
         travel::eval::writeLeaveOneOutCsv(loo_csv, spec, score, loo);
+        writeText(stem + "_loo.csv", loo_csv.str());
         if (!quiet) {
-            std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others):\n",
-                        frames.size(), travel::eval::sweepScoreName(score));
+            std::printf("Leave-one-out over %zu frames (%s, each value chosen on the others)",
+                        loo.folds.size(), travel::eval::sweepScoreName(score));
+            if (loo.folds.size() < frames.size())
+                std::printf("; %zu frames without a score left out",
+                            frames.size() - loo.folds.size());
+            std::printf(":\n");
             for (const auto& fold : loo.folds)
                 std::printf("  held out %-16s chosen %s=%-8s held-out %s %.4g\n",
                             fold.frame.c_str(), spec.key.c_str(), spec.values[fold.chosen].c_str(),
@@ -466,7 +522,7 @@ int run(int argc, char** argv) {
     if (!quiet)
         std::printf("Written: %s.csv, %s_ground.png, %s_objects.png, %s_time.png%s\n", stem.c_str(),
                     stem.c_str(), stem.c_str(), stem.c_str(),
-                    frames.size() >= 2 ? (", " + stem + "_loo.csv").c_str() : "");
+                    leave_one_out ? (", " + stem + "_loo.csv").c_str() : "");
     return 0;
 }
 

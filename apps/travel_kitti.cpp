@@ -215,6 +215,9 @@ int run(int argc, char** argv) {
                                      " poses for " + std::to_string(files.size()) + " scans");
         tracking.tracker = std::make_unique<travel::FrameTracker>(configuration.tracking);
     }
+    // A file output given as a folder: refused now, not after the run.
+    travel::apps::requireFileName("--csv", csv.getValue());
+    travel::apps::requireFileName("--track-png", track_png.getValue());
     // No output may be an input: the scans, the ground truth (-o its folder: the predicted
     // labels would replace it), the sequence's poses (--track writes OUT/poses.txt).
     std::vector<travel::apps::NamedPath> inputs = {{"the labels folder", labels_dir}};
@@ -385,6 +388,16 @@ int run(int argc, char** argv) {
     const double run_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     progress.finish();
+    // The CSV and poses.txt streams are written frame by frame: a write that failed (a full
+    // disk) shows in the stream's state once it is closed, and is an error, not a lost row.
+    const auto close_checked = [](std::ofstream& stream, const std::string& path) {
+        if (!stream.is_open()) return;
+        stream.close();
+        if (stream.fail())
+            throw travel::InputError("cannot write " + path + ": " + std::strerror(errno));
+    };
+    close_checked(csv_out, csv.getValue());
+    close_checked(tracking.poses, (fs::path(out) / "poses.txt").string());
     if (track_png.isSet()) {
         travel::viz::TrackPictureOptions picture;
         travel::viz::writePng(travel::viz::renderTracks(tracking.picture, picture),
@@ -401,18 +414,25 @@ int run(int argc, char** argv) {
                         unlabelled_frames);
         const travel::eval::EvaluationSummary sum = totals.summary();
         for (int p = 0; p < 2; ++p)
-            std::printf(
-                "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
-                "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
-                travel::protocolName(travel::eval::kGroundProtocols[p]), sum.f1[p].n,
-                sum.precision[p].mean, sum.precision[p].std, sum.recall[p].mean, sum.recall[p].std,
-                sum.f1[p].mean, sum.f1[p].std, sum.accuracy[p].mean, sum.accuracy[p].std);
+            if (sum.f1[p].n == 0)  // no value, not a score of 0
+                std::printf("Ground, protocol %-26s not scored: no frame holds ground truth\n",
+                            travel::protocolName(travel::eval::kGroundProtocols[p]));
+            else
+                std::printf(
+                    "Ground, protocol %-26s over %zu frames: P %.2f +- %.2f  R %.2f +- %.2f  "
+                    "F1 %.2f +- %.2f  Acc %.2f +- %.2f\n",
+                    travel::protocolName(travel::eval::kGroundProtocols[p]), sum.f1[p].n,
+                    sum.precision[p].mean, sum.precision[p].std, sum.recall[p].mean,
+                    sum.recall[p].std, sum.f1[p].mean, sum.f1[p].std, sum.accuracy[p].mean,
+                    sum.accuracy[p].std);
         const bool clusters_objects =
             std::any_of(stages[kObjectsStage].ms.begin(), stages[kObjectsStage].ms.end(),
                         [](double ms) { return ms > 0.0; });
         if (!clusters_objects) {
             std::printf("Objects: not evaluated (%s segments ground only)\n",
                         method.getValue().c_str());
+        } else if (sum.objects.frames == 0) {
+            std::printf("Objects: not evaluated (no frame holds ground truth)\n");
         } else {
             const travel::ObjectSummary& o = sum.objects;
             std::printf(

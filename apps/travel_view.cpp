@@ -47,6 +47,11 @@ struct Options {
     bool quiet = false;
 };
 
+/// The methods whose ground stage is TRAVEL's tri-grid search: they have a terrain model.
+bool usesTriGrid(const std::string& method) {
+    return method.rfind("travel", 0) == 0 || method.rfind("tgs", 0) == 0;
+}
+
 Options parseCommandLine(int argc, char** argv) {
     travel::apps::CommandLine line(
         "travel-view",
@@ -83,12 +88,17 @@ Options parseCommandLine(int argc, char** argv) {
 
     o.format = flags.scanFormat();
     const travel::ScanList scans = travel::listScans(flags.inputPath(), o.format);
+    // A flag that changes nothing is a usage error, not ignored (docs/cli.md).
+    if (frame.isSet() && !fs::is_directory(flags.inputPath()))
+        throw travel::apps::usageError("--frame chooses a scan of a folder or sequence; -i " +
+                                       flags.inputPath() + " is one scan");
     if (frame.getValue() < 0 || std::size_t(frame.getValue()) >= scans.files.size())
         throw AppError("--frame " + std::to_string(frame.getValue()) + ": " + flags.inputPath() +
                        " has " + std::to_string(scans.files.size()) + " scans");
     o.scan = scans.files[frame.getValue()];
     o.out = flags.outputPath();
     travel_mrpt::requirePictureName(o.out);
+    travel::apps::requireFileName("-o", o.out);
     travel::apps::checkOutputsApart({{"-i", o.scan}}, {{"-o", o.out}});
     o.quiet = flags.quiet();
     for (const std::string& m : travel::splitList(methods.getValue(), ','))
@@ -98,12 +108,11 @@ Options parseCommandLine(int argc, char** argv) {
     o.nodes = !no_nodes.getValue();
     if (o.methods.empty() || o.methods.size() > 2)
         throw AppError("--methods: give one or two method names, comma-separated");
+    if (!o.nodes && std::none_of(o.methods.begin(), o.methods.end(), usesTriGrid))
+        throw travel::apps::usageError(
+            "--no-nodes: no method here draws tri-grid nodes (only travel, travel-no-ttmf, tgs and "
+            "tgs+... have a terrain model)");
     return o;
-}
-
-/// The methods whose ground stage is TRAVEL's tri-grid search: they have a terrain model.
-bool usesTriGrid(const std::string& method) {
-    return method.rfind("travel", 0) == 0 || method.rfind("tgs", 0) == 0;
 }
 
 /// One panel: labels from the method's Segmenter (the same code travel-kitti evaluates), points

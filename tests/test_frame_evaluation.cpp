@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "travel/Errors.hpp"
@@ -245,6 +246,9 @@ TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
         for (int f = 0; f < 3; ++f) {
             rows[v][f].frame = "00/" + std::to_string(f);
             rows[v][f].ground[1].f1 = f1[v][f];
+            rows[v][f].ground[1].points = 1000;
+            rows[v][f].objects = true;
+            rows[v][f].instances = 2;
             rows[v][f].coverage = 0.5 + 0.1 * f;  // the same for both values: ties
         }
     const eval::LeaveOneOut loo = eval::leaveOneOut(rows, eval::SweepScore::GroundF1B);
@@ -267,6 +271,80 @@ TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
     EXPECT_THROW(eval::parseSweepScore("f2"), ConfigError);
     EXPECT_THROW(eval::leaveOneOut({{rows[0][0]}}, eval::SweepScore::GroundF1B),
                  std::invalid_argument);
+}
+
+// A frame without ground truth (labels all unlabeled) or without thing instances has no score:
+// it is left out of the folds and means, not averaged in as F1 or coverage 0.
+TEST(LeaveOneOut, FramesWithoutAScoreAreLeftOut) {
+    std::vector<std::vector<eval::FrameRow>> rows(2, std::vector<eval::FrameRow>(3));
+    const double f1[2][3] = {{97.0, 0.0, 99.0}, {99.0, 0.0, 95.0}};
+    for (int v = 0; v < 2; ++v)
+        for (int f = 0; f < 3; ++f) {
+            eval::FrameRow& row = rows[v][f];
+            row.frame = "00/" + std::to_string(f);
+            row.ground[1].f1 = f1[v][f];
+            row.ground[1].points = f == 1 ? 0 : 1000;  // frame 1: nothing to score
+            row.objects = true;
+            row.instances = f == 2 ? 0 : 3;  // frame 2: no thing instance
+            row.coverage = f == 2 ? 0.0 : 0.9;
+        }
+    EXPECT_EQ(eval::scoredFrames(rows, eval::SweepScore::GroundF1B),
+              (std::vector<std::size_t>{0, 2}));
+    const eval::LeaveOneOut b = eval::leaveOneOut(rows, eval::SweepScore::GroundF1B);
+    ASSERT_EQ(b.folds.size(), 2u);
+    EXPECT_EQ(b.folds[0].frame, "00/0");
+    EXPECT_EQ(b.folds[1].frame, "00/2");
+    // Without frame 0: frame 2 alone, value 0 (99): scored 97 on frame 0. Without frame 2:
+    // value 1 (99): 95 on frame 2.
+    EXPECT_DOUBLE_EQ(b.held_out_mean, (97.0 + 95.0) / 2);
+    EXPECT_DOUBLE_EQ(b.in_sample_mean, 98.0);
+    // Coverage: frames 0 and 1 have instances, frame 2 none.
+    const eval::LeaveOneOut coverage = eval::leaveOneOut(rows, eval::SweepScore::Coverage);
+    ASSERT_EQ(coverage.folds.size(), 2u);
+    EXPECT_EQ(coverage.folds[1].frame, "00/1");
+    EXPECT_DOUBLE_EQ(coverage.held_out_mean, 0.9);
+    // One frame with a score is no leave-one-out.
+    for (auto& value : rows) value[0].ground[1].points = 0;
+    EXPECT_THROW(eval::leaveOneOut(rows, eval::SweepScore::GroundF1B), std::invalid_argument);
+}
+
+// A method that never clustered (travel-eval sweep --method tgs --loo-score coverage) has no
+// coverage or purity to choose on: an error, not folds of zeros choosing the first value.
+TEST(LeaveOneOut, CoverageOrPurityOfAMethodThatNeverClusteredIsAnError) {
+    std::vector<std::vector<eval::FrameRow>> rows(2, std::vector<eval::FrameRow>(2));
+    for (auto& value : rows)
+        for (eval::FrameRow& row : value) {
+            row.ground[1].f1 = 98.0, row.ground[1].points = 1000;
+            row.instances = 1;  // objects false
+        }
+    for (const eval::SweepScore score : {eval::SweepScore::Coverage, eval::SweepScore::Purity}) {
+        try {
+            eval::leaveOneOut(rows, score);
+            FAIL() << "no error for " << eval::sweepScoreName(score);
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("no frame was clustered"), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_NO_THROW(eval::leaveOneOut(rows, eval::SweepScore::GroundF1B));
+    rows[1][0].objects = true;  // clustered at one value: scored (the others' 0 is honest)
+    EXPECT_NO_THROW(eval::leaveOneOut(rows, eval::SweepScore::Coverage));
+}
+
+// travel-eval report on frames whose labels hold no ground truth (all unlabeled): no value ('-')
+// rather than P / R / F1 of 0.00, and a line saying how many frames were scored.
+TEST(ReportMarkdown, AProtocolWithNoScoredFrameHasNoValues) {
+    std::vector<eval::MethodRun> runs(1);
+    runs[0].method = "tgs";  // summary of no scored frame: every MeanStd has n = 0
+    const std::vector<eval::FrameRef> frames = {{"s.bin", "s.label", "00/000000"}};
+    const std::string md = eval::reportMarkdown(runs, frames, "preset none");
+    EXPECT_NE(md.find("| tgs | - | - | - | - | - | - | - |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("0.00"), std::string::npos) << md;
+    EXPECT_NE(md.find("Scored frames (of 1): tgs 0"), std::string::npos) << md;
+    // The sweep's CSV: empty cells, as frames.csv.
+    std::ostringstream csv;
+    eval::writeSweepCsv(csv, {"tgf_resolution", {"4"}}, {runs[0].summary}, 1);
+    EXPECT_NE(csv.str().find("\n4,1,,,,,,,,,,,0,0\n"), std::string::npos) << csv.str();
 }
 
 }  // namespace

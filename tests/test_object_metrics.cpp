@@ -4,17 +4,20 @@
 // known answers, and a sanity run on real SemanticKITTI frames (skipped when absent).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "travel/eval/KittiIO.hpp"
+#include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/ObjectMetrics.hpp"
 
 namespace fs = std::filesystem;
@@ -439,6 +442,33 @@ TEST(ObjectMetrics, RealKittiGroundTruthAsPrediction) {
     }
     std::printf("frames 000000-000002: %zu thing instances with >= 50 points\n", total_instances);
     EXPECT_EQ(total_instances, 33u);
+}
+
+// travel-eval merges' merges.md: every table's delimiter row has one cell per header column
+// (the third table's title holds three columns), or Markdown renders it as plain text.
+TEST(MergeTable, MarkdownTablesHaveOneDelimiterCellPerColumn) {
+    eval::MergedPart part;
+    part.cluster = 1;
+    part.owner_semantic = kVegetation;
+    part.part_semantic = kCar;
+    part.part_points = 12;
+    part.range = 15;
+    eval::MergeTable table;
+    table.add({part});
+    std::istringstream md(table.markdown());
+    std::string line, header;
+    int tables = 0;
+    while (std::getline(md, line)) {
+        if (line.rfind("|---", 0) == 0) {
+            ++tables;
+            EXPECT_EQ(std::count(line.begin(), line.end(), '|'),
+                      std::count(header.begin(), header.end(), '|'))
+                << header << "\n"
+                << line;
+        }
+        header = line;
+    }
+    EXPECT_EQ(tables, 3);
 }
 
 }  // namespace

@@ -53,6 +53,10 @@ if(APP STREQUAL "travel-eval")
   set(pre report)  # its command
 endif()
 expect_failure_mentioning("-q/--quiet and -v/--verbose" ${EXE} ${pre} -q -v -i x -o ${WORK_DIR}/x)
+# An empty value is refused, not taken as the default or, for -o, as the current folder
+# (-o "$UNSET" in a script).
+expect_failure_mentioning("-o/--output: empty value" ${EXE} ${pre} -i x --output=)
+expect_failure_mentioning("-i/--input: empty value" ${EXE} ${pre} --input= -o ${WORK_DIR}/x)
 # getopt_long's attached values: --input=x is --input x (the -q/-v check is reached), and a
 # misspelt flag with one is still named with its suggestion.
 expect_failure_mentioning("-q/--quiet and -v/--verbose"

@@ -2,7 +2,7 @@
 # ground-truth labels folder, the sequence's poses) or another output is refused before anything
 # is written, whatever its spelling (./, .., a trailing '/', a symlink), and the input is left
 # byte for byte as it was. Also: a missing --labels folder, a --labels folder without any label
-# of the scans, an -o that is a folder where a file is written, a picture name without a picture
+# of the scans, an -o, --csv or --track-png that is a folder where a file is written, a picture name without a picture
 # extension; output folders of side outputs (--csv) are created.
 # Variables: TRAVEL_KITTI, TRAVEL_RAWLOG and TRAVEL_VIEW (optional), MAKE_SCANS, SAMPLE, WORK_DIR.
 include(${CMAKE_CURRENT_LIST_DIR}/CliExpect.cmake)
@@ -74,6 +74,16 @@ expect_failure_mentioning("--labels directory '${WORK_DIR}/nope' does not exist"
 file(MAKE_DIRECTORY ${WORK_DIR}/empty)
 expect_failure_mentioning("no <stem>.label for any of the 2 scans"
                           ${TRAVEL_KITTI} -q -i ${seq} -o ${WORK_DIR}/out --labels ${WORK_DIR}/empty)
+# A file output given as a folder: refused before the run (no labels written).
+file(MAKE_DIRECTORY ${WORK_DIR}/folder.png)
+foreach(flag --csv --track-png)
+  expect_failure_mentioning("${flag} ${WORK_DIR}/folder.png: a folder; give the name of the file"
+                            ${TRAVEL_KITTI} -q -i ${seq} -o ${WORK_DIR}/out --track
+                            ${flag} ${WORK_DIR}/folder.png)
+  if(EXISTS ${WORK_DIR}/out)
+    message(FATAL_ERROR "${flag} a folder: the refused run wrote ${WORK_DIR}/out")
+  endif()
+endforeach()
 # A side output's folder is created.
 expect_success(${TRAVEL_KITTI} -q -i ${seq} -o ${WORK_DIR}/out --csv ${WORK_DIR}/new/sub/x.csv)
 if(NOT EXISTS ${WORK_DIR}/new/sub/x.csv)
@@ -85,6 +95,8 @@ if(TRAVEL_VIEW)
   expect_failure_mentioning("an input" ${TRAVEL_VIEW} -q -i ${seq}/velodyne/000000.bin
                             -o ${WORK_DIR}/link.png)
   expect_unchanged(${seq}/velodyne/000000.bin ${scan_md5})
+  expect_failure_mentioning("a folder; give the name of the file" ${TRAVEL_VIEW} -q
+                            -i ${seq}/velodyne/000000.bin -o ${WORK_DIR}/folder.png)
   expect_failure_mentioning("not a picture name" ${TRAVEL_VIEW} -q -i ${seq}/velodyne/000000.bin
                             -o ${WORK_DIR}/picture)
 endif()

@@ -35,6 +35,30 @@ if(EXISTS ${seq}/velodyne/000000.bin)
   if(NOT label_size EQUAL expected)
     message(FATAL_ERROR "label file has ${label_size} bytes, expected ${expected}")
   endif()
+  # A label file of zeros (every point unlabeled) holds no ground truth: no scores printed as
+  # 0.00, but "not scored".
+  file(MAKE_DIRECTORY ${WORK_DIR}/zero)
+  execute_process(COMMAND head -c ${expected} /dev/zero OUTPUT_FILE ${WORK_DIR}/zero/000000.label)
+  execute_process(COMMAND ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out
+                  --labels ${WORK_DIR}/zero RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${out}" "Ground, protocol B (Patchwork++)            not scored" not_scored)
+  string(FIND "${out}" "F1 0.00" zero_f1)
+  if(NOT rc EQUAL 0 OR not_scored EQUAL -1 OR NOT zero_f1 EQUAL -1)
+    message(FATAL_ERROR "labels without ground truth (${rc}):\n${out}${err}")
+  endif()
+  # A .label that cannot be written whole (a file size limit, as a full disk): an error naming
+  # it, and no cut .label left under its name.
+  execute_process(COMMAND sh -c "ulimit -f 64; trap '' XFSZ; exec \"$0\" \"$@\"" ${TRAVEL_KITTI}
+                          -i ${WORK_DIR}/scans -o ${WORK_DIR}/limited -q
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(rc EQUAL 0 OR NOT err MATCHES "000000.label" OR EXISTS ${WORK_DIR}/limited/000000.label)
+    message(FATAL_ERROR "a .label over the file size limit (${rc}): ${err}")
+  endif()
+  # A CSV whose rows cannot be written (a full disk: Linux's /dev/full) is an error, not exit 0.
+  if(EXISTS /dev/full)
+    expect_failure_mentioning("cannot write /dev/full" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans
+                              -o ${WORK_DIR}/full -q --csv /dev/full)
+  endif()
   file(WRITE ${WORK_DIR}/labels/000000.label "12345678")
   expect_failure_mentioning("000000.label" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans -o ${WORK_DIR}/out --labels ${WORK_DIR}/labels)
 else()

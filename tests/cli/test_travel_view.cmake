@@ -15,6 +15,14 @@ expect_failure_mentioning("gpf+slr" ${TRAVEL_VIEW} -i ${WORK_DIR}/broken.bin -o 
 # More than two methods
 expect_failure_mentioning("--methods" ${TRAVEL_VIEW} -i ${WORK_DIR}/broken.bin -o ${WORK_DIR}/x.png --methods travel,gpf,tgs)
 
+# Flags that would change nothing are usage errors: --frame with one scan, --no-nodes when no
+# method draws tri-grid nodes.
+expect_failure_mentioning("--frame chooses a scan of a folder or sequence" ${TRAVEL_VIEW}
+                          -i ${WORK_DIR}/broken.bin --frame 0 -o ${WORK_DIR}/x.png)
+expect_failure_mentioning("--no-nodes: no method here draws tri-grid nodes" ${TRAVEL_VIEW}
+                          -i ${WORK_DIR}/broken.bin --methods gpf,gpf+slr --no-nodes
+                          -o ${WORK_DIR}/x.png)
+
 set(scan ${DATA_DIR}/semantickitti/sequences/00/velodyne/000000.bin)
 if(EXISTS ${scan})
   set(png ${WORK_DIR}/pics/000000_travel_vs_gpfslr.png)

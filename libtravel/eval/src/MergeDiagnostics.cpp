@@ -296,8 +296,14 @@ std::string MergeTable::markdown(std::size_t top) const {
         std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
             return a.points != b.points ? a.points > b.points : a.key < b.key;
         });
-        md << "\n| " << title
-           << " | parts | part points | mean depth jump [m] |\n|---|---|---|---|\n";
+        // The delimiter row has one cell per column: the title's own columns (" | "
+        // separated) and the three counts, or Markdown does not render it as a table.
+        const std::string header =
+            std::string("| ") + title + " | parts | part points | mean depth jump [m] |";
+        md << "\n" << header << "\n|";
+        for (std::size_t c = 1; c < std::size_t(std::count(header.begin(), header.end(), '|')); ++c)
+            md << "---|";
+        md << "\n";
         for (std::size_t k = 0; k < rows.size() && k < limit; ++k) {
             char line[96];
             std::snprintf(line, sizeof line, " | %zu | %zu | %.2f |\n", rows[k].parts,

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,14 +59,13 @@ std::string sequenceName(const std::string& scans_dir) {
 }
 
 std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
-                                     const std::vector<std::string>& labels, int max_frames,
+                                     const std::vector<std::string>& labels, std::size_t max_frames,
                                      ScanFormat format) {
     if (!labels.empty() && labels.size() != inputs.size())
         throw InputError(
             "give one labels folder per input (paired by order): " + std::to_string(inputs.size()) +
             " inputs, " + std::to_string(labels.size()) + " labels folders");
     std::vector<FrameRef> frames;
-    std::vector<std::string> labels_dirs;
     for (std::size_t s = 0; s < inputs.size(); ++s) {
         const ScanList scans = listScans(inputs[s], format);
         const std::string labels_dir = labels.empty() ? scans.labels_dir : labels[s];
@@ -74,23 +74,22 @@ std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
                              ": no labels folder (a KITTI sequence folder has labels/ "
                              "beside velodyne/; else give --labels DIR)");
         requireDirectory(labels_dir, "labels directory");
-        labels_dirs.push_back(labels_dir);
         const std::string seq = sequenceName(scans.scans_dir);
+        const std::size_t before = frames.size();
         for (const std::string& scan : scans.files) {
             const std::string stem = fs::path(scan).stem().string();
             const fs::path label = fs::path(labels_dir) / (stem + ".label");
             if (fs::exists(label))
                 frames.push_back({scan, label.string(), seq + "/" + stem, format});
         }
+        // An input that adds no frame is a mistake (a wrong --labels, labels not yet
+        // downloaded), not a sequence to leave out of the report silently.
+        if (frames.size() == before)
+            throw InputError("no labelled frames in " + inQuotes(inputs[s]) + ": none of its " +
+                             std::to_string(scans.files.size()) + " scans has a <stem>.label in " +
+                             inQuotes(labels_dir));
     }
-    if (frames.empty()) {
-        std::string dirs;
-        for (std::size_t s = 0; s < inputs.size(); ++s)
-            dirs += (s ? ", " : "") + inputs[s] + " with " + labels_dirs[s];
-        throw InputError("no labelled frames: no scan has a <stem>.label (" + dirs + ")");
-    }
-    if (max_frames > 0 && frames.size() > static_cast<std::size_t>(max_frames))
-        frames.resize(max_frames);
+    if (max_frames > 0 && frames.size() > max_frames) frames.resize(max_frames);
     return frames;
 }
 
@@ -151,14 +150,26 @@ std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector
         md << "\n## Ground, protocol " << protocolName(kGroundProtocols[p]) << "\n\n"
            << "| method | P | R | F1 μ | F1 σ | accuracy μ | accuracy σ | ms |\n"
            << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        std::string partly;  // the methods whose means leave frames out
         for (std::size_t m = 0; m < runs.size(); ++m) {
             const EvaluationSummary& s = runs[m].summary;
-            md << "| " << runs[m].method << " | " << format("%.2f", s.precision[p].mean) << " | "
-               << format("%.2f", s.recall[p].mean) << " | " << format("%.2f", s.f1[p].mean) << " | "
-               << format("%.2f", s.f1[p].std) << " | " << format("%.2f", s.accuracy[p].mean)
-               << " | " << format("%.2f", s.accuracy[p].std) << " | " << format("%.1f", s.ground_ms)
-               << " |\n";
+            // No frame with ground truth under this protocol: no value, not a score of 0.
+            const bool none = s.f1[p].n == 0;
+            const auto cell = [&](const char* fmt, double v) {
+                return none ? "-" : format(fmt, v);
+            };
+            md << "| " << runs[m].method << " | " << cell("%.2f", s.precision[p].mean) << " | "
+               << cell("%.2f", s.recall[p].mean) << " | " << cell("%.2f", s.f1[p].mean) << " | "
+               << cell("%.2f", s.f1[p].std) << " | " << cell("%.2f", s.accuracy[p].mean) << " | "
+               << cell("%.2f", s.accuracy[p].std) << " | "
+               << (s.f1[0].n + s.f1[1].n == 0 ? "-" : format("%.1f", s.ground_ms)) << " |\n";
+            if (s.f1[p].n < frames.size())
+                partly +=
+                    (partly.empty() ? "" : ", ") + runs[m].method + " " + std::to_string(s.f1[p].n);
         }
+        if (!partly.empty())
+            md << "\nScored frames (of " << frames.size() << "): " << partly
+               << "; the others hold no ground truth under this protocol ('-': none does).\n";
     }
     md << "\n## Objects\n\n"
        << "| method | USE μ | USE σ | OSE μ | OSE σ | coverage | purity | split | merged | ms |\n"
@@ -246,9 +257,17 @@ void writeSweepCsv(std::ostream& csv, const SweepSpec& spec,
            "ground_ms_median,objects_ms_median\n";
     for (std::size_t i = 0; i < sums.size(); ++i) {
         const EvaluationSummary& s = sums[i];
-        csv << spec.values[i] << ',' << frames << ',' << s.precision[1].mean << ','
-            << s.recall[1].mean << ',' << s.f1[1].mean << ',' << s.f1[1].std << ',' << s.f1[0].mean
-            << ',' << s.f1[0].std;
+        // Empty cells, not zeros, where no frame had ground truth under the protocol.
+        csv << spec.values[i] << ',' << frames;
+        if (s.f1[1].n)
+            csv << ',' << s.precision[1].mean << ',' << s.recall[1].mean << ',' << s.f1[1].mean
+                << ',' << s.f1[1].std;
+        else
+            csv << ",,,,";
+        if (s.f1[0].n)
+            csv << ',' << s.f1[0].mean << ',' << s.f1[0].std;
+        else
+            csv << ",,";
         if (s.clusters)
             csv << ',' << s.objects.mean_coverage << ',' << s.objects.mean_purity << ','
                 << s.use.mean << ',' << s.ose.mean;
@@ -294,18 +313,63 @@ double sweepScore(const FrameRow& row, SweepScore score) {
     return 0;
 }
 
+std::vector<std::size_t> scoredFrames(const std::vector<std::vector<FrameRow>>& rows,
+                                      SweepScore score) {
+    // A frame has a score when it has something to score at every value: ground truth under the
+    // protocol, or thing instances (a frame without any has coverage and purity 0 by
+    // convention). The others are left out, not averaged in as zeros.
+    const auto scored = [&](const FrameRow& row) {
+        switch (score) {
+            case SweepScore::GroundF1B:
+                return row.ground[1].points > 0;
+            case SweepScore::GroundF1A:
+                return row.ground[0].points > 0;
+            default:
+                return !row.objects || row.instances > 0;  // unclustered: 0, a true score
+        }
+    };
+    std::vector<std::size_t> kept;
+    for (std::size_t f = 0; !rows.empty() && f < rows[0].size(); ++f)
+        if (std::all_of(rows.begin(), rows.end(), [&](const std::vector<FrameRow>& r) {
+                return f < r.size() && scored(r[f]);
+            }))
+            kept.push_back(f);
+    return kept;
+}
+
 LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score) {
     if (rows.empty()) throw std::invalid_argument("leaveOneOut: no values");
     const std::size_t frames = rows[0].size();
     if (frames < 2) throw std::invalid_argument("leaveOneOut: needs two frames or more");
     for (const auto& r : rows)
         if (r.size() != frames) throw std::invalid_argument("leaveOneOut: frame counts differ");
-    // Mean score of value v over every frame but `skip` (skip = frames: none skipped).
+    // Coverage and purity exist only where the method clustered (FrameRow::objects; the sweep
+    // CSV leaves them empty otherwise): a fold of zeros would choose the first value on nothing.
+    const bool objects = score == SweepScore::Coverage || score == SweepScore::Purity;
+    if (objects) {
+        bool clustered = false;
+        for (const auto& r : rows)
+            for (const FrameRow& row : r) clustered = clustered || row.objects;
+        if (!clustered)
+            throw std::invalid_argument(
+                std::string("leave-one-out on ") + sweepScoreName(score) +
+                ": no frame was clustered at any value (a ground-only method, or cluster_objects "
+                "false): choose f1b or f1a");
+    }
+    const std::vector<std::size_t> kept = scoredFrames(rows, score);
+    if (kept.size() < 2)
+        throw std::invalid_argument(
+            std::string("leave-one-out on ") + sweepScoreName(score) + ": " +
+            std::to_string(kept.size()) + " of " + std::to_string(frames) +
+            " frames have a score at every value (" +
+            (objects ? "thing instances" : "ground truth under the protocol") + "); it needs two");
+    // Mean score of value v over every kept frame but `skip` (skip = frames: none skipped).
     const auto mean_without = [&](std::size_t v, std::size_t skip) {
         double sum = 0;
-        for (std::size_t f = 0; f < frames; ++f)
-            if (f != skip) sum += sweepScore(rows[v][f], score);
-        return sum / double(skip < frames ? frames - 1 : frames);
+        std::size_t n = 0;
+        for (const std::size_t f : kept)
+            if (f != skip) sum += sweepScore(rows[v][f], score), ++n;
+        return sum / double(n);
     };
     const auto best_without = [&](std::size_t skip) {
         std::size_t best = 0;
@@ -314,12 +378,12 @@ LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepSco
         return best;
     };
     LeaveOneOut loo;
-    for (std::size_t f = 0; f < frames; ++f) {
+    for (const std::size_t f : kept) {
         LeaveOneOut::Fold fold;
         fold.frame = rows[0][f].frame;
         fold.chosen = best_without(f);
         fold.held_out = sweepScore(rows[fold.chosen][f], score);
-        loo.held_out_mean += fold.held_out / double(frames);
+        loo.held_out_mean += fold.held_out / double(kept.size());
         loo.folds.push_back(fold);
     }
     loo.in_sample = best_without(frames);

@@ -41,8 +41,16 @@ void writeFileBytes(const std::string& path, const unsigned char* data, std::siz
     // fclose flushes: a full disk may only show up here.
     const bool closed = std::fclose(file.release()) == 0;
     if (!written || !closed) {
-        throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+        const std::string reason = std::strerror(errno);
+        // No half a file under the final name (a device such as /dev/full is left alone).
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
+        throw std::runtime_error("cannot write '" + path + "': " + reason);
     }
+}
+
+void writeFileBytes(const std::string& path, const std::string& bytes) {
+    writeFileBytes(path, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
 }
 
 void movePartInPlace(const std::string& part, const std::string& path) {

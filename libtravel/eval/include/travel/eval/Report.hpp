@@ -27,9 +27,9 @@ std::string sequenceName(const std::string& scans_dir);
 /// The scans that have a label file, over all inputs in order (each as listScans() reads it: a
 /// scan, a folder of scans or a KITTI sequence folder), at most max_frames of them (when > 0).
 /// `labels` is empty (each input's own labels/ folder) or has one labels folder per input.
-/// Throws InputError for a missing labels folder or when no scan has a label.
+/// Throws InputError for a missing labels folder or an input none of whose scans has a label.
 std::vector<FrameRef> labelledFrames(const std::vector<std::string>& inputs,
-                                     const std::vector<std::string>& labels, int max_frames,
+                                     const std::vector<std::string>& labels, std::size_t max_frames,
                                      ScanFormat format = ScanFormat::Auto);
 
 /// "sequence 00, 000000-000002; sequence 01, ..." for the report header.
@@ -104,14 +104,20 @@ struct LeaveOneOut {
         std::size_t chosen = 0;  ///< index of the value best on the other frames (ties: first)
         double held_out = 0;     ///< that value's score on the held-out frame
     };
-    std::vector<Fold> folds;
+    std::vector<Fold> folds;    ///< one per frame with a score, in frame order
     double held_out_mean = 0;   ///< mean of the folds' held-out scores
     std::size_t in_sample = 0;  ///< index of the value best on all frames (ties: first)
     double in_sample_mean = 0;  ///< its mean score over all frames
 };
 /// `rows[v]` are the frame rows of value v (MethodRun::rows, same frames in the same order for
-/// every value). Needs two frames or more; throws std::invalid_argument otherwise.
+/// every value). Folds and means are over the frames with a score at every value: ground truth
+/// under the protocol (f1b, f1a), thing instances (coverage, purity; a frame the method did not
+/// cluster scores 0). Needs two such frames, and for coverage or purity a clustered frame
+/// (FrameRow::objects); throws std::invalid_argument otherwise.
 LeaveOneOut leaveOneOut(const std::vector<std::vector<FrameRow>>& rows, SweepScore score);
+/// The frames (indices into rows[v]) that have a score at every value, as leaveOneOut() uses.
+std::vector<std::size_t> scoredFrames(const std::vector<std::vector<FrameRow>>& rows,
+                                      SweepScore score);
 
 /// sweep_KEY_loo.csv: one row per fold, then the in-sample row.
 void writeLeaveOneOutCsv(std::ostream& csv, const SweepSpec& spec, SweepScore score,

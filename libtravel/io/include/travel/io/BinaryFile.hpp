@@ -18,8 +18,11 @@ namespace travel {
 void readFileBytes(const std::string& path, std::vector<unsigned char>& bytes);
 
 /// Writes `size` bytes to `path` (created or truncated). Throws std::runtime_error naming the
-/// file when it cannot be written (a full disk included: the close is checked).
+/// file when it cannot be written (a full disk or a file size limit included: the close is
+/// checked), after removing what was written: no half a file is left under `path`.
 void writeFileBytes(const std::string& path, const unsigned char* data, std::size_t size);
+/// The same for a text (or any byte string).
+void writeFileBytes(const std::string& path, const std::string& bytes);
 
 /// The last step of a write through a temporary `part` file (written beside `path`, so that a
 /// failed or interrupted write never leaves half a file under the final name): moves `part` to
