@@ -221,4 +221,33 @@ TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
     }
 }
 
+// MRPT reads enableSaveAs3DObject, enableObservationLikelihood and enableObservationInsertion
+// (TMapGenericParams) from every map's _creationOpts itself: they are no unknown keys there, and
+// MRPT applies them. In _insertOpts, where nothing reads them, they stay unknown.
+TEST(MapOptions, MrptsGenericMapKeysInCreationOptsAreLeftToMrpt) {
+    const std::string generic = "enableSaveAs3DObject=false\nenableObservationInsertion=false\n";
+    std::string ini = travel_map_test::mapIni("MAP");
+    const std::string creation = "_traversabilityMap_00_creationOpts]\n";
+    ini.insert(ini.find(creation) + creation.size(), generic);
+    mrpt::maps::TSetOfMetricMapInitializers initializers;
+    initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "MAP");
+    mrpt::maps::CMultiMetricMap maps(initializers);
+    auto map = maps.mapByClass<travel_mrpt::CTraversabilityMap>();
+    ASSERT_TRUE(map);
+    EXPECT_FALSE(map->genericMapParams.enableSaveAs3DObject);
+    EXPECT_FALSE(map->genericMapParams.enableObservationInsertion);
+    EXPECT_EQ(map->options().resolution, 0.25) << "the map's own keys are still read";
+
+    const std::string in_insert = travel_map_test::mapIni("MAP") + "enableSaveAs3DObject=false\n";
+    try {
+        mrpt::maps::TSetOfMetricMapInitializers bad;
+        bad.loadFromConfigFile(mrpt::config::CConfigFileMemory(in_insert), "MAP");
+        FAIL() << "no error for MRPT's key in _insertOpts";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown key 'enableSaveAs3DObject'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace

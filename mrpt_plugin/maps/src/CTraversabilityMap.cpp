@@ -45,8 +45,7 @@ CTraversabilityMap::TMapDefinition::TMapDefinition() = default;
 void CTraversabilityMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& sectionNamePrefix) {
     // One set of keys: a preset in either section is the base of both (docs/map.md).
-    options.loadFromConfigSections(
-        source, {sectionNamePrefix + "_creationOpts", sectionNamePrefix + "_insertOpts"});
+    options.loadFromMapDefinition(source, sectionNamePrefix);
 }
 
 void CTraversabilityMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {

@@ -39,11 +39,13 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     /// Throws travel::ConfigError naming the section and the key.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                             const std::string& section) override;
-    /// The keys of all `sections` as one section: a `preset` in any of them is the base of
-    /// every key of all of them (at most one preset). A CMultiMetricMap's creation and insertion
-    /// sections are read so.
-    void loadFromConfigSections(const mrpt::config::CConfigFileBase& source,
-                                const std::vector<std::string>& sections);
+    /// The options of a CMultiMetricMap map definition (`prefix`: "<section>_traversabilityMap_NN",
+    /// as TSetOfMetricMapInitializers names it): the keys of [<prefix>_creationOpts] and
+    /// [<prefix>_insertOpts] read as one section (a `preset` in either is the base of every key
+    /// of both; at most one preset), except the keys MRPT itself reads from _creationOpts for
+    /// every map (mrpt::maps::TMapGenericParams: enableSaveAs3DObject, ...).
+    void loadFromMapDefinition(const mrpt::config::CConfigFileBase& source,
+                               const std::string& prefix);
     /// Writes TravelFilterOptions' keys, then every map key.
     void saveToConfigFile(mrpt::config::CConfigFileBase& target,
                           const std::string& section) const override;
@@ -51,6 +53,12 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     void loadFromFile(const std::string& path);
     /// Throws travel::ConfigError naming the offending key.
     void validate() const;
+
+  private:
+    /// The keys of `sections` as one section, less those in `mrpt_keys` (lower case).
+    void loadFromSections(const mrpt::config::CConfigFileBase& source,
+                          const std::vector<std::string>& sections,
+                          const std::vector<std::string>& mrpt_keys);
 };
 
 }  // namespace travel_mrpt
