@@ -250,4 +250,48 @@ TEST(MapOptions, MrptsGenericMapKeysInCreationOptsAreLeftToMrpt) {
     }
 }
 
+// A section of this map kind that CMultiMetricMap never reads (misspelt index or suffix, index
+// beyond traversabilityMap_count) would lose its keys without a word: an error naming it and
+// the sections that are read. Sections of other maps or other CMultiMetricMap sections, and
+// empty sections, are not checked.
+TEST(MapOptions, SectionsCMultiMetricMapNeverReadsAreNamed) {
+    const auto errorFor = [](const std::string& ini) -> std::string {
+        try {
+            mrpt::maps::TSetOfMetricMapInitializers initializers;
+            initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "MAP");
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string head = "[MAP]\ntraversabilityMap_count=1\n";
+    for (const char* unread :
+         {"MAP_traversabilityMap_0_creationOpts", "MAP_traversabilityMap_00_creationOpt",
+          "MAP_traversabilityMap_01_insertOpts", "MAP_traversabilityMap_00_likelihoodOpts"}) {
+        const std::string message = errorFor(head + "[" + unread + "]\nresolution=0.5\n");
+        EXPECT_NE(message.find("section '" + std::string(unread) + "' is never read"),
+                  std::string::npos)
+            << unread << ": " << message;
+        EXPECT_NE(message.find("from the sections 'MAP_traversabilityMap_00_creationOpts' and "
+                               "'MAP_traversabilityMap_00_insertOpts' (traversabilityMap_count=1"),
+                  std::string::npos)
+            << message;
+    }
+    // Read: the right names in any letter case (MRPT's sections are case-insensitive), an empty
+    // misnamed section, another CMultiMetricMap section's map, another map kind.
+    EXPECT_EQ(errorFor(head + "[map_TRAVERSABILITYMAP_00_creationopts]\nresolution=0.5\n"), "");
+    EXPECT_EQ(errorFor(head + "[MAP_traversabilityMap_0_creationOpts]\n"), "");
+    EXPECT_EQ(errorFor(head + "[OTHER_traversabilityMap_00_creationOpts]\nresolution=0.5\n"), "");
+    EXPECT_EQ(errorFor(head + "[MAP_octoMap_00_creationOpts]\nresolution=0.5\n"), "");
+    // Two maps: both indices are read, the message names the range.
+    const std::string two =
+        "[MAP]\ntraversabilityMap_count=2\n[MAP_traversabilityMap_01_insertOpts]\n"
+        "max_step_height=0.2\n";
+    EXPECT_EQ(errorFor(two), "");
+    EXPECT_NE(errorFor(two + "[MAP_traversabilityMap_02_insertOpts]\nmax_step_height=0.2\n")
+                  .find("'MAP_traversabilityMap_NN_creationOpts' and "
+                        "'MAP_traversabilityMap_NN_insertOpts', NN from 00 to 01"),
+              std::string::npos);
+}
+
 }  // namespace

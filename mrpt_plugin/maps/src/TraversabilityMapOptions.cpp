@@ -1,7 +1,9 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel_mrpt/TraversabilityMapOptions.hpp"
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/format.h>
 #include <mrpt/maps/metric_map_types.h>
 #include <mrpt/system/string_utils.h>
 
@@ -28,6 +30,47 @@ std::vector<std::string> mrptGenericMapKeys() {
     return keys;
 }
 
+/// Throws when `source` has a section of this map kind under the CMultiMetricMap section of
+/// `prefix` ("<section>_traversabilityMap_NN") that CMultiMetricMap never reads, with keys in it.
+void checkNoUnreadMapSections(const mrpt::config::CConfigFileBase& source,
+                              const std::string& prefix) {
+    static const std::string kKind = "_traversabilityMap_";
+    const std::size_t at = prefix.rfind(kKind);
+    if (at == std::string::npos) return;  // not a CMultiMetricMap prefix
+    const std::string section = prefix.substr(0, at);
+    const uint64_t count = source.read_uint64_t(section, "traversabilityMap_count", 0);
+    std::vector<std::string> read;  // lower case
+    for (uint64_t i = 0; i < count; ++i)
+        for (const char* suffix : {"_creationOpts", "_insertOpts"})
+            read.push_back(travel::toLower(
+                mrpt::format("%s%s%02u%s", section.c_str(), kKind.c_str(), unsigned(i), suffix)));
+    const std::string kind_prefix = travel::toLower(section + kKind);
+    std::vector<std::string> sections;
+    source.getAllSections(sections);
+    for (const std::string& name : sections) {
+        const std::string lower = travel::toLower(name);
+        if (lower.rfind(kind_prefix, 0) != 0 ||
+            std::find(read.begin(), read.end(), lower) != read.end())
+            continue;
+        std::vector<std::string> keys;
+        source.getAllKeys(name, keys);
+        if (keys.empty()) continue;
+        std::string file;
+        if (const auto* on_disk = dynamic_cast<const mrpt::config::CConfigFile*>(&source))
+            file = on_disk->getAssociatedFile() + ": ";
+        const std::string read_names =
+            count > 1
+                ? "'" + section + kKind + "NN_creationOpts' and '" + section + kKind +
+                      "NN_insertOpts', NN from 00 to " + mrpt::format("%02u", unsigned(count - 1))
+                : "'" + prefix + "_creationOpts' and '" + prefix + "_insertOpts'";
+        throw travel::ConfigError(file + "section '" + name +
+                                  "' is never read: CMultiMetricMap reads this map kind's keys "
+                                  "from the sections " +
+                                  read_names + " (traversabilityMap_count=" +
+                                  std::to_string(count) + " in section '" + section + "')");
+    }
+}
+
 }  // namespace
 
 void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
@@ -37,6 +80,7 @@ void TraversabilityMapOptions::loadFromConfigFile(const mrpt::config::CConfigFil
 
 void TraversabilityMapOptions::loadFromMapDefinition(const mrpt::config::CConfigFileBase& source,
                                                      const std::string& prefix) {
+    checkNoUnreadMapSections(source, prefix);
     loadFromSections(source, {prefix + "_creationOpts", prefix + "_insertOpts"},
                      mrptGenericMapKeys());
 }

@@ -43,7 +43,10 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     /// as TSetOfMetricMapInitializers names it): the keys of [<prefix>_creationOpts] and
     /// [<prefix>_insertOpts] read as one section (a `preset` in either is the base of every key
     /// of both; at most one preset), except the keys MRPT itself reads from _creationOpts for
-    /// every map (mrpt::maps::TMapGenericParams: enableSaveAs3DObject, ...).
+    /// every map (mrpt::maps::TMapGenericParams: enableSaveAs3DObject, ...). A section of this
+    /// map kind under <section> that CMultiMetricMap never reads (a misspelt name, an index not
+    /// below traversabilityMap_count), with keys in it, is an error naming it and the sections
+    /// that are read: its keys would otherwise be lost without a word.
     void loadFromMapDefinition(const mrpt::config::CConfigFileBase& source,
                                const std::string& prefix);
     /// Writes TravelFilterOptions' keys, then every map key.
