@@ -349,7 +349,7 @@ void replayOnWorkers(Reader& reader, RawlogSegmenter& segmenter, mrpt::serializa
         slot.used = 0;
         const auto prepare = [&](CObservation& obs) {
             RecordSlot::Item& item = slot.add();
-            if (segmenter.prepare(obs, item.frame, item.job))
+            if (segmenter.prepare(obs, slot.index, item.frame, item.job))
                 item.obs = &obs;
             else
                 --slot.used;
