@@ -165,6 +165,20 @@ TEST(RawlogReader, NotARawlog) {
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;  // MRPT's message on one line
 }
 
+// A corrupt record's class name (MRPT quotes it) with a terminal escape sequence in it: the
+// message carries '?' for the control characters, not the sequence (ESC [2J clears the screen).
+TEST(RawlogReader, ControlCharactersReadFromTheFileAreNotPassedOn) {
+    const std::string path = testPath("escape.rawlog");
+    // MRPT's object header: 0x80 | length of the class name, the name, then the object.
+    std::ofstream(path, std::ios::binary) << std::string(
+                                                 "\x85"
+                                                 "A\x1b[2J") +
+                                                 std::string(11, '\0');
+    const std::string error = errorOf(path);
+    EXPECT_NE(error.find("class 'A?[2J'"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\x1b'), std::string::npos) << error;
+}
+
 TEST(RawlogReader, EmptyFile) {
     const std::string path = testPath("empty.rawlog");
     std::ofstream{path};
