@@ -3,7 +3,6 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -28,6 +27,7 @@
 #include "travel/io/BinaryFile.hpp"
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel/traversability/StaticScene.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
@@ -514,17 +514,18 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
     {
         travel::PartFile grid(prefix + ".travelgrid");
         {
-            mrpt::io::CFileGZOutputStream out;
-            if (!out.open(grid.part())) throw cannotWrite(grid, std::strerror(errno));
+            GzFileOutput out(grid.part(), grid.path());
             try {
                 auto archive = mrpt::serialization::archiveFrom(out);
                 archive << std::string(kGridFileMagic) << kGridFileVersion;
                 writeGridState(archive);
-                out.close();
             } catch (const std::exception& e) {
-                out.close();
-                throw cannotWrite(grid, travel_mrpt::mrptMessage(e.what()));
+                out.abandon();
+                const std::string message = mrptMessage(e.what());  // GzFileOutput's names it
+                throw message.rfind(grid.path(), 0) == 0 ? std::runtime_error(message)
+                                                         : cannotWrite(grid, message);
             }
+            out.close();
         }
         grid.commit();
     }
