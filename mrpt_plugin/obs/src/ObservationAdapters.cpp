@@ -14,6 +14,8 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <cmath>
+
 #include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
 
@@ -63,6 +65,10 @@ bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
     using namespace mrpt::obs;
     out.clear();
     obs.getSensorPose(sensor_pose);
+    for (const double v : {sensor_pose.x(), sensor_pose.y(), sensor_pose.z(), sensor_pose.yaw(),
+                           sensor_pose.pitch(), sensor_pose.roll()})
+        if (!std::isfinite(v))
+            return fail(why_not, "its sensorPose is not finite: " + sensor_pose.asString());
     if (auto* velodyne = dynamic_cast<const CObservationVelodyneScan*>(&obs))
         return velodyneToTravelCloud(*velodyne, out, why_not);
     if (auto* rotating = dynamic_cast<const CObservationRotatingScan*>(&obs))

@@ -36,7 +36,8 @@ namespace travel_mrpt {
 
 /// Converts any supported LiDAR observation. Returns false, leaving `out` empty and setting
 /// *why_not (if given) to a one-line reason, for observations without 3-D LiDAR data (other
-/// classes, a Velodyne scan without calibration, an empty range image ...).
+/// classes, a Velodyne scan without calibration, an empty range image ...) and for a sensorPose
+/// that is not finite (NaN or inf).
 /// `out` keeps its capacity: after the first frames no allocation happens.
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
                    mrpt::poses::CPose3D& sensor_pose, std::string* why_not = nullptr);
