@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "travel/ConfigIO.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
 
 namespace {
 
@@ -292,6 +294,29 @@ TEST(MapOptions, SectionsCMultiMetricMapNeverReadsAreNamed) {
                   .find("'MAP_traversabilityMap_NN_creationOpts' and "
                         "'MAP_traversabilityMap_NN_insertOpts', NN from 00 to 01"),
               std::string::npos);
+}
+
+// A robot pose with a NaN (a broken odometry) fuses nothing: insertObservation() returned true
+// and counted the frame while nothing reached the map. It is refused, with the reason.
+TEST(MapOptions, ANonFiniteRobotPoseIsRefusedNotSilentlyLost) {
+    mrpt::maps::TSetOfMetricMapInitializers initializers;
+    initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(travel_map_test::mapIni("MAP")),
+                                    "MAP");
+    mrpt::maps::CMultiMetricMap maps(initializers);
+    auto map = maps.mapByClass<travel_mrpt::CTraversabilityMap>();
+    ASSERT_TRUE(map);
+    map->filter().setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    const auto scene = travel_map_test::mapScene();
+    const auto obs = travel_map_test::sweep(scene, 0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(map->insertObservation(*obs, mrpt::poses::CPose3D(nan, 0, 0, 0, 0, 0)));
+    EXPECT_NE(map->lastRejection().find("the robot pose is not finite"), std::string::npos)
+        << map->lastRejection();
+    EXPECT_EQ(map->framesInserted(), 0u);
+    EXPECT_TRUE(map->insertObservation(*obs, travel_map_test::robotPoses().front()))
+        << map->lastRejection();
+    EXPECT_EQ(map->framesInserted(), 1u);
+    EXPECT_GT(map->grid().observedCells(), 0u);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
 namespace travel_mrpt {
@@ -277,6 +278,11 @@ bool CTraversabilityMap::internal_insertObservation(
     const mrpt::obs::CObservation& obs,
     const std::optional<const mrpt::poses::CPose3D>& robotPose) {
     const mrpt::poses::CPose3D pose = robotPose ? *robotPose : mrpt::poses::CPose3D();
+    if (!isFinitePose(pose)) {
+        last_rejection_ =
+            "'" + obs.sensorLabel + "': the robot pose is not finite: " + pose.asString();
+        return false;
+    }
     if (robotPose) filter_->setRobotPose(pose, obs.timestamp);
     last_rejection_.clear();
     if (!filter_->filter(obs, *frame_, &last_rejection_)) return false;
@@ -292,6 +298,12 @@ bool CTraversabilityMap::segment(const travel::PointCloud& cloud,
                                  const mrpt::poses::CPose3D& sensorPose) {
     if (cloud.empty()) {
         last_rejection_ = "'" + sensorLabel + "': empty point cloud";
+        return false;
+    }
+    if (!isFinitePose(robotPose) || !isFinitePose(sensorPose)) {
+        last_rejection_ = "'" + sensorLabel +
+                          "': the robot or sensor pose is not finite: " + robotPose.asString() +
+                          ", " + sensorPose.asString();
         return false;
     }
     last_rejection_.clear();
@@ -310,6 +322,9 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
 double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose,
                                     travel::RayEnds& rays) {
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
+    if (!isFinitePose(robotPose))
+        throw std::invalid_argument("fuseFrame: the robot pose is not finite: " +
+                                    robotPose.asString());
     const auto start = Clock::now();
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const AlignedInWorld world = alignedInWorld(frame, robotPose);

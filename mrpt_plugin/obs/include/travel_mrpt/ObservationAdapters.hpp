@@ -42,6 +42,9 @@ namespace travel_mrpt {
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
                    mrpt::poses::CPose3D& sensor_pose, std::string* why_not = nullptr);
 
+/// True when every coordinate and angle of `pose` is finite (no NaN, no inf).
+bool isFinitePose(const mrpt::poses::CPose3D& pose);
+
 /// True for the observation classes toTravelCloud() understands (cheap: no conversion), except
 /// TRAVEL's own outputs (isTravelOutput(): the per-class clouds travel-rawlog writes beside its
 /// labels), which are not LiDAR frames: every consumer (TravelFilter, the map layer, the apps)
