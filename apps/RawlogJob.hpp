@@ -145,7 +145,7 @@ class RawlogSegmenter {
     /// Processes one observation of the record, appending the outputs to `added`.
     void processObservation(const CObservation& obs, long record,
                             std::vector<CObservation::Ptr>& added) {
-        if (!prepare(obs, frame_, job_)) return;
+        if (!prepare(obs, record, frame_, job_)) return;
         const double segment_ms = segmentFrame(*job_.pipeline, frame_, job_.input);
         complete(obs, record, frame_, job_, job_.pipeline->aligned(), segment_ms, added);
     }
@@ -154,7 +154,7 @@ class RawlogSegmenter {
     /// the checks and notes, the conversion; true when `frame` is to be segmented with
     /// job.pipeline or a settled copy of it), the segmentation on any thread, then complete()
     /// in record order with the aligned cloud of that segmentation (kept alive by the caller).
-    bool prepare(const CObservation& obs, travel_mrpt::TravelFrame& frame,
+    bool prepare(const CObservation& obs, long record, travel_mrpt::TravelFrame& frame,
                  travel_mrpt::TravelFilter::FrameJob& job) {
         if (processMotion(obs) || !travel_mrpt::isLidarObservation(obs)) return false;
         std::string why_not;
@@ -164,7 +164,10 @@ class RawlogSegmenter {
             return false;
         }
         ++totals_.skipped;
-        noteOnce("skipped " + obs.sensorLabel + " (" + why_not + ")");
+        // Once per reason, naming the first record it happens to (as travel-map does).
+        if (skip_reasons_.insert(why_not).second)
+            noteOnce(where(options_.input, record) + ": skipped: " + why_not +
+                     " (not repeated for other frames)");
         return false;
     }
     void complete(const CObservation& obs, long record, travel_mrpt::TravelFrame& frame,
@@ -256,7 +259,8 @@ class RawlogSegmenter {
     mrpt::img::CImage image_;  // reused across frames
     travel_mrpt::LabelledOutputPool outputs_;
     Totals totals_;
-    travel_mrpt::TravelFrame frame_;  // reused across frames (processObservation)
+    std::set<std::string> skip_reasons_;  // why LiDAR frames were skipped, each noted once
+    travel_mrpt::TravelFrame frame_;      // reused across frames (processObservation)
     travel_mrpt::TravelFilter::FrameJob job_;
 };
 

@@ -3,7 +3,6 @@
 // travel-map: builds a travel_mrpt::CTraversabilityMap (2-D traversability grid + OctoMap)
 // from an MRPT rawlog or a KITTI sequence and writes every export (see --help).
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservationPointCloud.h>
@@ -31,6 +30,7 @@
 #include "travel/io/ScanList.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
@@ -218,8 +218,7 @@ int run(int argc, char** argv) {
         const travel::apps::MuteLibraryStderr mute;  // liboctomap's " done." per tree write
         written = travel_mrpt::exportAll(map, prefix);
         travel::PartFile file(prefix + ".travelmap");
-        mrpt::io::CFileGZOutputStream out;
-        if (!out.open(file.part())) throw std::runtime_error(file.path() + ": cannot write");
+        travel_mrpt::GzFileOutput out(file.part(), file.path());
         mrpt::serialization::archiveFrom(out) << map;
         out.close();
         file.commit();

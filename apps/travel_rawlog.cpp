@@ -11,7 +11,6 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/img/CImage.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CPointsMapXYZI.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -48,6 +47,7 @@
 #include "travel_mrpt/Attitude.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
@@ -349,7 +349,7 @@ void replayOnWorkers(Reader& reader, RawlogSegmenter& segmenter, mrpt::serializa
         slot.used = 0;
         const auto prepare = [&](CObservation& obs) {
             RecordSlot::Item& item = slot.add();
-            if (segmenter.prepare(obs, item.frame, item.job))
+            if (segmenter.prepare(obs, slot.index, item.frame, item.job))
                 item.obs = &obs;
             else
                 --slot.used;
@@ -424,8 +424,7 @@ int run(int argc, char** argv) {
     RawlogSegmenter segmenter(options, filter_options);
     travel::apps::createParentFolder(options.output);
     travel::PartFile output(options.output);  // never a half-written rawlog under the name
-    mrpt::io::CFileGZOutputStream out_file;
-    if (!out_file.open(output.part())) throw AppError(output.part() + ": cannot open for writing");
+    travel_mrpt::GzFileOutput out_file(output.part(), output.path());
     auto out = mrpt::serialization::archiveFrom(out_file);
 
     const auto start = Clock::now();
@@ -441,7 +440,7 @@ int run(int argc, char** argv) {
         progress.finish();
     } catch (...) {
         progress.finish();
-        out_file.close();  // before `output` removes the part file
+        out_file.abandon();  // before `output` removes the part file
         throw;
     }
     out_file.close();

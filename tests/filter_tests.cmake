@@ -12,7 +12,7 @@ target_link_libraries(travel_synthetic_rawlog
 target_compile_options(travel_synthetic_rawlog PRIVATE -Wall -Wextra -Wpedantic)
 
 add_executable(make_synthetic_rawlog ${CMAKE_CURRENT_LIST_DIR}/make_synthetic_rawlog.cpp)
-target_link_libraries(make_synthetic_rawlog PRIVATE travel_synthetic_rawlog)
+target_link_libraries(make_synthetic_rawlog PRIVATE travel_synthetic_rawlog mrpt::maps mrpt::obs)
 target_compile_options(make_synthetic_rawlog PRIVATE -Wall -Wextra -Wpedantic)
 
 travel_mrpt_test(test_travel_filter test_travel_filter.cpp)

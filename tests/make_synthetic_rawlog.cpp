@@ -5,6 +5,13 @@
 // for command-line tests, in the observations format (default) or the SensoryFrame format
 // (empty actions; with --odometry-actions each CActionCollection holds a
 // CActionRobotMovement2D with the true planar pose increment since the previous LiDAR frame).
+// --unusable-frames (observations format): after the 2nd and the 4th LiDAR frame an observation
+// of the same sensor label without any point (an empty CObservationPointCloud), as a driver
+// that lost a sweep writes; the tools skip such frames and say so.
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CObservationRotatingScan.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -13,8 +20,11 @@
 #include "SyntheticRawlog.hpp"
 
 int main(int argc, char** argv) {
-    bool sensory_frames = false, odometry_actions = false;
-    if (argc >= 3 && std::string(argv[argc - 1]) == "--sensory-frames") {
+    bool sensory_frames = false, odometry_actions = false, unusable_frames = false;
+    if (argc >= 3 && std::string(argv[argc - 1]) == "--unusable-frames") {
+        unusable_frames = true;
+        --argc;
+    } else if (argc >= 3 && std::string(argv[argc - 1]) == "--sensory-frames") {
         sensory_frames = true;
         --argc;
     } else if (argc >= 3 && std::string(argv[argc - 1]) == "--odometry-actions") {
@@ -24,7 +34,7 @@ int main(int argc, char** argv) {
     if (argc < 2 || argc > 3) {
         std::fprintf(stderr,
                      "usage: %s OUT.rawlog [FRAMES (default 10)] [--sensory-frames | "
-                     "--odometry-actions]\n",
+                     "--odometry-actions | --unusable-frames]\n",
                      argv[0]);
         return 2;
     }
@@ -40,7 +50,22 @@ int main(int argc, char** argv) {
             }
             options.frames = static_cast<int>(frames);
         }
-        const travel_test::SyntheticRawlog rawlog = travel_test::makeSyntheticRawlog(options);
+        travel_test::SyntheticRawlog rawlog = travel_test::makeSyntheticRawlog(options);
+        if (unusable_frames) {
+            auto& records = rawlog.records;
+            int lidar = 0;
+            for (auto it = records.begin(); it != records.end(); ++it) {
+                const auto scan =
+                    std::dynamic_pointer_cast<mrpt::obs::CObservationRotatingScan>(*it);
+                if (!scan || (++lidar != 2 && lidar != 4)) continue;
+                auto empty = mrpt::obs::CObservationPointCloud::Create();
+                empty->sensorLabel = scan->sensorLabel;
+                empty->timestamp = scan->timestamp;
+                empty->sensorPose = scan->sensorPose;
+                empty->pointcloud = mrpt::maps::CSimplePointsMap::Create();
+                it = records.insert(std::next(it), empty);
+            }
+        }
         if (sensory_frames)
             travel_test::writeSensoryFrameRawlog(rawlog, argv[1], odometry_actions);
         else

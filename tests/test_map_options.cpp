@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "travel/ConfigIO.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/TravelFilter.hpp"
 
 namespace {
 
@@ -219,6 +221,102 @@ TEST(MapOptions, CMultiMetricMapCreatesTheMapFromAnIni) {
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find("colour"), std::string::npos) << e.what();
     }
+}
+
+// MRPT reads enableSaveAs3DObject, enableObservationLikelihood and enableObservationInsertion
+// (TMapGenericParams) from every map's _creationOpts itself: they are no unknown keys there, and
+// MRPT applies them. In _insertOpts, where nothing reads them, they stay unknown.
+TEST(MapOptions, MrptsGenericMapKeysInCreationOptsAreLeftToMrpt) {
+    const std::string generic = "enableSaveAs3DObject=false\nenableObservationInsertion=false\n";
+    std::string ini = travel_map_test::mapIni("MAP");
+    const std::string creation = "_traversabilityMap_00_creationOpts]\n";
+    ini.insert(ini.find(creation) + creation.size(), generic);
+    mrpt::maps::TSetOfMetricMapInitializers initializers;
+    initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "MAP");
+    mrpt::maps::CMultiMetricMap maps(initializers);
+    auto map = maps.mapByClass<travel_mrpt::CTraversabilityMap>();
+    ASSERT_TRUE(map);
+    EXPECT_FALSE(map->genericMapParams.enableSaveAs3DObject);
+    EXPECT_FALSE(map->genericMapParams.enableObservationInsertion);
+    EXPECT_EQ(map->options().resolution, 0.25) << "the map's own keys are still read";
+
+    const std::string in_insert = travel_map_test::mapIni("MAP") + "enableSaveAs3DObject=false\n";
+    try {
+        mrpt::maps::TSetOfMetricMapInitializers bad;
+        bad.loadFromConfigFile(mrpt::config::CConfigFileMemory(in_insert), "MAP");
+        FAIL() << "no error for MRPT's key in _insertOpts";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown key 'enableSaveAs3DObject'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// A section of this map kind that CMultiMetricMap never reads (misspelt index or suffix, index
+// beyond traversabilityMap_count) would lose its keys without a word: an error naming it and
+// the sections that are read. Sections of other maps or other CMultiMetricMap sections, and
+// empty sections, are not checked.
+TEST(MapOptions, SectionsCMultiMetricMapNeverReadsAreNamed) {
+    const auto errorFor = [](const std::string& ini) -> std::string {
+        try {
+            mrpt::maps::TSetOfMetricMapInitializers initializers;
+            initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "MAP");
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string head = "[MAP]\ntraversabilityMap_count=1\n";
+    for (const char* unread :
+         {"MAP_traversabilityMap_0_creationOpts", "MAP_traversabilityMap_00_creationOpt",
+          "MAP_traversabilityMap_01_insertOpts", "MAP_traversabilityMap_00_likelihoodOpts"}) {
+        const std::string message = errorFor(head + "[" + unread + "]\nresolution=0.5\n");
+        EXPECT_NE(message.find("section '" + std::string(unread) + "' is never read"),
+                  std::string::npos)
+            << unread << ": " << message;
+        EXPECT_NE(message.find("from the sections 'MAP_traversabilityMap_00_creationOpts' and "
+                               "'MAP_traversabilityMap_00_insertOpts' (traversabilityMap_count=1"),
+                  std::string::npos)
+            << message;
+    }
+    // Read: the right names in any letter case (MRPT's sections are case-insensitive), an empty
+    // misnamed section, another CMultiMetricMap section's map, another map kind.
+    EXPECT_EQ(errorFor(head + "[map_TRAVERSABILITYMAP_00_creationopts]\nresolution=0.5\n"), "");
+    EXPECT_EQ(errorFor(head + "[MAP_traversabilityMap_0_creationOpts]\n"), "");
+    EXPECT_EQ(errorFor(head + "[OTHER_traversabilityMap_00_creationOpts]\nresolution=0.5\n"), "");
+    EXPECT_EQ(errorFor(head + "[MAP_octoMap_00_creationOpts]\nresolution=0.5\n"), "");
+    // Two maps: both indices are read, the message names the range.
+    const std::string two =
+        "[MAP]\ntraversabilityMap_count=2\n[MAP_traversabilityMap_01_insertOpts]\n"
+        "max_step_height=0.2\n";
+    EXPECT_EQ(errorFor(two), "");
+    EXPECT_NE(errorFor(two + "[MAP_traversabilityMap_02_insertOpts]\nmax_step_height=0.2\n")
+                  .find("'MAP_traversabilityMap_NN_creationOpts' and "
+                        "'MAP_traversabilityMap_NN_insertOpts', NN from 00 to 01"),
+              std::string::npos);
+}
+
+// A robot pose with a NaN (a broken odometry) fuses nothing: insertObservation() returned true
+// and counted the frame while nothing reached the map. It is refused, with the reason.
+TEST(MapOptions, ANonFiniteRobotPoseIsRefusedNotSilentlyLost) {
+    mrpt::maps::TSetOfMetricMapInitializers initializers;
+    initializers.loadFromConfigFile(mrpt::config::CConfigFileMemory(travel_map_test::mapIni("MAP")),
+                                    "MAP");
+    mrpt::maps::CMultiMetricMap maps(initializers);
+    auto map = maps.mapByClass<travel_mrpt::CTraversabilityMap>();
+    ASSERT_TRUE(map);
+    map->filter().setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    const auto scene = travel_map_test::mapScene();
+    const auto obs = travel_map_test::sweep(scene, 0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(map->insertObservation(*obs, mrpt::poses::CPose3D(nan, 0, 0, 0, 0, 0)));
+    EXPECT_NE(map->lastRejection().find("the robot pose is not finite"), std::string::npos)
+        << map->lastRejection();
+    EXPECT_EQ(map->framesInserted(), 0u);
+    EXPECT_TRUE(map->insertObservation(*obs, travel_map_test::robotPoses().front()))
+        << map->lastRejection();
+    EXPECT_EQ(map->framesInserted(), 1u);
+    EXPECT_GT(map->grid().observedCells(), 0u);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // robot pose from odometry actions and odometry observations.
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -19,9 +20,12 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "travel/Errors.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/RawlogReader.hpp"
 #include "travel_mrpt/Registration.hpp"
@@ -163,6 +167,66 @@ TEST(RawlogReader, NotARawlog) {
     const std::string expected = path + ": record 0: cannot read (is it an MRPT rawlog?): ";
     EXPECT_EQ(error.substr(0, expected.size()), expected) << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;  // MRPT's message on one line
+}
+
+// A corrupt record's class name (MRPT quotes it) with a terminal escape sequence in it: the
+// message carries '?' for the control characters, not the sequence (ESC [2J clears the screen).
+TEST(RawlogReader, ControlCharactersReadFromTheFileAreNotPassedOn) {
+    const std::string path = testPath("escape.rawlog");
+    // MRPT's object header: 0x80 | length of the class name, the name, then the object.
+    std::ofstream(path, std::ios::binary) << std::string(
+                                                 "\x85"
+                                                 "A\x1b[2J") +
+                                                 std::string(11, '\0');
+    const std::string error = errorOf(path);
+    EXPECT_NE(error.find("class 'A?[2J'"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\x1b'), std::string::npos) << error;
+}
+
+// The writer of every gzip output (rawlogs, .travelmap, .gridmap.gz, .travelgrid): a write
+// that fails and a file cut short at close (zlib flushes its last bytes there; MRPT's
+// CFileGZOutputStream ignores that failure, so a full disk gave a truncated file and no error)
+// are errors naming the file. /dev/full fails every write with ENOSPC.
+TEST(GzFileOutput, FailuresOfAFullDiskNameTheFile) {
+    // Written and read back; the gzip trailer holds the uncompressed size.
+    const std::string path = testPath("gz_output.bin");
+    {
+        travel_mrpt::GzFileOutput out(path);
+        auto archive = mrpt::serialization::archiveFrom(out);
+        archive << std::string("TRAVEL") << uint32_t(7);
+        out.close();
+        EXPECT_TRUE(travel::gzipEndsWithSize(path, out.getPosition()));
+        EXPECT_FALSE(travel::gzipEndsWithSize(path, out.getPosition() + 1));
+    }
+    {
+        mrpt::io::CFileGZInputStream in(path);
+        std::string text;
+        uint32_t value = 0;
+        auto archive = mrpt::serialization::archiveFrom(in);
+        archive >> text >> value;
+        EXPECT_EQ(text, "TRAVEL");
+        EXPECT_EQ(value, 7u);
+    }
+    if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+    const auto errorOf = [](std::size_t bytes) -> std::string {
+        try {
+            travel_mrpt::GzFileOutput out("/dev/full", "site.travelgrid");
+            const std::vector<uint32_t> data(bytes / 4, 0x12345u);
+            for (uint32_t k = 0; k < data.size(); ++k) {
+                const uint32_t v = data[k] * k;  // not all alike: zlib has to write
+                out.Write(&v, sizeof(v));
+            }
+            out.close();
+        } catch (const std::runtime_error& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    // A few bytes stay in zlib's buffer until close(); many fail while being written.
+    EXPECT_EQ(errorOf(100),
+              "site.travelgrid: cannot write (the file ends before its gzip "
+              "trailer: disk full?)");
+    EXPECT_EQ(errorOf(4 << 20), "site.travelgrid: cannot write (No space left on device)");
 }
 
 TEST(RawlogReader, EmptyFile) {

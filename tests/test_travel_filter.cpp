@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
@@ -456,6 +457,27 @@ TEST(TravelFilter, RefusesNonLidarAndEmptyObservations) {
     EXPECT_FALSE(filter.filter(*empty, frame, &why));
     EXPECT_NE(why.find("without any return"), std::string::npos) << why;
     EXPECT_FALSE(filter.filter(imu, frame));  // why_not is optional
+}
+
+// A sensorPose with a NaN (a corrupt record, a driver's bug) is the observation's fault: refused
+// with its label and why (the rawlog tools skip it and name the record), not a configuration
+// error about mount_pitch_deg that ends the run.
+TEST(TravelFilter, RefusesObservationsWithANonFiniteSensorPose) {
+    TravelFilter filter;
+    filter.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    travel_mrpt::TravelFrame frame;
+    std::string why;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const mrpt::poses::CPose3D& pose :
+         {mrpt::poses::CPose3D(0, 0, 1.8, nan, 0, 0), mrpt::poses::CPose3D(nan, 0, 1.8, 0, 0, 0)}) {
+        auto scan = smallRotatingScan(pose, 1.0);
+        EXPECT_FALSE(filter.filter(*scan, frame, &why));
+        EXPECT_NE(why.find("'" + scan->sensorLabel + "': its sensorPose is not finite"),
+                  std::string::npos)
+            << why;
+    }
+    auto good = smallRotatingScan(mrpt::poses::CPose3D(0, 0, 1.8, 0, 0, 0), 1.0);
+    EXPECT_TRUE(filter.filter(*good, frame, &why)) << why;
 }
 
 // travel-rawlog writes per-class clouds beside its labels ("<label>_ground" ...): reading such a

@@ -117,6 +117,19 @@ if(EXISTS ${SAMPLE})
     message(FATAL_ERROR "a failed run left an output rawlog behind")
   endif()
 endif()
+# LiDAR observations without points (two, after frames 2 and 4): skipped and counted, and one
+# note naming the first record and why (as travel-map's notes), not one per frame.
+expect_success(${MAKE_SYNTHETIC} ${WORK_DIR}/unusable.rawlog 5 --unusable-frames)
+expect_success(${TRAVEL_RAWLOG} -i ${WORK_DIR}/unusable.rawlog -o ${WORK_DIR}/unusable_out.rawlog
+               ${moving_config})
+expect_in("${last_output}" "LiDAR frames processed: 5, skipped: 2")
+string(REGEX MATCHALL "unusable.rawlog: record [0-9]+: skipped: 'VLP16': empty point cloud \\(not repeated"
+       notes "${last_output}")
+list(LENGTH notes count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "skipped frames: ${count} notes naming the record (want 1):\n${last_output}")
+endif()
+
 # Only IMU / odometry: the sensor label regex selects nothing LiDAR.
 expect_failure_mentioning("no LiDAR observation processed" ${TRAVEL_RAWLOG}
                           -i ${WORK_DIR}/moving.rawlog -o ${WORK_DIR}/x.rawlog ${moving_config}

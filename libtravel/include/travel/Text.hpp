@@ -23,6 +23,15 @@ inline std::string toLower(std::string_view text) {
     return out;
 }
 
+/// `text` with every ASCII control character (bytes 0x00-0x1f and 0x7f, tabs and line ends
+/// included) replaced by '?': bytes read from a file (a class name, a key) quoted in a one-line
+/// message, without sending a terminal their escape sequences. Other bytes (UTF-8) are kept.
+inline std::string withoutControlCharacters(std::string text) {
+    for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    return text;
+}
+
 /// "a,b,c" -> {"a", "b", "c"} for sep ','; "" -> {}; "a,,b" and "a,b," keep their empty items.
 inline std::vector<std::string> splitList(std::string_view text, char sep) {
     std::vector<std::string> items;

@@ -63,6 +63,17 @@ void movePartInPlace(const std::string& part, const std::string& path) {
                              ")");
 }
 
+bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
+    const FilePtr file(std::fopen(path.c_str(), "rb"));
+    unsigned char trailer[8];
+    // The smallest gzip file: a 10-byte header, an empty deflate block (2), the trailer (8).
+    if (!file || std::fseek(file.get(), 0, SEEK_END) != 0 || std::ftell(file.get()) < 20 ||
+        std::fseek(file.get(), -8, SEEK_END) != 0 ||
+        std::fread(trailer, 1, sizeof(trailer), file.get()) != sizeof(trailer))
+        return false;
+    return le::load<uint32_t>(trailer + 4) == uint32_t(uncompressed_bytes);
+}
+
 PartFile::PartFile(std::string path) : path_(std::move(path)), part_(path_ + ".part") {}
 
 PartFile::~PartFile() {

@@ -3,7 +3,6 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -28,8 +27,10 @@
 #include "travel/io/BinaryFile.hpp"
 #include "travel/traversability/FrameFusion.hpp"
 #include "travel/traversability/StaticScene.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
+#include "travel_mrpt/ObservationAdapters.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
 
 namespace travel_mrpt {
@@ -45,8 +46,7 @@ CTraversabilityMap::TMapDefinition::TMapDefinition() = default;
 void CTraversabilityMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& sectionNamePrefix) {
     // One set of keys: a preset in either section is the base of both (docs/map.md).
-    options.loadFromConfigSections(
-        source, {sectionNamePrefix + "_creationOpts", sectionNamePrefix + "_insertOpts"});
+    options.loadFromMapDefinition(source, sectionNamePrefix);
 }
 
 void CTraversabilityMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
@@ -278,6 +278,11 @@ bool CTraversabilityMap::internal_insertObservation(
     const mrpt::obs::CObservation& obs,
     const std::optional<const mrpt::poses::CPose3D>& robotPose) {
     const mrpt::poses::CPose3D pose = robotPose ? *robotPose : mrpt::poses::CPose3D();
+    if (!isFinitePose(pose)) {
+        last_rejection_ =
+            "'" + obs.sensorLabel + "': the robot pose is not finite: " + pose.asString();
+        return false;
+    }
     if (robotPose) filter_->setRobotPose(pose, obs.timestamp);
     last_rejection_.clear();
     if (!filter_->filter(obs, *frame_, &last_rejection_)) return false;
@@ -293,6 +298,12 @@ bool CTraversabilityMap::segment(const travel::PointCloud& cloud,
                                  const mrpt::poses::CPose3D& sensorPose) {
     if (cloud.empty()) {
         last_rejection_ = "'" + sensorLabel + "': empty point cloud";
+        return false;
+    }
+    if (!isFinitePose(robotPose) || !isFinitePose(sensorPose)) {
+        last_rejection_ = "'" + sensorLabel +
+                          "': the robot or sensor pose is not finite: " + robotPose.asString() +
+                          ", " + sensorPose.asString();
         return false;
     }
     last_rejection_.clear();
@@ -311,6 +322,9 @@ void CTraversabilityMap::fuseFrame(const TravelFrame& frame,
 double CTraversabilityMap::fuseGrid(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose,
                                     travel::RayEnds& rays) {
     if (!frame.aligned) throw std::invalid_argument("fuseFrame: the frame has no aligned cloud");
+    if (!isFinitePose(robotPose))
+        throw std::invalid_argument("fuseFrame: the robot pose is not finite: " +
+                                    robotPose.asString());
     const auto start = Clock::now();
     // aligned -> sensor (R_align^T) -> world (robot pose + sensor pose).
     const AlignedInWorld world = alignedInWorld(frame, robotPose);
@@ -515,17 +529,18 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
     {
         travel::PartFile grid(prefix + ".travelgrid");
         {
-            mrpt::io::CFileGZOutputStream out;
-            if (!out.open(grid.part())) throw cannotWrite(grid, std::strerror(errno));
+            GzFileOutput out(grid.part(), grid.path());
             try {
                 auto archive = mrpt::serialization::archiveFrom(out);
                 archive << std::string(kGridFileMagic) << kGridFileVersion;
                 writeGridState(archive);
-                out.close();
             } catch (const std::exception& e) {
-                out.close();
-                throw cannotWrite(grid, travel_mrpt::mrptMessage(e.what()));
+                out.abandon();
+                const std::string message = mrptMessage(e.what());  // GzFileOutput's names it
+                throw message.rfind(grid.path(), 0) == 0 ? std::runtime_error(message)
+                                                         : cannotWrite(grid, message);
             }
+            out.close();
         }
         grid.commit();
     }

@@ -3,7 +3,6 @@
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/color_maps.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CHeightGridMap2D.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/opengl/COpenGLScene.h>
@@ -18,6 +17,7 @@
 #include "travel/viz/GridPictures.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
+#include "travel_mrpt/GzFileOutput.hpp"
 
 namespace travel_mrpt {
 namespace {
@@ -37,8 +37,7 @@ mrpt::img::CImage pngImage(const travel::viz::Raster& raster, int min_side) {
 
 template <class T>
 void writeSerializedGz(const T& object, const std::string& path) {
-    mrpt::io::CFileGZOutputStream file;
-    if (!file.open(path)) throw std::runtime_error(path + ": cannot open for writing");
+    GzFileOutput file(path);
     auto archive = mrpt::serialization::archiveFrom(file);
     archive << object;
     file.close();

@@ -14,6 +14,8 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <cmath>
+
 #include "travel_mrpt/LabelledOutputs.hpp"
 #include "travel_mrpt/MrptMessage.hpp"
 
@@ -49,6 +51,12 @@ void assignXYZ(const Vec& xs, const Vec& ys, const Vec& zs, travel::PointCloud& 
 
 }  // namespace
 
+bool isFinitePose(const mrpt::poses::CPose3D& pose) {
+    for (const double v : {pose.x(), pose.y(), pose.z(), pose.yaw(), pose.pitch(), pose.roll()})
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
 bool isLidarObservation(const mrpt::obs::CObservation& obs) {
     using namespace mrpt::obs;
     return (dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
@@ -63,6 +71,8 @@ bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
     using namespace mrpt::obs;
     out.clear();
     obs.getSensorPose(sensor_pose);
+    if (!isFinitePose(sensor_pose))
+        return fail(why_not, "its sensorPose is not finite: " + sensor_pose.asString());
     if (auto* velodyne = dynamic_cast<const CObservationVelodyneScan*>(&obs))
         return velodyneToTravelCloud(*velodyne, out, why_not);
     if (auto* rotating = dynamic_cast<const CObservationRotatingScan*>(&obs))

@@ -92,12 +92,14 @@ class CTraversabilityMap : public mrpt::maps::CMetricMap {
     /// sensorPose on the robot) taken at robotPose and time t, into `frame`; fuseFrame(frame,
     /// robotPose) fuses it (before the next segment(): frame.aligned is the filter's buffer).
     /// Frames are segmented in time order. segment() uses only the filter. Returns false (and
-    /// lastRejection()) for an empty cloud.
+    /// lastRejection()) for an empty cloud or a robot or sensor pose that is not finite (as
+    /// insertObservation(), which refuses a NaN robot pose so).
     bool segment(const travel::PointCloud& cloud, const mrpt::poses::CPose3D& robotPose,
                  mrpt::Clock::time_point t, TravelFrame& frame,
                  const std::string& sensorLabel = "lidar",
                  const mrpt::poses::CPose3D& sensorPose = {});
-    /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid.
+    /// Fuses an already segmented frame taken at robotPose (world). frame.aligned must be valid
+    /// and robotPose finite (std::invalid_argument otherwise).
     /// The same as fuseGrid() then fuseVoxels().
     void fuseFrame(const TravelFrame& frame, const mrpt::poses::CPose3D& robotPose);
     /// fuseFrame() in two halves, for callers that overlap them on two threads: fuseGrid()

@@ -39,11 +39,16 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     /// Throws travel::ConfigError naming the section and the key.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                             const std::string& section) override;
-    /// The keys of all `sections` as one section: a `preset` in any of them is the base of
-    /// every key of all of them (at most one preset). A CMultiMetricMap's creation and insertion
-    /// sections are read so.
-    void loadFromConfigSections(const mrpt::config::CConfigFileBase& source,
-                                const std::vector<std::string>& sections);
+    /// The options of a CMultiMetricMap map definition (`prefix`: "<section>_traversabilityMap_NN",
+    /// as TSetOfMetricMapInitializers names it): the keys of [<prefix>_creationOpts] and
+    /// [<prefix>_insertOpts] read as one section (a `preset` in either is the base of every key
+    /// of both; at most one preset), except the keys MRPT itself reads from _creationOpts for
+    /// every map (mrpt::maps::TMapGenericParams: enableSaveAs3DObject, ...). A section of this
+    /// map kind under <section> that CMultiMetricMap never reads (a misspelt name, an index not
+    /// below traversabilityMap_count), with keys in it, is an error naming it and the sections
+    /// that are read: its keys would otherwise be lost without a word.
+    void loadFromMapDefinition(const mrpt::config::CConfigFileBase& source,
+                               const std::string& prefix);
     /// Writes TravelFilterOptions' keys, then every map key.
     void saveToConfigFile(mrpt::config::CConfigFileBase& target,
                           const std::string& section) const override;
@@ -51,6 +56,12 @@ struct TraversabilityMapOptions : public mrpt::config::CLoadableOptions, public 
     void loadFromFile(const std::string& path);
     /// Throws travel::ConfigError naming the offending key.
     void validate() const;
+
+  private:
+    /// The keys of `sections` as one section, less those in `mrpt_keys` (lower case).
+    void loadFromSections(const mrpt::config::CConfigFileBase& source,
+                          const std::vector<std::string>& sections,
+                          const std::vector<std::string>& mrpt_keys);
 };
 
 }  // namespace travel_mrpt

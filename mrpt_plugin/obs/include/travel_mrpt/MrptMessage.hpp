@@ -8,12 +8,15 @@
 #include <sstream>
 #include <string>
 
+#include "travel/Text.hpp"
+
 namespace travel_mrpt {
 
 /// MRPT's exception texts span many lines (a banner, nested "Message:" lines, locations, a call
 /// stack): the innermost "Message:" says what went wrong; without one, the first line that is
 /// neither the banner nor the call stack (e.g. OpenCV's error). MRPT's hint about gzip is dropped
-/// (the readers take plain and gzip files alike). A one-line text is kept as it is.
+/// (the readers take plain and gzip files alike). A one-line text is kept as it is. Control
+/// characters (MRPT quotes what it read, e.g. the class name of a corrupt record) become '?'.
 inline std::string mrptMessage(const std::string& text) {
     std::istringstream lines(text);
     std::string line, message, first;
@@ -34,7 +37,7 @@ inline std::string mrptMessage(const std::string& text) {
     std::string best = message.empty() ? first : message;
     const auto hint = best.find(" (Perhaps it's a gz");
     if (hint != std::string::npos) best.erase(hint);
-    return best.empty() ? text : best;
+    return travel::withoutControlCharacters(best.empty() ? text : best);
 }
 
 }  // namespace travel_mrpt

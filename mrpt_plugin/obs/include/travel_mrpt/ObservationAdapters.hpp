@@ -36,10 +36,14 @@ namespace travel_mrpt {
 
 /// Converts any supported LiDAR observation. Returns false, leaving `out` empty and setting
 /// *why_not (if given) to a one-line reason, for observations without 3-D LiDAR data (other
-/// classes, a Velodyne scan without calibration, an empty range image ...).
+/// classes, a Velodyne scan without calibration, an empty range image ...) and for a sensorPose
+/// that is not finite (NaN or inf).
 /// `out` keeps its capacity: after the first frames no allocation happens.
 bool toTravelCloud(const mrpt::obs::CObservation& obs, travel::PointCloud& out,
                    mrpt::poses::CPose3D& sensor_pose, std::string* why_not = nullptr);
+
+/// True when every coordinate and angle of `pose` is finite (no NaN, no inf).
+bool isFinitePose(const mrpt::poses::CPose3D& pose);
 
 /// True for the observation classes toTravelCloud() understands (cheap: no conversion), except
 /// TRAVEL's own outputs (isTravelOutput(): the per-class clouds travel-rawlog writes beside its

@@ -24,6 +24,11 @@ void writeFileBytes(const std::string& path, const unsigned char* data, std::siz
 /// The same for a text (or any byte string).
 void writeFileBytes(const std::string& path, const std::string& bytes);
 
+/// True when the file at `path` ends with a gzip trailer (CRC32, ISIZE) whose ISIZE is
+/// `uncompressed_bytes` modulo 2^32: a gzip file written to its end. A write cut short (a full
+/// disk when the compressor flushed its last bytes at close) ends elsewhere.
+bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes);
+
 /// The last step of a write through a temporary `part` file (written beside `path`, so that a
 /// failed or interrupted write never leaves half a file under the final name): moves `part` to
 /// `path` (one folder: the move is atomic). On failure removes `part` and throws
