@@ -328,6 +328,7 @@ TEST(Text, NotTextReasonNamesTheFirstByteThatIsNoText) {
 // long input cut with its size.
 TEST(Text, QuotedExcerptEscapesAndCuts) {
     using travel::quotedExcerpt;
+    EXPECT_EQ(travel::printableText("a\x1B[2J\tb\xC3\xA9\xFF"), "a\\x1B[2J\\x09b\xC3\xA9\\xFF");
     EXPECT_EQ(quotedExcerpt("abc"), "'abc'");
     EXPECT_EQ(quotedExcerpt("caf\xC3\xA9"), "'caf\xC3\xA9'");
     EXPECT_EQ(quotedExcerpt(std::string("a\0\n\xFF", 4)), "'a\\x00\\x0A\\xFF'");

@@ -179,7 +179,7 @@ TEST(RawlogReader, ControlCharactersReadFromTheFileAreNotPassedOn) {
                                                  "A\x1b[2J") +
                                                  std::string(11, '\0');
     const std::string error = errorOf(path);
-    EXPECT_NE(error.find("class 'A?[2J'"), std::string::npos) << error;
+    EXPECT_NE(error.find("class 'A\\x1B[2J'"), std::string::npos) << error;
     EXPECT_EQ(error.find('\x1b'), std::string::npos) << error;
 }
 

@@ -23,15 +23,6 @@ inline std::string toLower(std::string_view text) {
     return out;
 }
 
-/// `text` with every ASCII control character (bytes 0x00-0x1f and 0x7f, tabs and line ends
-/// included) replaced by '?': bytes read from a file (a class name, a key) quoted in a one-line
-/// message, without sending a terminal their escape sequences. Other bytes (UTF-8) are kept.
-inline std::string withoutControlCharacters(std::string text) {
-    for (char& c : text)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-    return text;
-}
-
 /// "a,b,c" -> {"a", "b", "c"} for sep ','; "" -> {}; "a,,b" and "a,b," keep their empty items.
 inline std::vector<std::string> splitList(std::string_view text, char sep) {
     std::vector<std::string> items;
@@ -87,13 +78,12 @@ inline std::string notTextReason(std::string_view bytes) {
     return {};
 }
 
-/// 'text' for a message that echoes what a user wrote (a value, a line): control bytes and bytes
-/// that are no UTF-8 as \xNN, and cut after `max` characters with "... (N bytes)", so that a
-/// message stays one readable line whatever the input held.
-inline std::string quotedExcerpt(std::string_view text, std::size_t max = 80) {
-    std::string out = "'";
+namespace text_detail {
+/// Appends `text` to `out` as printableText() does, at most `max_chars` characters (a byte
+/// written as \xNN counts as one); returns the number of bytes of `text` used.
+inline std::size_t appendPrintable(std::string& out, std::string_view text, std::size_t max_chars) {
     std::size_t shown = 0, i = 0;
-    for (; i < text.size() && shown < max; ++shown) {
+    for (; i < text.size() && shown < max_chars; ++shown) {
         const unsigned char b = static_cast<unsigned char>(text[i]);
         const std::size_t n = utf8SequenceLength(text, i);
         if (n == 0 || b < 0x20 || b == 0x7F) {
@@ -106,8 +96,28 @@ inline std::string quotedExcerpt(std::string_view text, std::size_t max = 80) {
             i += n;
         }
     }
+    return i;
+}
+}  // namespace text_detail
+
+/// `text` with every byte a terminal could act on, or that starts no UTF-8 character, written as
+/// \xNN (control bytes 0x00-0x1f and 0x7f, tabs and line ends included): bytes read from a file
+/// (a class name, a key, a line) quoted in a one-line message, without sending the terminal
+/// their escape sequences. Valid UTF-8 is kept.
+inline std::string printableText(std::string_view text) {
+    std::string out;
+    text_detail::appendPrintable(out, text, text.size());
+    return out;
+}
+
+/// 'text' for a message that echoes what a user wrote (a value, a line): printableText() in
+/// quotes, cut after `max` characters with "... (N bytes)", so that a message stays one readable
+/// line whatever the input held.
+inline std::string quotedExcerpt(std::string_view text, std::size_t max = 80) {
+    std::string out = "'";
+    const std::size_t used = text_detail::appendPrintable(out, text, max);
     out += "'";
-    if (i < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+    if (used < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
     return out;
 }
 

@@ -16,7 +16,8 @@ namespace travel_mrpt {
 /// stack): the innermost "Message:" says what went wrong; without one, the first line that is
 /// neither the banner nor the call stack (e.g. OpenCV's error). MRPT's hint about gzip is dropped
 /// (the readers take plain and gzip files alike). A one-line text is kept as it is. Control
-/// characters (MRPT quotes what it read, e.g. the class name of a corrupt record) become '?'.
+/// characters (MRPT quotes what it read, e.g. the class name of a corrupt record) and bytes of no
+/// UTF-8 character are written as \xNN (travel::printableText).
 inline std::string mrptMessage(const std::string& text) {
     std::istringstream lines(text);
     std::string line, message, first;
@@ -37,7 +38,7 @@ inline std::string mrptMessage(const std::string& text) {
     std::string best = message.empty() ? first : message;
     const auto hint = best.find(" (Perhaps it's a gz");
     if (hint != std::string::npos) best.erase(hint);
-    return travel::withoutControlCharacters(best.empty() ? text : best);
+    return travel::printableText(best.empty() ? text : best);
 }
 
 }  // namespace travel_mrpt
