@@ -7,6 +7,8 @@
 #include <atomic>
 #include <csignal>
 
+#include "travel/io/BinaryFile.hpp"
+
 namespace travel::apps {
 
 namespace {
@@ -66,8 +68,7 @@ TempDir::~TempDir() {
 
 PartialOutput::~PartialOutput() {
     if (committed_ || path_.empty()) return;
-    std::error_code ec;
-    std::filesystem::remove(path_, ec);
+    travel::removeCutFile(path_.string());
 }
 
 }  // namespace travel::apps

@@ -35,6 +35,7 @@
 #include "travel/eval/KittiIO.hpp"
 #include "travel/eval/Segmenter.hpp"
 #include "travel/eval/TrackingMetrics.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel/tracking/FrameTracker.hpp"
 #include "travel/traversability/PoseFiles.hpp"
 #include "travel/viz/PngFile.hpp"
@@ -393,8 +394,11 @@ int run(int argc, char** argv) {
     const auto close_checked = [](std::ofstream& stream, const std::string& path) {
         if (!stream.is_open()) return;
         stream.close();
-        if (stream.fail())
-            throw travel::InputError("cannot write " + path + ": " + std::strerror(errno));
+        if (stream.fail()) {
+            const std::string reason = std::strerror(errno);
+            travel::removeCutFile(path);  // rows are missing: no cut file under the name
+            throw travel::InputError("cannot write " + path + ": " + reason);
+        }
     };
     close_checked(csv_out, csv.getValue());
     close_checked(tracking.poses, (fs::path(out) / "poses.txt").string());

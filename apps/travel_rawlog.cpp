@@ -411,10 +411,13 @@ int run(int argc, char** argv) {
     const travel_mrpt::TravelFilterOptions filter_options =
         travel::apps::filterOptionsFrom(configuration);
     travel::apps::requireFileName("-o", options.output);
-    travel::apps::checkOutputsApart({{"-i", options.input}},
-                                    {{"-o", options.output},
-                                     {"--csv", options.csv},
-                                     {"--label-reference", options.label_reference}});
+    // The rawlog is written as OUT.rawlog.part first (travel::PartFile): that name must not be
+    // the input either (it is emptied when opened, and removed when the run fails).
+    travel::apps::checkOutputsApart(
+        {{"-i", options.input}}, {{"-o", options.output},
+                                  {"-o (its part file)", travel::PartFile::partOf(options.output)},
+                                  {"--csv", options.csv},
+                                  {"--label-reference", options.label_reference}});
 
     auto reader = openInput(options);
     // The CSV and the label reference are written in place (RawlogSegmenter's constructor

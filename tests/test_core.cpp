@@ -329,6 +329,9 @@ TEST(Text, NotTextReasonNamesTheFirstByteThatIsNoText) {
 TEST(Text, QuotedExcerptEscapesAndCuts) {
     using travel::quotedExcerpt;
     EXPECT_EQ(travel::printableText("a\x1B[2J\tb\xC3\xA9\xFF"), "a\\x1B[2J\\x09b\xC3\xA9\\xFF");
+    EXPECT_EQ(travel::printableText("\xC2\x9B"
+                                    "2J \xC2\xA0"),
+              "\\xC2\\x9B2J \xC2\xA0");  // C1 CSI
     EXPECT_EQ(quotedExcerpt("abc"), "'abc'");
     EXPECT_EQ(quotedExcerpt("caf\xC3\xA9"), "'caf\xC3\xA9'");
     EXPECT_EQ(quotedExcerpt(std::string("a\0\n\xFF", 4)), "'a\\x00\\x0A\\xFF'");

@@ -303,6 +303,16 @@ TEST(LeaveOneOut, FramesWithoutAScoreAreLeftOut) {
     ASSERT_EQ(coverage.folds.size(), 2u);
     EXPECT_EQ(coverage.folds[1].frame, "00/1");
     EXPECT_DOUBLE_EQ(coverage.held_out_mean, 0.9);
+    // Purity is a mean over the instances in a cluster: with frame 1's instances all unclustered
+    // (no purity at either value) and frame 2 without instances, only frame 0 has a purity, while
+    // coverage keeps frames 0 and 1 (an unclustered instance covers 0, a true score).
+    for (auto& value : rows) {
+        value[0].clustered = 3, value[0].purity = 0.95;
+        value[1].clustered = 0, value[1].purity = 0.0;
+    }
+    EXPECT_EQ(eval::scoredFrames(rows, eval::SweepScore::Purity), (std::vector<std::size_t>{0}));
+    EXPECT_EQ(eval::scoredFrames(rows, eval::SweepScore::Coverage),
+              (std::vector<std::size_t>{0, 1}));
     // One frame with a score is no leave-one-out.
     for (auto& value : rows) value[0].ground[1].points = 0;
     EXPECT_THROW(eval::leaveOneOut(rows, eval::SweepScore::GroundF1B), std::invalid_argument);

@@ -170,7 +170,7 @@ TEST(RawlogReader, NotARawlog) {
 }
 
 // A corrupt record's class name (MRPT quotes it) with a terminal escape sequence in it: the
-// message carries '?' for the control characters, not the sequence (ESC [2J clears the screen).
+// message carries \x1B for the escape byte, not the sequence (ESC [2J clears the screen).
 TEST(RawlogReader, ControlCharactersReadFromTheFileAreNotPassedOn) {
     const std::string path = testPath("escape.rawlog");
     // MRPT's object header: 0x80 | length of the class name, the name, then the object.

@@ -490,6 +490,7 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
             }
             f << "\n";
         }
+        f.close();  // the last buffer is written here: a full disk shows only now
         if (!f) throw std::runtime_error(path + ": write error");
     }
     file.commit();

@@ -114,6 +114,13 @@ if(TRAVEL_RAWLOG AND EXISTS ${SAMPLE})
   expect_failure_mentioning("give each output its own path"
                             ${TRAVEL_RAWLOG} -q -i ${in} -o ${WORK_DIR}/o.rawlog
                             --csv ${WORK_DIR}/o.rawlog)
+  # The rawlog is written as OUT.part first: an input of that name would be emptied, then removed.
+  set(part_in ${WORK_DIR}/p.rawlog.part)
+  file(COPY_FILE ${SAMPLE} ${part_in})
+  expect_failure_mentioning("-o (its part file) ${WORK_DIR}/p.rawlog.part: the same path as -i"
+                            ${TRAVEL_RAWLOG} -q -i ${part_in} -o ${WORK_DIR}/p.rawlog)
+  expect_unchanged(${part_in} ${rawlog_md5})
+  file(REMOVE ${part_in})
   file(MAKE_DIRECTORY ${WORK_DIR}/folder)
   expect_failure_mentioning("a folder; give the name of the file to write"
                             ${TRAVEL_RAWLOG} -q -i ${in} -o ${WORK_DIR}/folder)

@@ -65,7 +65,7 @@ std::vector<std::string> sectionsWithKey(const std::string& key, const std::stri
 }
 
 std::string unknownKeyMessage(const std::string& section, const std::string& key) {
-    std::string message = "unknown key '" + key + "'";
+    std::string message = "unknown key " + quotedExcerpt(key);
     Config probe;
     withSection(probe, section, [&](auto& s) {
         message += fields::didYouMean(key, keyNames<fields::Bare<decltype(s)>>());
@@ -125,8 +125,8 @@ class Applier {
 
     void applySectionName(const std::string& name, const Location& at) {
         if (isSection(name)) return;
-        fail(at, "unknown section '" + name +
-                     "' (sections: travel, filter, map, nav, regress, tracking)" +
+        fail(at, "unknown section " + quotedExcerpt(name) +
+                     " (sections: travel, filter, map, nav, regress, tracking)" +
                      fields::didYouMean(name, sectionNames()));
     }
 
@@ -443,7 +443,7 @@ void applyConfigOverride(const std::string& assignment, Config& config) {
         section = trimmed(key.substr(0, dot));
         key = trimmed(key.substr(dot + 1));
         if (!isSection(section)) {
-            throw ConfigError(prefix + "unknown section '" + section + "'" +
+            throw ConfigError(prefix + "unknown section " + quotedExcerpt(section) +
                               fields::didYouMean(section, sectionNames()));
         }
     } else {
@@ -464,7 +464,8 @@ void applyConfigOverride(const std::string& assignment, Config& config) {
                     for (const auto& n : keyNames<fields::Bare<decltype(any)>>())
                         names.push_back(n);
                 });
-                throw ConfigError("unknown key '" + key + "'" + fields::didYouMean(key, names));
+                throw ConfigError("unknown key " + quotedExcerpt(key) +
+                                  fields::didYouMean(key, names));
             }
         } catch (const ConfigError& e) {
             throw ConfigError(prefix + e.what());

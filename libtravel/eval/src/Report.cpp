@@ -316,16 +316,20 @@ double sweepScore(const FrameRow& row, SweepScore score) {
 std::vector<std::size_t> scoredFrames(const std::vector<std::vector<FrameRow>>& rows,
                                       SweepScore score) {
     // A frame has a score when it has something to score at every value: ground truth under the
-    // protocol, or thing instances (a frame without any has coverage and purity 0 by
-    // convention). The others are left out, not averaged in as zeros.
+    // protocol; thing instances for coverage (an instance left unclustered covers 0, a true
+    // score); for purity, an instance in a cluster (purity is a mean over those: a frame whose
+    // instances are all unclustered has none, 0 by convention). The others are left out, not
+    // averaged in as zeros.
     const auto scored = [&](const FrameRow& row) {
         switch (score) {
             case SweepScore::GroundF1B:
                 return row.ground[1].points > 0;
             case SweepScore::GroundF1A:
                 return row.ground[0].points > 0;
+            case SweepScore::Purity:
+                return !row.objects || row.clustered > 0;
             default:
-                return !row.objects || row.instances > 0;  // unclustered: 0, a true score
+                return !row.objects || row.instances > 0;
         }
     };
     std::vector<std::size_t> kept;

@@ -85,7 +85,10 @@ inline std::size_t appendPrintable(std::string& out, std::string_view text, std:
     std::size_t shown = 0, i = 0;
     for (; i < text.size() && shown < max_chars; ++shown) {
         const unsigned char b = static_cast<unsigned char>(text[i]);
-        const std::size_t n = utf8SequenceLength(text, i);
+        std::size_t n = utf8SequenceLength(text, i);
+        // C1 controls (U+0080-U+009F: 0xC2 0x80-0x9F) are valid UTF-8 that terminals act on
+        // (U+009B is CSI): their two bytes are escaped one by one.
+        if (n == 2 && b == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) n = 0;
         if (n == 0 || b < 0x20 || b == 0x7F) {
             char escaped[8];
             std::snprintf(escaped, sizeof escaped, "\\x%02X", b);
@@ -101,7 +104,8 @@ inline std::size_t appendPrintable(std::string& out, std::string_view text, std:
 }  // namespace text_detail
 
 /// `text` with every byte a terminal could act on, or that starts no UTF-8 character, written as
-/// \xNN (control bytes 0x00-0x1f and 0x7f, tabs and line ends included): bytes read from a file
+/// \xNN (control bytes 0x00-0x1f and 0x7f, tabs and line ends included, and the two bytes of a
+/// C1 control U+0080-U+009F): bytes read from a file
 /// (a class name, a key, a line) quoted in a one-line message, without sending the terminal
 /// their escape sequences. Valid UTF-8 is kept.
 inline std::string printableText(std::string_view text) {

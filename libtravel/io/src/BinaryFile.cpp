@@ -42,15 +42,19 @@ void writeFileBytes(const std::string& path, const unsigned char* data, std::siz
     const bool closed = std::fclose(file.release()) == 0;
     if (!written || !closed) {
         const std::string reason = std::strerror(errno);
-        // No half a file under the final name (a device such as /dev/full is left alone).
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
+        removeCutFile(path);  // no half a file under the final name
         throw std::runtime_error("cannot write '" + path + "': " + reason);
     }
 }
 
 void writeFileBytes(const std::string& path, const std::string& bytes) {
     writeFileBytes(path, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+}
+
+void removeCutFile(const std::string& path) noexcept {
+    std::error_code ec;
+    if (std::filesystem::symlink_status(path, ec).type() == std::filesystem::file_type::regular)
+        std::filesystem::remove(path, ec);
 }
 
 void movePartInPlace(const std::string& part, const std::string& path) {
@@ -74,7 +78,7 @@ bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
     return le::load<uint32_t>(trailer + 4) == uint32_t(uncompressed_bytes);
 }
 
-PartFile::PartFile(std::string path) : path_(std::move(path)), part_(path_ + ".part") {}
+PartFile::PartFile(std::string path) : path_(std::move(path)), part_(partOf(path_)) {}
 
 PartFile::~PartFile() {
     if (done_) return;

@@ -537,8 +537,10 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
             } catch (const std::exception& e) {
                 out.abandon();
                 const std::string message = mrptMessage(e.what());  // GzFileOutput's names it
-                throw message.rfind(grid.path(), 0) == 0 ? std::runtime_error(message)
-                                                         : cannotWrite(grid, message);
+                // (mrptMessage writes the path's control and non-UTF-8 bytes as \xNN too)
+                throw message.rfind(travel::printableText(grid.path()), 0) == 0
+                    ? std::runtime_error(message)
+                    : cannotWrite(grid, message);
             }
             out.close();
         }

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "travel/io/BinaryFile.hpp"
 #include "travel/viz/GridPictures.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
@@ -37,10 +38,12 @@ mrpt::img::CImage pngImage(const travel::viz::Raster& raster, int min_side) {
 
 template <class T>
 void writeSerializedGz(const T& object, const std::string& path) {
-    GzFileOutput file(path);
+    travel::PartFile part(path);  // a failed write leaves neither a cut file nor a part file
+    GzFileOutput file(part.part(), part.path());
     auto archive = mrpt::serialization::archiveFrom(file);
     archive << object;
     file.close();
+    part.commit();
 }
 
 }  // namespace

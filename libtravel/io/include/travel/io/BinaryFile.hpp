@@ -29,6 +29,10 @@ void writeFileBytes(const std::string& path, const std::string& bytes);
 /// disk when the compressor flushed its last bytes at close) ends elsewhere.
 bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes);
 
+/// Removes `path` when it is a regular file, not a symlink (its target stays), a device or a
+/// folder: what a failed write in place leaves under an output's name. Never throws.
+void removeCutFile(const std::string& path) noexcept;
+
 /// The last step of a write through a temporary `part` file (written beside `path`, so that a
 /// failed or interrupted write never leaves half a file under the final name): moves `part` to
 /// `path` (one folder: the move is atomic). On failure removes `part` and throws
@@ -49,6 +53,9 @@ class PartFile {
 
     const std::string& path() const { return path_; }
     const std::string& part() const { return part_; }
+    /// The part file of `path` (what part() is), for checks before a PartFile is made: a part
+    /// file that is an input would be emptied when opened.
+    static std::string partOf(const std::string& path) { return path + ".part"; }
     /// Moves part() to path(); throws std::runtime_error naming path() (the part file removed).
     void commit();
 
