@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <iostream>
 #include <mutex>
-#include <set>
 
 #include "Interrupt.hpp"
 #include "OrderedWork.hpp"
@@ -63,20 +62,6 @@ void reportMount(const Options& o, const travel_mrpt::TravelFrame& frame, Progre
         progress.note(mountNoteLine("travel-map", "", note));
 }
 
-// Why a LiDAR frame was not mapped (map.lastRejection()), once per distinct reason, at the
-// first frame it happens to (`where`: the rawlog record or the scan file).
-class RejectionNotes {
-  public:
-    void note(const Options& o, const std::string& where, const std::string& reason,
-              ProgressLine& progress) {
-        if (o.verbosity == Verbosity::Quiet || !seen_.insert(reason).second) return;
-        progress.note("travel-map: note: " + where + ": not mapped: " + reason +
-                      " (not repeated for other frames)");
-    }
-
-  private:
-    std::set<std::string> seen_;
-};
 }  // namespace
 
 void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& stats,
@@ -88,7 +73,6 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
     ProgressLine progress("travel-map", 0, o.verbosity);
     const Notes::Attached attached(notes, progress);
     bool warned_no_pose = false;
-    RejectionNotes rejections;
     long record = -1;  // the index of the record being read
     std::size_t lidar_seen = 0;
     double read_ms = 0;  // reading since the last mapped frame
@@ -124,8 +108,8 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             ++stats.lidar;
         } else {
             ++stats.rejected;
-            rejections.note(o, o.input + ": record " + std::to_string(record), map.lastRejection(),
-                            progress);
+            notes.oncePerReason(o.input + ": record " + std::to_string(record),
+                                "not mapped: " + map.lastRejection());
         }
     };
     while (!(o.max_frames > 0 && long(stats.inserted) >= o.max_frames)) {
@@ -203,7 +187,6 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
     // Frames fused into the grid: with --max-frames the producing side decides where to stop
     // (it is ahead of the OctoMap). Guarded by the turns.
     long fused = 0;
-    RejectionNotes rejections;
     const auto produce = [&](unsigned, std::size_t k, Scan& scan) {
         {
             std::unique_lock<std::mutex> lock(turn_mutex);
@@ -273,7 +256,7 @@ void mapKitti(const Options& o, const travel::ScanList& scans, travel_mrpt::CTra
             ++stats.inserted;
         } else {
             ++stats.rejected;
-            rejections.note(o, files[k], scan.rejection, progress);
+            notes.oncePerReason(files[k], "not mapped: " + scan.rejection);
         }
         progress.update(k + 1);
         throwIfInterrupted();  // nothing is written before the map is complete

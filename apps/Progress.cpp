@@ -43,6 +43,15 @@ void Notes::once(const std::string& text) {
     if (first) say(app_ + ": note: " + text);
 }
 
+void Notes::oncePerReason(const std::string& where, const std::string& reason) {
+    bool first = false;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        first = seen_reasons_.insert(reason).second;
+    }
+    if (first) say(app_ + ": note: " + where + ": " + reason + " (not repeated for other frames)");
+}
+
 void Notes::say(const std::string& line) {
     if (verbosity_ == Verbosity::Quiet) return;
     const std::lock_guard<std::mutex> lock(mutex_);

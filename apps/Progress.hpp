@@ -135,6 +135,10 @@ class Notes {
     void attach(ProgressLine* progress);
     /// "<app>: note: <text>", the first time `text` comes.
     void once(const std::string& text);
+    /// "<app>: note: <where>: <reason> (not repeated for other frames)", the first time `reason`
+    /// comes, wherever (the file or record it happened to first): a reason that every later frame
+    /// shares (a skipped or unmapped frame) is noted once, naming where to look.
+    void oncePerReason(const std::string& where, const std::string& reason);
     /// `line` as it is.
     void say(const std::string& line);
 
@@ -154,7 +158,7 @@ class Notes {
     std::string app_;
     Verbosity verbosity_;
     std::mutex mutex_;  // notes may come from a worker thread (travel-map -j 2)
-    std::set<std::string> seen_;
+    std::set<std::string> seen_, seen_reasons_;
     ProgressLine* progress_ = nullptr;
 };
 

@@ -19,7 +19,6 @@
 #include <iostream>
 #include <optional>
 #include <regex>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -164,10 +163,7 @@ class RawlogSegmenter {
             return false;
         }
         ++totals_.skipped;
-        // Once per reason, naming the first record it happens to (as travel-map does).
-        if (skip_reasons_.insert(why_not).second)
-            noteOnce(where(options_.input, record) + ": skipped: " + why_not +
-                     " (not repeated for other frames)");
+        notes_.oncePerReason(where(options_.input, record), "skipped: " + why_not);
         return false;
     }
     void complete(const CObservation& obs, long record, travel_mrpt::TravelFrame& frame,
@@ -259,8 +255,7 @@ class RawlogSegmenter {
     mrpt::img::CImage image_;  // reused across frames
     travel_mrpt::LabelledOutputPool outputs_;
     Totals totals_;
-    std::set<std::string> skip_reasons_;  // why LiDAR frames were skipped, each noted once
-    travel_mrpt::TravelFrame frame_;      // reused across frames (processObservation)
+    travel_mrpt::TravelFrame frame_;  // reused across frames (processObservation)
     travel_mrpt::TravelFilter::FrameJob job_;
 };
 

@@ -443,8 +443,7 @@ int run(int argc, char** argv) {
         progress.finish();
     } catch (...) {
         progress.finish();
-        out_file.abandon();  // before `output` removes the part file
-        throw;
+        throw;  // out_file closes, then `output` removes the part file
     }
     out_file.close();
     output.commit();

@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 
 #include "travel/Text.hpp"
+#include "travel/TextFile.hpp"
 
 namespace travel::navsim {
 namespace {
@@ -221,15 +221,8 @@ void placeMovers(World& w, double t) {
 }
 
 World loadWorld(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error(path + ": cannot open the world file");
-    std::ostringstream text;
-    text << f.rdbuf();
-    if (f.bad()) throw std::runtime_error(path + ": read error");
-    if (const std::string why = travel::notTextReason(text.str()); !why.empty())
-        throw std::runtime_error(path + ": not a text file (" + why +
-                                 "); a world is text, one item a line (apps/nav/World.hpp)");
-    return parseWorld(text.str(), path);
+    return parseWorld(
+        travel::readTextFile(path, "a world is text, one item a line (apps/nav/World.hpp)"), path);
 }
 
 World shiftedObstacles(const World& world, unsigned seed, double amplitude) {

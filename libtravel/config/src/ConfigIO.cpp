@@ -7,7 +7,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -18,6 +17,7 @@
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Text.hpp"
+#include "travel/TextFile.hpp"
 
 namespace travel {
 namespace fs = std::filesystem;
@@ -393,14 +393,7 @@ std::string readConfigFile(const std::string& path) {
         throw ConfigError("cannot read config file '" + path +
                           "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
     }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream contents;
-    if (in) contents << in.rdbuf();
-    if (!in || in.bad()) throw ConfigError("cannot read config file '" + path + "'");
-    if (const std::string why = notTextReason(contents.str()); !why.empty())
-        throw ConfigError(path + ": not a text file (" + why +
-                          "); a configuration is YAML or ini text");
-    return contents.str();
+    return readTextFile<ConfigError>(path, "a configuration is YAML or ini text");
 }
 
 void applyConfigText(const std::string& text, const std::string& source_name, Config& config) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "travel/Text.hpp"
+#include "travel/TextFile.hpp"
 
 namespace travel {
 namespace {
@@ -26,15 +27,7 @@ std::runtime_error error(const std::string& path, int line, const std::string& w
 /// Data lines of a whitespace-separated numeric file ('#' comments, blank lines skipped).
 /// `prefix` (e.g. "Tr:") selects lines starting with it and drops it.
 std::vector<Line> readNumericLines(const std::string& path, const std::string& prefix = "") {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error(path + ": cannot open for reading");
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    if (file.bad()) throw std::runtime_error(path + ": read error");
-    if (const std::string why = notTextReason(bytes.str()); !why.empty())
-        throw std::runtime_error(path + ": not a text file (" + why +
-                                 "); expected lines of numbers");
-    std::istringstream in(bytes.str());
+    std::istringstream in(readTextFile(path, "expected lines of numbers"));
     std::vector<Line> lines;
     std::string text;
     int number = 0;

@@ -535,7 +535,6 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
                 archive << std::string(kGridFileMagic) << kGridFileVersion;
                 writeGridState(archive);
             } catch (const std::exception& e) {
-                out.abandon();
                 const std::string message = mrptMessage(e.what());  // GzFileOutput's names it
                 // (mrptMessage writes the path's control and non-UTF-8 bytes as \xNN too)
                 throw message.rfind(travel::printableText(grid.path()), 0) == 0

@@ -25,10 +25,9 @@ class GzFileOutput : public mrpt::io::CStream {
     /// name `name` (the final name of a part file), `path` when empty. Throws
     /// std::runtime_error "<name>: cannot write (<reason>)" (as every other failure).
     explicit GzFileOutput(std::string path, std::string name = {});
-    /// Closes without checking (an error path): call close() on success.
+    /// Closes without checking (an error path: declared after its travel::PartFile, the stream
+    /// is closed before the part file is removed); call close() on success.
     ~GzFileOutput() override;
-    /// Closes without checking: on an error path, before the part file is removed.
-    void abandon() { file_.close(); }
 
     /// Throws std::runtime_error "<name>: cannot write (<reason>)" on a short write.
     size_t Write(const void* buffer, size_t count) override;
