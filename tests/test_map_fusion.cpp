@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CHeightGridMap2D.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -18,10 +19,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <tuple>
 
 #include "map/MapTestScene.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
@@ -502,6 +505,46 @@ TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
     }
     EXPECT_NE(errorOf([&] { loaded.loadFrom(deep); }).find(deep + ".ot: corrupt"),
               std::string::npos);
+    // A corrupt count in the grid state is refused before anything is allocated for it (a
+    // per-cell array of 2^32 - 16 floats would be 16 GB): the options text's, then the first
+    // per-cell array's (too large and too small), each a message naming the file.
+    std::string grid_bytes;
+    {
+        mrpt::io::CFileGZInputStream in(prefix + ".travelgrid");
+        char buffer[4096];
+        for (std::size_t got; (got = in.Read(buffer, sizeof buffer)) > 0;)
+            grid_bytes.append(buffer, got);
+    }
+    const auto countAt = [&](std::size_t at) {
+        uint32_t n = 0;
+        std::memcpy(&n, grid_bytes.data() + at, 4);
+        return n;
+    };
+    const std::size_t text_at = 4 + countAt(0) + 4;               // magic, then the version
+    const std::size_t array_at = text_at + 4 + countAt(text_at);  // the first per-cell array
+    const std::size_t cells = map_->grid().cellCount();
+    ASSERT_EQ(countAt(array_at), cells);
+    const std::string corrupt = dir + "/corrupt";
+    copyTo(corrupt);
+    for (const auto& [at, n, expected] :
+         {std::tuple<std::size_t, uint32_t, std::string>{
+              text_at, 1u << 31, "options text of 2147483648 values (at most 1048576)"},
+          {array_at, 0xFFFFFFF0u,
+           "per-cell array 1 of 4294967280 values, but the options give " + std::to_string(cells) +
+               " cells"},
+          {array_at, uint32_t(cells - 1),
+           "per-cell array 1 of " + std::to_string(cells - 1) + " values"}}) {
+        std::string bytes = grid_bytes;
+        std::memcpy(bytes.data() + at, &n, 4);
+        {
+            mrpt::io::CFileGZOutputStream out(corrupt + ".travelgrid");
+            out.Write(bytes.data(), bytes.size());
+        }
+        const std::string message = errorOf([&] { loaded.loadFrom(corrupt); });
+        EXPECT_NE(message.find(corrupt + ".travelgrid: corrupt grid state: " + expected),
+                  std::string::npos)
+            << message;
+    }
     EXPECT_EQ(loaded.asString(), before);
     std::filesystem::remove_all(dir);
 }

@@ -433,6 +433,8 @@ namespace {
 /// The first bytes of a .travelgrid file (saveTo), then its format version.
 constexpr const char* kGridFileMagic = "TRAVEL traversability grid";
 constexpr uint32_t kGridFileVersion = 1;
+/// The longest options text a grid state may hold (saveToConfigFile writes a few kB).
+constexpr std::size_t kMaxOptionsText = std::size_t(1) << 20;
 
 /// The OcTree of .ot bytes (OctoMap's full format: every voxel's log-odds), checked before
 /// octomap reads them and against the options' voxel size, with the options' hit and miss
@@ -457,6 +459,33 @@ std::unique_ptr<octomap::OcTree> readOtTree(std::string bytes,
     tree->setProbMiss(options.octomap_prob_miss);
     return std::unique_ptr<octomap::OcTree>(tree);
 }
+
+/// The length of the next string or vector operator<< wrote (its uint32 count), refused when
+/// above `most` before anything is allocated: a corrupt count would otherwise ask for up to
+/// 16 GB, and get it on a large machine, before the read fails.
+uint32_t readCount(mrpt::serialization::CArchive& in, std::size_t most, const std::string& what) {
+    uint32_t n = 0;
+    in >> n;
+    if (n > most)
+        throw std::runtime_error("corrupt grid state: " + what + " of " + std::to_string(n) +
+                                 " values (at most " + std::to_string(most) + ")");
+    return n;
+}
+
+/// A per-cell array as operator<< wrote it (count, then the values), holding exactly `cells`
+/// values: the count is checked before the array grows.
+template <class T>
+void readCellArray(mrpt::serialization::CArchive& in, std::vector<T>& values, std::size_t cells,
+                   const std::string& what) {
+    uint32_t n = 0;
+    in >> n;
+    if (n != cells)
+        throw std::runtime_error("corrupt grid state: " + what + " of " + std::to_string(n) +
+                                 " values, but the options give " + std::to_string(cells) +
+                                 " cells");
+    values.resize(n);
+    if (n > 0) in.ReadBufferFixEndianness(values.data(), n);
+}
 }  // namespace
 
 void CTraversabilityMap::writeGridState(mrpt::serialization::CArchive& out) const {
@@ -471,8 +500,9 @@ void CTraversabilityMap::writeGridState(mrpt::serialization::CArchive& out) cons
 }
 
 void CTraversabilityMap::readGridState(mrpt::serialization::CArchive& in) {
-    std::string text;
-    in >> text;
+    // The options are a few kB of ini text.
+    std::string text(readCount(in, kMaxOptionsText, "options text"), '\0');
+    if (!text.empty()) in.ReadBuffer(text.data(), text.size());
     TraversabilityMapOptions options;
     try {
         options.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "traversabilityMap");
@@ -480,10 +510,13 @@ void CTraversabilityMap::readGridState(mrpt::serialization::CArchive& in) {
         throw std::runtime_error(std::string("CTraversabilityMap: corrupt options: ") + e.what());
     }
     setOptions(options);
+    const std::size_t cells = grid_.cellCount();  // setOptions sized the grid
     auto arrays = grid_.arrays();
-    for (auto* v : arrays.floats) in >> *v;
-    for (auto* v : arrays.counts) in >> *v;
-    for (auto* v : arrays.doubles) in >> *v;
+    int array = 0;
+    const auto what = [&] { return "per-cell array " + std::to_string(++array); };
+    for (auto* v : arrays.floats) readCellArray(in, *v, cells, what());
+    for (auto* v : arrays.counts) readCellArray(in, *v, cells, what());
+    for (auto* v : arrays.doubles) readCellArray(in, *v, cells, what());
     grid_.arraysLoaded();
     uint64_t frames = 0;
     in >> frames;
