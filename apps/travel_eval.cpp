@@ -453,7 +453,7 @@ int run(int argc, char** argv) {
         std::vector<MethodRun> runs;
         for (const std::string& name : names)
             runs.push_back(runMethod(name, params, frames, name, verbosity, jobs.count()));
-        const std::string md = travel::eval::reportMarkdown(runs, frames, setup);
+        const std::string md = travel::eval::reportMarkdown(runs, frames, setup, jobs.count());
         travel::apps::createFolder(out);
         writeText(dir / "report.md", md);
         std::ostringstream frames_csv;

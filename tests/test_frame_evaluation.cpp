@@ -268,6 +268,9 @@ TEST(LeaveOneOut, ChoosesEachFoldOnTheOtherFramesAndScoresTheHeldOutOne) {
     // Coverage is the same for both values: ties choose the first.
     EXPECT_EQ(eval::leaveOneOut(rows, eval::SweepScore::Coverage).folds[1].chosen, 0u);
     EXPECT_EQ(eval::parseSweepScore("purity"), eval::SweepScore::Purity);
+    // The key as --set writes it (travel.KEY) is the same key; other sections are refused.
+    EXPECT_EQ(eval::parseSweep("travel.tgf_resolution=2,4", Params{}).key, "tgf_resolution");
+    EXPECT_THROW(eval::parseSweep("map.resolution=0.1,0.2", Params{}), ConfigError);
     EXPECT_THROW(eval::parseSweepScore("f2"), ConfigError);
     EXPECT_THROW(eval::leaveOneOut({{rows[0][0]}}, eval::SweepScore::GroundF1B),
                  std::invalid_argument);
@@ -347,7 +350,9 @@ TEST(ReportMarkdown, AProtocolWithNoScoredFrameHasNoValues) {
     std::vector<eval::MethodRun> runs(1);
     runs[0].method = "tgs";  // summary of no scored frame: every MeanStd has n = 0
     const std::vector<eval::FrameRef> frames = {{"s.bin", "s.label", "00/000000"}};
-    const std::string md = eval::reportMarkdown(runs, frames, "preset none");
+    const std::string md = eval::reportMarkdown(runs, frames, "preset none", 2);
+    EXPECT_NE(md.find("logical CPUs, 2 worker threads (each frame on one);"), std::string::npos)
+        << md;
     EXPECT_NE(md.find("| tgs | - | - | - | - | - | - | - |"), std::string::npos) << md;
     EXPECT_EQ(md.find("0.00"), std::string::npos) << md;
     EXPECT_NE(md.find("Scored frames (of 1): tgs 0"), std::string::npos) << md;

@@ -540,7 +540,9 @@ TEST(Sim, PuddleMirrorsOrSwallowsTheRays) {
         const Eigen::Vector3d p = pose * sensorPoint(s, i);
         const double from_centre = (p.head<2>() - puddle.centre).norm();
         // The bowl lies below the water within 1.67 m of the centre: no terrain is seen there.
-        if (s.gt.cls[i] == GtClass::Ground) EXPECT_GT(from_centre, 1.6);
+        if (s.gt.cls[i] == GtClass::Ground) {
+            EXPECT_GT(from_centre, 1.6);
+        }
         if (s.gt.cls[i] != GtClass::Reflection) continue;
         ++mirrored;
         EXPECT_LT(p.z(), level);

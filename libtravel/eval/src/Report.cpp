@@ -138,12 +138,13 @@ void addFrame(const FrameRef& ref, const FrameEvaluation& frame, MethodRun& run,
 }
 
 std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<FrameRef>& frames,
-                           const std::string& setup) {
+                           const std::string& setup, unsigned jobs) {
     std::ostringstream md;
     md << "# TRAVEL evaluation report\n\n"
        << frames.size() << " labelled SemanticKITTI frames (" << describeFrames(frames) << "); "
        << setup << "; machine: " << cpuModel() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
-       << " logical CPUs, single thread; " << nowText() << ".\n\n"
+       << " logical CPUs, " << jobs << (jobs == 1 ? " worker thread" : " worker threads")
+       << " (each frame on one); " << nowText() << ".\n\n"
        << "Mean (mu) and population standard deviation (sigma) over frames; ms = median "
           "CPU milliseconds per frame of the method's thread (each frame run once).\n";
     for (int p = 0; p < 2; ++p) {
@@ -223,6 +224,12 @@ SweepSpec parseSweep(const std::string& spec, const Params& base) {
     const std::size_t eq = spec.find('=');
     if (eq == std::string::npos || eq == 0) throw ConfigError(help);
     SweepSpec s{spec.substr(0, eq), travel::splitList(spec.substr(eq + 1), ',')};
+    // travel.KEY as --set writes it: a sweep varies the travel section's keys, no other's.
+    if (const std::size_t dot = s.key.find('.'); dot != std::string::npos) {
+        if (s.key.substr(0, dot) != "travel")
+            throw ConfigError(help + ": a sweep varies the keys of section travel only");
+        s.key.erase(0, dot + 1);
+    }
     if (s.values.empty()) throw ConfigError(help + ": no values");
     for (const std::string& v : s.values) {
         if (v.empty()) throw ConfigError(help + ": empty value");
