@@ -108,7 +108,7 @@ void mapRawlog(const Options& o, travel_mrpt::CTraversabilityMap& map, Stats& st
             ++stats.lidar;
         } else {
             ++stats.rejected;
-            notes.oncePerReason(o.input + ": record " + std::to_string(record),
+            notes.oncePerReason(travel_mrpt::RawlogReader::where(o.input, record),
                                 "not mapped: " + map.lastRejection());
         }
     };

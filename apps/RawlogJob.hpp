@@ -39,7 +39,7 @@ using mrpt::obs::CObservation;
 using travel::PointClass;
 
 inline std::string where(const std::string& file, long record = -1) {
-    return record < 0 ? file : file + ": record " + std::to_string(record);
+    return record < 0 ? file : travel_mrpt::RawlogReader::where(file, record);
 }
 
 /// The valid points of a frame as an ASCII PLY (x y z red green blue), in the aligned frame, in

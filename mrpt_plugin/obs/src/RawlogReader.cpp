@@ -62,7 +62,7 @@ bool RawlogReader::wholeFileRead() const {
 RawlogReader::~RawlogReader() = default;
 
 std::shared_ptr<mrpt::serialization::CSerializable> RawlogReader::next() {
-    const std::string record = path_ + ": record " + std::to_string(index_);
+    const std::string record = where(path_, index_);
     const uint64_t start = stream_->file.getPosition();
     try {
         auto object = stream_->archive.ReadObject();

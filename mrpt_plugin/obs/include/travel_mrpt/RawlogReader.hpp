@@ -39,6 +39,11 @@ class RawlogReader {
     RawlogReader(const RawlogReader&) = delete;
     RawlogReader& operator=(const RawlogReader&) = delete;
 
+    /// "<path>: record <n>": how every message names a record of a rawlog.
+    static std::string where(const std::string& path, long record) {
+        return path + ": record " + std::to_string(record);
+    }
+
     /// The next record, or null at the end of the file (exactly at a record boundary). Throws
     /// InputError naming the record when it cannot be read: "truncated (end of file inside the
     /// record)", "corrupt record (it announces more data than --max-memory allows); is it a
