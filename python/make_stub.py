@@ -12,6 +12,10 @@ sys.path.insert(0, sys.argv[1])
 import travel  # noqa: E402
 
 TYPES = {bool: "bool", int: "int", float: "float", str: "str"}
+# Scan, Clusters, Terrain and Result pickle as a tuple of what they expose.
+PICKLE = """    def __getstate__(self) -> tuple[Any, ...]: ...
+    def __setstate__(self, state: tuple[Any, ...]) -> None: ..."""
+
 PARAMS = "\n".join(
     f"    {key}: {TYPES[type(value)]}"
     + ("  # assigning also takes 'auto'" if "Also 'auto'" in getattr(travel.Params, key).__doc__
@@ -50,6 +54,8 @@ class Params:
     def to_dict(self) -> dict[str, bool | int | float | str]: ...
     def validate(self) -> None: ...
     def is_auto(self, name: str) -> bool: ...
+    def __getstate__(self) -> str: ...
+    def __setstate__(self, state: str) -> None: ...
 
 class Scan:
     path: str
@@ -58,6 +64,7 @@ class Scan:
     rings: npt.NDArray[np.uint16] | None
     times: npt.NDArray[np.float32] | None
     def __len__(self) -> int: ...
+{PICKLE}
 
 class Clusters:
     ids: npt.NDArray[np.uint32]
@@ -72,6 +79,7 @@ class Clusters:
     ground_z: npt.NDArray[np.float32]
     height_above_ground: npt.NDArray[np.float32]
     def __len__(self) -> int: ...
+{PICKLE}
 
 class Terrain:
     resolution: float
@@ -91,6 +99,7 @@ class Terrain:
     def __len__(self) -> int: ...
     def node_at(self, x: float, y: float) -> int: ...
     def height_above_ground(self, points: _Points) -> npt.NDArray[np.float32]: ...
+{PICKLE}
 
 class Result:
     labels: npt.NDArray[np.uint8]
@@ -103,6 +112,7 @@ class Result:
     sensor_height: float
     mount_note: str
     def __len__(self) -> int: ...
+{PICKLE}
 
 class Pipeline:
     params: Params

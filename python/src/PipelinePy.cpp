@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "Bindings.hpp"
+#include "travel/Errors.hpp"
 #include "travel/Pipeline.hpp"
 #include "travel/Preprocessing.hpp"
 #include "travel/eval/KittiIO.hpp"
@@ -70,6 +71,18 @@ char dtypeKind(const py::array& a) {
     return a.dtype().kind();
 }
 
+/// "(3,)", "(3, 4)"; a negative size (any) is "N".
+std::string shapeText(const std::vector<py::ssize_t>& shape) {
+    std::string text = "(";
+    for (std::size_t k = 0; k < shape.size(); ++k)
+        text += (k ? ", " : "") + (shape[k] < 0 ? std::string("N") : std::to_string(shape[k]));
+    return text + (shape.size() == 1 ? ",)" : ")");
+}
+
+std::vector<py::ssize_t> shapeOf(const py::array& a) {
+    return {a.shape(), a.shape() + a.ndim()};
+}
+
 /// An (N,) array-like as a std::vector<T>, or ValueError naming `what`: a wrong shape, a dtype
 /// whose kind is not in `kinds`, or, for an integer T, a value outside [lo, hi] (T's range by
 /// default): integers are converted only when they fit, never wrapped (257 is not class 1).
@@ -80,10 +93,8 @@ std::vector<T> vectorFrom(py::handle object, py::ssize_t n, const char* what, co
     const py::array a = py::array::ensure(object);
     if (!a) throw py::value_error(std::string(what) + ": expected an array");
     if (a.ndim() != 1 || (n >= 0 && a.shape(0) != n))
-        throw py::value_error(std::string(what) + ": expected shape (" +
-                              (n >= 0 ? std::to_string(n) : std::string("N")) + ",), got " +
-                              std::string(py::str(py::tuple(py::cast(
-                                  std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))))));
+        throw py::value_error(std::string(what) + ": expected shape " + shapeText({n}) + ", got " +
+                              shapeText(shapeOf(a)));
     const char kind = dtypeKind(a);
     if (!std::string(kinds).empty() && std::string(kinds).find(kind) == std::string::npos)
         throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
@@ -217,6 +228,133 @@ void copyColumns(const PointsView& v, PointCloud& cloud) {
         v.cols == 4 ? copyRows<T, 4>(v, out) : copyRows<T, 3>(v, out);
 }
 
+// ---- Pickle states --------------------------------------------------------------------------
+// Scan, Result, Clusters and Terrain pickle as tuples of what they expose (arrays, numbers,
+// text), nested for a Result's clusters and terrain. Not through LabelledFrameCodec: a Result
+// holds no points, and the codec's terrain keeps neither the empty nodes nor a node's count,
+// weight, search flag and both planes, which Terrain exposes. The ...State() functions return
+// the tuple as py::object, the type the ...FromState() readers take (pybind11 wants the same):
+// a reader checks the state itself, so that a wrong one gets a message naming the item.
+
+/// Element type and columns of a per-item array: (K,) for C == 1, else (K, C).
+template <class T, int C>
+struct Column {
+    using Type = T;
+    using Stored = std::conditional_t<std::is_same_v<T, bool>, uint8_t, T>;  // any byte of a bool
+    static constexpr int cols = C;
+    static std::vector<py::ssize_t> shape(py::ssize_t rows) {
+        return C == 1 ? std::vector<py::ssize_t>{rows} : std::vector<py::ssize_t>{rows, C};
+    }
+};
+
+/// The inverse of columns(): set(items[i], row i) for an array checked by StateReader::array.
+template <class Col, class Item, class Set>
+void fromColumns(const py::array& a, std::vector<Item>& items, Set set) {
+    const auto* rows = static_cast<const typename Col::Stored*>(a.data());
+    for (std::size_t i = 0; i < items.size(); ++i) set(items[i], rows + i * Col::cols);
+}
+
+std::string typeName(py::handle object) {
+    return py::str(py::type::of(object).attr("__name__"));
+}
+
+/// Reads a pickle state, a tuple of `size` items, item by item. Each refusal is a ValueError
+/// "cannot unpickle <context>: <item>: <why>": a corrupt or foreign state must not reach the
+/// library as sizes or values it never produces.
+class StateReader {
+  public:
+    StateReader(std::string context, py::handle state, std::size_t size)
+        : context_(std::move(context)) {
+        const std::string expected = "expected a tuple of " + std::to_string(size) + " items";
+        if (!py::isinstance<py::tuple>(state))
+            throw py::value_error(prefix() + expected + ", got " + typeName(state));
+        items_ = py::reinterpret_borrow<py::tuple>(state);
+        if (items_.size() != size)
+            throw py::value_error(prefix() + expected + ", got " + std::to_string(items_.size()));
+    }
+
+    /// The context of item `name` when it holds a state of its own.
+    std::string context(const char* name) const { return context_ + ": " + name; }
+
+    py::object next() { return items_[next_++]; }
+
+    [[noreturn]] void fail(const char* name, const std::string& why) const {
+        throw py::value_error(prefix() + name + ": " + why);
+    }
+
+    double real(const char* name) {
+        const py::object item = next();
+        if (!PyFloat_Check(item.ptr())) fail(name, "expected a float, got " + typeName(item));
+        return item.cast<double>();
+    }
+
+    /// A float of the library's (float32): finite and in float's range.
+    float real32(const char* name) {
+        const double v = real(name);
+        if (!(std::abs(v) <= std::numeric_limits<float>::max()))
+            fail(name, "expected a finite float32, got " + std::to_string(v));
+        return static_cast<float>(v);
+    }
+
+    int64_t integer(const char* name, int64_t lo, int64_t hi) {
+        const py::object item = next();
+        const std::string expected =
+            "expected an int in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got ";
+        if (!PyLong_Check(item.ptr()) || PyBool_Check(item.ptr()))
+            fail(name, expected + typeName(item));
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(item.ptr(), &overflow);
+        if (overflow || v < lo || v > hi) fail(name, expected + std::string(py::repr(item)));
+        return v;
+    }
+
+    std::string text(const char* name) {
+        const py::object item = next();
+        if (!PyUnicode_Check(item.ptr())) fail(name, "expected a str, got " + typeName(item));
+        return item.cast<std::string>();
+    }
+
+    /// An array of T's dtype (either byte order) and `shape` (a negative size: any), as a
+    /// native C-ordered array: the item itself when it is one (no copy).
+    template <class T>
+    py::array array(const char* name, const std::vector<py::ssize_t>& shape) {
+        return checkedArray<T>(name, next(), shape);
+    }
+
+    /// As array(), or an empty array for None.
+    template <class T>
+    py::array arrayOrNone(const char* name, const std::vector<py::ssize_t>& shape) {
+        const py::object item = next();
+        return item.is_none() ? py::array_t<T>(0) : checkedArray<T>(name, item, shape);
+    }
+
+  private:
+    std::string prefix() const { return "cannot unpickle " + context_ + ": "; }
+
+    template <class T>
+    py::array checkedArray(const char* name, const py::object& item,
+                           const std::vector<py::ssize_t>& shape) {
+        const py::dtype dtype = py::dtype::of<T>();
+        const std::string expected = "expected a " + std::string(py::str(py::handle(dtype))) +
+                                     " array of shape " + shapeText(shape);
+        if (!py::isinstance<py::array>(item)) fail(name, expected + ", got " + typeName(item));
+        const auto a = py::reinterpret_borrow<py::array>(item);
+        bool ok = a.dtype().num() == dtype.num() && a.ndim() == py::ssize_t(shape.size());
+        for (std::size_t k = 0; ok && k < shape.size(); ++k)
+            ok = shape[k] < 0 || a.shape(py::ssize_t(k)) == shape[k];
+        if (!ok)
+            fail(name, expected + ", got " + std::string(py::str(py::handle(a.dtype()))) +
+                           " of shape " + shapeText(shapeOf(a)));
+        py::array out = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+        if (!out) fail(name, "cannot convert the array to native byte order");
+        return out;
+    }
+
+    std::string context_;
+    py::tuple items_;
+    std::size_t next_ = 0;
+};
+
 // ---- Scan ----------------------------------------------------------------------------------
 
 /// A scan read by the library's reader, kept in the library's layout so that process() takes
@@ -238,6 +376,43 @@ py::array_t<float> scanPoints(const ScanPy& s) {
     return out;
 }
 
+py::object scanRings(const ScanPy& s) {
+    if (!s.cloud.hasRing()) return py::none();
+    return py::array_t<uint16_t>(static_cast<py::ssize_t>(s.cloud.size()), s.cloud.ring.data());
+}
+
+py::object scanTimes(const ScanPy& s) {
+    if (!s.cloud.hasTime()) return py::none();
+    return py::array_t<float>(static_cast<py::ssize_t>(s.cloud.size()), s.cloud.time.data());
+}
+
+py::object scanState(const ScanPy& s) {
+    return py::make_tuple(s.path, s.format, scanPoints(s), scanRings(s), scanTimes(s));
+}
+
+ScanPy scanFromState(const py::object& state) {
+    StateReader in("travel.Scan", state, 5);
+    ScanPy s;
+    s.path = in.text("path");
+    s.format = in.text("format");
+    try {
+        if (scanFormatFromString(s.format) == ScanFormat::Auto)
+            in.fail("format", "'auto' is no format read");
+    } catch (const ConfigError& e) {
+        in.fail("format", e.what());
+    }
+    const py::array points = in.array<float>("points", {-1, 4});
+    const py::ssize_t n = points.shape(0);
+    copyColumns<float>(viewOf(points), s.cloud);
+    const py::array rings = in.arrayOrNone<uint16_t>("rings", {n});
+    const py::array times = in.arrayOrNone<float>("times", {n});
+    const auto* ring = static_cast<const uint16_t*>(rings.data());
+    const auto* time = static_cast<const float*>(times.data());
+    s.cloud.ring.assign(ring, ring + rings.size());
+    s.cloud.time.assign(time, time + times.size());
+    return s;
+}
+
 // ---- Result --------------------------------------------------------------------------------
 
 struct ClustersPy {
@@ -246,22 +421,73 @@ struct ClustersPy {
     std::size_t size = 0;
 };
 
-ClustersPy clustersFrom(const std::vector<ClusterSummary>& c) {
+/// Clusters' arrays, in the order of its pickle state: visit(name, member, doc, Column<T, C>,
+/// get(summary) -> row) each.
+template <class Visit>
+void forEachClusterArray(Visit&& visit) {
     using S = ClusterSummary;
+    using P = ClustersPy;
+    using U1 = Column<uint32_t, 1>;
+    using F1 = Column<float, 1>;
+    using F3 = Column<float, 3>;
+    visit("ids", &P::ids, "(K,) uint32", U1{}, [](const S& s) { return s.id; });
+    visit("num_points", &P::num_points, "(K,) uint32", U1{},
+          [](const S& s) { return s.num_points; });
+    visit("first_point", &P::first_point,
+          "(K,) uint32 smallest input index (ids are ordered by it)", U1{},
+          [](const S& s) { return s.first_point; });
+    visit("centroids", &P::centroids, "(K, 3) float32", F3{},
+          [](const S& s) { return s.centroid; });
+    visit("aabb_min", &P::aabb_min, "(K, 3) float32", F3{}, [](const S& s) { return s.aabb_min; });
+    visit("aabb_max", &P::aabb_max, "(K, 3) float32", F3{}, [](const S& s) { return s.aabb_max; });
+    visit("obb_center", &P::obb_center, "(K, 3) float32", F3{},
+          [](const S& s) { return s.obb_center; });
+    visit("obb_extent", &P::obb_extent, "(K, 3) float32", F3{},
+          [](const S& s) { return s.obb_extent; });
+    visit("obb_yaw", &P::obb_yaw, "(K,) float32 [rad]", F1{}, [](const S& s) { return s.obb_yaw; });
+    visit("ground_z", &P::ground_z, "(K,) float32 [m], NaN if unknown", F1{},
+          [](const S& s) { return s.ground_z; });
+    visit("height_above_ground", &P::height_above_ground, "(K,) float32 [m]", F1{},
+          [](const S& s) { return s.height_above_ground; });
+}
+
+/// How many items visit() is called with, i.e. a state's size.
+template <class ForEach>
+std::size_t countOf(ForEach for_each) {
+    std::size_t n = 0;
+    for_each([&n](auto&&...) { ++n; });
+    return n;
+}
+
+ClustersPy clustersFrom(const std::vector<ClusterSummary>& c) {
     ClustersPy out;
     out.size = c.size();
-    out.ids = columns<uint32_t, 1>(c, [](const S& s) { return s.id; });
-    out.num_points = columns<uint32_t, 1>(c, [](const S& s) { return s.num_points; });
-    out.first_point = columns<uint32_t, 1>(c, [](const S& s) { return s.first_point; });
-    out.centroids = columns<float, 3>(c, [](const S& s) { return s.centroid; });
-    out.aabb_min = columns<float, 3>(c, [](const S& s) { return s.aabb_min; });
-    out.aabb_max = columns<float, 3>(c, [](const S& s) { return s.aabb_max; });
-    out.obb_center = columns<float, 3>(c, [](const S& s) { return s.obb_center; });
-    out.obb_extent = columns<float, 3>(c, [](const S& s) { return s.obb_extent; });
-    out.obb_yaw = columns<float, 1>(c, [](const S& s) { return s.obb_yaw; });
-    out.ground_z = columns<float, 1>(c, [](const S& s) { return s.ground_z; });
-    out.height_above_ground =
-        columns<float, 1>(c, [](const S& s) { return s.height_above_ground; });
+    forEachClusterArray(
+        [&](const char*, py::array ClustersPy::*member, const char*, auto col, auto get) {
+            using Col = decltype(col);
+            out.*member = columns<typename Col::Type, Col::cols>(c, get);
+        });
+    return out;
+}
+
+py::object clustersState(const ClustersPy& c) {
+    py::list items;
+    forEachClusterArray(
+        [&](const char*, py::array ClustersPy::*member, auto&&...) { items.append(c.*member); });
+    return py::tuple(items);
+}
+
+ClustersPy clustersFromState(const py::object& state, const std::string& context) {
+    StateReader in(context, state, countOf([](auto visit) { forEachClusterArray(visit); }));
+    ClustersPy out;
+    py::ssize_t k = -1;  // the row count: the first array's
+    forEachClusterArray(
+        [&](const char* name, py::array ClustersPy::*member, const char*, auto col, auto) {
+            using Col = decltype(col);
+            out.*member = in.array<typename Col::Type>(name, Col::shape(k));
+            k = (out.*member).shape(0);
+        });
+    out.size = static_cast<std::size_t>(k);
     return out;
 }
 
@@ -286,6 +512,94 @@ py::array_t<float> triangleCornersXYZ(const TerrainModel& t) {
     return adopt<float>(std::move(xyz), {m, 3, 3});
 }
 
+/// Terrain's per-node arrays, in the order of its pickle state: visit(name, doc, Column<T, C>,
+/// get(node) -> row, set(node, row)) each. A null doc: in the state only (corners shows it).
+template <class Visit>
+void forEachNodeArray(Visit&& visit) {
+    using N = TriNode;
+    using V3 = Eigen::Map<const Eigen::Vector3f>;
+    visit(
+        "node_class",
+        "(M,) uint8: 0 empty, 1 unknown (too few points), 2 terrain, 3 obstacle (too steep)",
+        Column<uint8_t, 1>{}, [](const N& n) { return n.node_class; },
+        [](N& n, const uint8_t* v) { n.node_class = static_cast<NodeClass>(*v); });
+    visit(
+        "num_points", "(M,) uint32", Column<uint32_t, 1>{}, [](const N& n) { return n.count; },
+        [](N& n, const uint32_t* v) { n.count = *v; });
+    visit(
+        "planes", "(M, 4) float32 node-wise PCA plane (sx, sy, sz, d): s.p + d = 0",
+        Column<float, 4>{},
+        [](const N& n) { return Eigen::Vector4f(n.normal.x(), n.normal.y(), n.normal.z(), n.d); },
+        [](N& n, const float* v) { n.normal = V3(v), n.d = v[3]; });
+    visit(
+        "means", "(M, 3) float32 mean of the node's points", Column<float, 3>{},
+        [](const N& n) { return n.mean; }, [](N& n, const float* v) { n.mean = V3(v); });
+    visit(
+        "weights", "(M,) float32 the paper's node weight (eq. 1)", Column<float, 1>{},
+        [](const N& n) { return n.weight; }, [](N& n, const float* v) { n.weight = *v; });
+    visit(
+        "reached", "(M,) bool reached by the traversable graph search", Column<bool, 1>{},
+        [](const N& n) { return n.reached; }, [](N& n, const uint8_t* v) { n.reached = *v; });
+    visit(
+        "traversable",
+        "(M,) bool the final decision: the node's points are labelled against ground_planes",
+        Column<bool, 1>{}, [](const N& n) { return n.traversable; },
+        [](N& n, const uint8_t* v) { n.traversable = *v; });
+    visit(
+        "ground_planes",
+        "(M, 4) float32 TTMF's refitted plane (sx, sy, sz, d); meaningful where traversable",
+        Column<float, 4>{},
+        [](const N& n) {
+            return Eigen::Vector4f(n.refit_normal.x(), n.refit_normal.y(), n.refit_normal.z(),
+                                   n.refit_d);
+        },
+        [](N& n, const float* v) { n.refit_normal = V3(v), n.refit_d = v[3]; });
+    visit(
+        "corner_z", nullptr, Column<float, 3>{}, [](const N& n) { return n.corner_z; },
+        [](N& n, const float* v) { n.corner_z = V3(v); });
+}
+
+/// (resolution, cells_per_side, origin_xy, seed_node, num_components, per-node arrays...).
+py::object terrainState(const TerrainPy& t) {
+    const TerrainModel& model = *t.model;
+    py::list items(py::make_tuple(model.resolution, model.cells_per_side, model.origin_xy,
+                                  model.seed_node, model.num_components));
+    forEachNodeArray([&](const char*, const char*, auto col, auto get, auto) {
+        using Col = decltype(col);
+        items.append(columns<typename Col::Type, Col::cols>(model.nodes, get));
+    });
+    return py::tuple(items);
+}
+
+TerrainPy terrainFromState(const py::object& state, const std::string& context) {
+    StateReader in(context, state, 5 + countOf([](auto visit) { forEachNodeArray(visit); }));
+    auto model = std::make_shared<TerrainModel>();
+    model->resolution = in.real32("resolution");
+    // 4 * side^2 nodes fit an int (TriGridGeometry::numNodes).
+    model->cells_per_side = static_cast<int>(in.integer("cells_per_side", 0, 23170));
+    model->origin_xy = in.real32("origin_xy");
+    const int m = model->numNodes();
+    model->seed_node = static_cast<int>(in.integer("seed_node", -1, m - 1));
+    model->num_components =
+        static_cast<int>(in.integer("num_components", 0, std::numeric_limits<int>::max()));
+    std::vector<py::array> arrays;  // all checked before the nodes are allocated
+    forEachNodeArray([&](const char* name, const char*, auto col, auto, auto) {
+        using Col = decltype(col);
+        arrays.push_back(in.array<typename Col::Type>(name, Col::shape(m)));
+    });
+    model->nodes.resize(static_cast<std::size_t>(m));
+    std::size_t k = 0;
+    forEachNodeArray([&](const char*, const char*, auto col, auto, auto set) {
+        fromColumns<decltype(col)>(arrays[k++], model->nodes, set);
+    });
+    for (std::size_t i = 0; i < model->nodes.size(); ++i)
+        if (static_cast<uint8_t>(model->nodes[i].node_class) > 3)
+            in.fail("node_class", "values must be in [0, 3], got " +
+                                      std::to_string(int(model->nodes[i].node_class)) +
+                                      " at index " + std::to_string(i));
+    return {std::move(model), {}};
+}
+
 struct ResultPy {
     py::array labels, cluster_ids;
     ClustersPy clusters;
@@ -296,15 +610,57 @@ struct ResultPy {
     std::string mount_note;
 };
 
+/// The stages of StageTimings, by name (Result.timings and the pickle state).
+constexpr std::pair<const char*, double StageTimings::*> kStages[] = {
+    {"preprocess", &StageTimings::preprocess},
+    {"embedding", &StageTimings::embedding},
+    {"node_fitting", &StageTimings::node_fitting},
+    {"graph_search", &StageTimings::graph_search},
+    {"ttmf", &StageTimings::ttmf},
+    {"labelling", &StageTimings::labelling},
+    {"ground_total", &StageTimings::ground_total},
+    {"range_image", &StageTimings::range_image},
+    {"horizontal", &StageTimings::horizontal},
+    {"vertical", &StageTimings::vertical},
+    {"clusters", &StageTimings::clusters},
+    {"objects_total", &StageTimings::objects_total}};
+
 py::dict timingsDict(const StageTimings& t) {
     py::dict d;
-    d["preprocess"] = t.preprocess, d["embedding"] = t.embedding;
-    d["node_fitting"] = t.node_fitting, d["graph_search"] = t.graph_search;
-    d["ttmf"] = t.ttmf, d["labelling"] = t.labelling, d["ground_total"] = t.ground_total;
-    d["range_image"] = t.range_image, d["horizontal"] = t.horizontal;
-    d["vertical"] = t.vertical, d["clusters"] = t.clusters;
-    d["objects_total"] = t.objects_total, d["total"] = t.ground_total + t.objects_total;
+    for (const auto& [name, member] : kStages) d[name] = t.*member;
+    d["total"] = t.ground_total + t.objects_total;
     return d;
+}
+
+/// (labels, cluster_ids, clusters' state, terrain's state, timings (kStages order), class counts
+/// (kPointClassNames order), sensor_height, mount_note).
+py::object resultState(const ResultPy& r) {
+    py::list timings, counts;
+    for (const auto& stage : kStages) timings.append(r.timings.*stage.second);
+    for (const auto& c : kPointClassNames) counts.append(r.class_counts[int(c.value)]);
+    return py::make_tuple(r.labels, r.cluster_ids, clustersState(r.clusters),
+                          terrainState(r.terrain), py::tuple(timings), py::tuple(counts),
+                          r.sensor_height, r.mount_note);
+}
+
+/// Checks sizes and types only: the arrays of a Result and its Clusters are writable, and an
+/// edited one (own cluster ids, relabelled points) comes back as it was pickled.
+ResultPy resultFromState(const py::object& state) {
+    StateReader in("travel.Result", state, 8);
+    ResultPy r;
+    r.labels = in.array<uint8_t>("labels", {-1});
+    const py::ssize_t n = r.labels.shape(0);
+    r.cluster_ids = in.array<uint32_t>("cluster_ids", {n});
+    r.clusters = clustersFromState(in.next(), in.context("clusters"));
+    r.terrain = terrainFromState(in.next(), in.context("terrain"));
+    StateReader timings(in.context("timings"), in.next(), std::size(kStages));
+    for (const auto& [name, member] : kStages) r.timings.*member = timings.real(name);
+    StateReader counts(in.context("class_counts"), in.next(), std::size(kPointClassNames));
+    for (const auto& c : kPointClassNames)
+        r.class_counts[int(c.value)] = static_cast<std::size_t>(counts.integer(c.name, 0, n));
+    r.sensor_height = in.real("sensor_height");
+    r.mount_note = in.text("mount_note");
+    return r;
 }
 
 // ---- Pipeline ------------------------------------------------------------------------------
@@ -529,46 +885,29 @@ any copy. `points` builds an (N, 4) float32 array (x, y, z, intensity) on each a
         .def_readonly("format", &ScanPy::format, "The format read: kitti, nuscenes, pcd or ply.")
         .def_property_readonly("points", &scanPoints,
                                "(N, 4) float32: x, y, z, intensity (a copy).")
-        .def_property_readonly(
-            "rings",
-            [](const ScanPy& s) -> py::object {
-                if (!s.cloud.hasRing()) return py::none();
-                return py::array_t<uint16_t>(static_cast<py::ssize_t>(s.cloud.size()),
-                                             s.cloud.ring.data());
-            },
-            "(N,) uint16 laser ring (0 = lowest), or None when the file has none.")
-        .def_property_readonly(
-            "times",
-            [](const ScanPy& s) -> py::object {
-                if (!s.cloud.hasTime()) return py::none();
-                return py::array_t<float>(static_cast<py::ssize_t>(s.cloud.size()),
-                                          s.cloud.time.data());
-            },
-            "(N,) float32 per-point time [s], or None when the file has none.")
+        .def_property_readonly("rings", &scanRings,
+                               "(N,) uint16 laser ring (0 = lowest), or None when the file has "
+                               "none.")
+        .def_property_readonly("times", &scanTimes,
+                               "(N,) float32 per-point time [s], or None when the file has none.")
+        .def(py::pickle(&scanState, &scanFromState))
         .def("__repr__", [](const ScanPy& s) {
             return "travel.Scan('" + s.path + "', format='" + s.format + "', " +
                    std::to_string(s.cloud.size()) + " points)";
         });
 
-    py::class_<ClustersPy>(m, "Clusters", R"doc(
+    py::class_<ClustersPy> clusters(m, "Clusters", R"doc(
 One row per cluster, ordered by id (ids[k] == k + 1). Coordinates in the aligned frame (sensor
 origin, z up against gravity). Boxes: axis-aligned (aabb_min, aabb_max) and oriented (obb_center,
 obb_extent = length >= width, height; obb_yaw [rad] of the length axis). ground_z: terrain height
 under the centroid (NaN if unknown); height_above_ground: of the highest point above it [m].
-)doc")
-        .def("__len__", [](const ClustersPy& c) { return c.size; })
-        .def_readonly("ids", &ClustersPy::ids, "(K,) uint32")
-        .def_readonly("num_points", &ClustersPy::num_points, "(K,) uint32")
-        .def_readonly("first_point", &ClustersPy::first_point,
-                      "(K,) uint32 smallest input index (ids are ordered by it)")
-        .def_readonly("centroids", &ClustersPy::centroids, "(K, 3) float32")
-        .def_readonly("aabb_min", &ClustersPy::aabb_min, "(K, 3) float32")
-        .def_readonly("aabb_max", &ClustersPy::aabb_max, "(K, 3) float32")
-        .def_readonly("obb_center", &ClustersPy::obb_center, "(K, 3) float32")
-        .def_readonly("obb_extent", &ClustersPy::obb_extent, "(K, 3) float32")
-        .def_readonly("obb_yaw", &ClustersPy::obb_yaw, "(K,) float32 [rad]")
-        .def_readonly("ground_z", &ClustersPy::ground_z, "(K,) float32 [m], NaN if unknown")
-        .def_readonly("height_above_ground", &ClustersPy::height_above_ground, "(K,) float32 [m]");
+)doc");
+    clusters.def("__len__", [](const ClustersPy& c) { return c.size; })
+        .def(py::pickle(&clustersState, [](const py::object& state) {
+            return clustersFromState(state, "travel.Clusters");
+        }));
+    forEachClusterArray([&](const char* name, py::array ClustersPy::*member, const char* doc,
+                            auto&&...) { clusters.def_readonly(name, member, doc); });
 
     using T = TerrainModel;
     auto nodes = [](auto get) { return [get](const TerrainPy& t) { return get(*t.model); }; };
@@ -586,66 +925,32 @@ under the centroid (NaN if unknown); height_above_ground: of the highest point a
             return array;
         };
     };
-    py::class_<TerrainPy>(m, "Terrain", R"doc(
+    py::class_<TerrainPy> terrain(m, "Terrain", R"doc(
 The terrain model of a frame (paper Sec. III): a tri-grid of square cells of side `resolution`,
 4 triangular nodes per cell, node index = 4 * (iy * cells_per_side + ix) + triangle (0 east,
 1 north, 2 west, 3 south). Aligned frame: sensor origin, z up; ground near z = -sensor_height.
 Arrays have one row per node (M = 4 * cells_per_side**2), built when first read and kept
 (each read returns the same array), read-only (copy one to edit it).
-)doc")
-        .def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
+)doc");
+    terrain.def("__len__", [](const TerrainPy& t) { return t.model->nodes.size(); })
         .def_property_readonly("resolution", nodes([](const T& t) { return t.resolution; }))
         .def_property_readonly("cells_per_side", nodes([](const T& t) { return t.cells_per_side; }))
         .def_property_readonly("origin_xy", nodes([](const T& t) { return t.origin_xy; }),
                                "x and y of the grid's lower-left corner")
         .def_property_readonly("seed_node", nodes([](const T& t) { return t.seed_node; }),
                                "start node of the first search (-1: none)")
-        .def_property_readonly("num_components", nodes([](const T& t) { return t.num_components; }))
-        .def_property_readonly(
-            "node_class", cached([](const T& t) {
-                return columns<uint8_t, 1>(t.nodes, [](const TriNode& n) { return n.node_class; });
-            }),
-            "(M,) uint8: 0 empty, 1 unknown (too few points), 2 terrain, 3 obstacle (too steep)")
-        .def_property_readonly("num_points", cached([](const T& t) {
-                                   return columns<uint32_t, 1>(
-                                       t.nodes, [](const TriNode& n) { return n.count; });
-                               }),
-                               "(M,) uint32")
-        .def_property_readonly("planes", cached([](const T& t) {
-                                   return columns<float, 4>(t.nodes, [](const TriNode& n) {
-                                       return Eigen::Vector4f(n.normal.x(), n.normal.y(),
-                                                              n.normal.z(), n.d);
-                                   });
-                               }),
-                               "(M, 4) float32 node-wise PCA plane (sx, sy, sz, d): s.p + d = 0")
-        .def_property_readonly("means", cached([](const T& t) {
-                                   return columns<float, 3>(
-                                       t.nodes, [](const TriNode& n) { return n.mean; });
-                               }),
-                               "(M, 3) float32 mean of the node's points")
-        .def_property_readonly("weights", cached([](const T& t) {
-                                   return columns<float, 1>(
-                                       t.nodes, [](const TriNode& n) { return n.weight; });
-                               }),
-                               "(M,) float32 the paper's node weight (eq. 1)")
-        .def_property_readonly("reached", cached([](const T& t) {
-                                   return columns<bool, 1>(
-                                       t.nodes, [](const TriNode& n) { return n.reached; });
-                               }),
-                               "(M,) bool reached by the traversable graph search")
-        .def_property_readonly(
-            "traversable", cached([](const T& t) {
-                return columns<bool, 1>(t.nodes, [](const TriNode& n) { return n.traversable; });
-            }),
-            "(M,) bool the final decision: the node's points are labelled against ground_planes")
-        .def_property_readonly(
-            "ground_planes", cached([](const T& t) {
-                return columns<float, 4>(t.nodes, [](const TriNode& n) {
-                    return Eigen::Vector4f(n.refit_normal.x(), n.refit_normal.y(),
-                                           n.refit_normal.z(), n.refit_d);
-                });
-            }),
-            "(M, 4) float32 TTMF's refitted plane (sx, sy, sz, d); meaningful where traversable")
+        .def_property_readonly("num_components",
+                               nodes([](const T& t) { return t.num_components; }));
+    forEachNodeArray([&](const char* name, const char* doc, auto col, auto get, auto) {
+        using Col = decltype(col);
+        if (doc)
+            terrain.def_property_readonly(name, cached([get](const T& t) {
+                                              return columns<typename Col::Type, Col::cols>(t.nodes,
+                                                                                            get);
+                                          }),
+                                          doc);
+    });
+    terrain
         .def_property_readonly(
             "corners", cached([](const T& t) { return triangleCornersXYZ(t); }),
             "(M, 3, 3) float32 the triangle's corners (cell centre first, counter-clockwise): "
@@ -668,12 +973,16 @@ Arrays have one row per node (M = 4 * cells_per_side**2), built when first read 
             },
             py::arg("points"),
             "(N,) float32 height of aligned-frame points above the local ground (lowest of the "
-            "ground planes of the point's cell and its 4 neighbours), NaN where unknown.");
+            "ground planes of the point's cell and its 4 neighbours), NaN where unknown.")
+        .def(py::pickle(&terrainState, [](const py::object& state) {
+            return terrainFromState(state, "travel.Terrain");
+        }));
 
     py::class_<ResultPy>(m, "Result", R"doc(
 The result of one frame; arrays are indexed like the input points and owned by the Result.
 labels (N,) uint8: 0 invalid (NaN / inf / zero / out of range), 1 ground, 2 non-ground,
-3 outlier (below ground). cluster_ids (N,) uint32, 0 = no cluster.
+3 outlier (below ground). cluster_ids (N,) uint32, 0 = no cluster. Pickles exactly (so it comes
+back from a worker process), as do Scan, Clusters and Terrain.
 )doc")
         .def_readonly("labels", &ResultPy::labels, "(N,) uint8 class per point")
         .def_readonly("cluster_ids", &ResultPy::cluster_ids, "(N,) uint32, 0 = no cluster")
@@ -688,10 +997,10 @@ labels (N,) uint8: 0 invalid (NaN / inf / zero / out of range), 1 ground, 2 non-
             "Milliseconds per stage of this frame (and 'total').")
         .def_property_readonly("class_counts",
                                [](const ResultPy& r) {
-                                   return py::dict(py::arg("invalid") = r.class_counts[0],
-                                                   py::arg("ground") = r.class_counts[1],
-                                                   py::arg("nonground") = r.class_counts[2],
-                                                   py::arg("outlier") = r.class_counts[3]);
+                                   py::dict d;
+                                   for (const auto& c : kPointClassNames)
+                                       d[c.name] = r.class_counts[int(c.value)];
+                                   return d;
                                })
         .def_readonly("sensor_height", &ResultPy::sensor_height,
                       "h_s used for this frame (the estimate once an 'auto' height is known)")
@@ -699,11 +1008,13 @@ labels (N,) uint8: 0 invalid (NaN / inf / zero / out of range), 1 ground, 2 non-
                       "News about the sensor mount on the frame it happened ('' otherwise): an "
                       "'auto' estimate, or configured values far from the ground")
         .def("__len__", [](const ResultPy& r) { return r.labels.size(); })
-        .def("__repr__", [](const ResultPy& r) {
-            return "travel.Result(" + std::to_string(r.labels.size()) + " points, " +
-                   std::to_string(r.class_counts[1]) + " ground, " +
-                   std::to_string(r.clusters.size) + " clusters)";
-        });
+        .def("__repr__",
+             [](const ResultPy& r) {
+                 return "travel.Result(" + std::to_string(r.labels.size()) + " points, " +
+                        std::to_string(r.class_counts[1]) + " ground, " +
+                        std::to_string(r.clusters.size) + " clusters)";
+             })
+        .def(py::pickle(&resultState, &resultFromState));
 
     py::class_<PipelinePy>(m, "Pipeline", R"doc(
 The TRAVEL pipeline: ground segmentation, then object clustering of the non-ground points.

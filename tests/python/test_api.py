@@ -2,7 +2,9 @@
 labels, parameters, files, metrics, errors and threads."""
 import concurrent.futures
 import copy
+import multiprocessing
 import pickle
+import struct
 
 import numpy as np
 import pytest
@@ -424,3 +426,185 @@ def test_every_params_pickles():
         assert q == p and (q.min_range, q.max_range) == (50.0, 40.0)
     with pytest.raises(travel.ConfigError, match="min_range"):
         pickle.loads(pickle.dumps(p)).validate()
+
+
+# ---- Pickling ------------------------------------------------------------------------------
+
+TERRAIN_METHODS = {  # every Terrain method, called the same way on both sides
+    "node_at": lambda t, points: [t.node_at(x, y) for x, y in points[::97, :2]],
+    "height_above_ground": lambda t, points: t.height_above_ground(points),
+}
+
+
+def assert_same(a, b, points, where="", skip=()):
+    """a and b are equal bit for bit in everything they expose: arrays by dtype, shape and bytes,
+    floats by their bits (NaN included), travel objects by every public attribute (a method
+    without a call in TERRAIN_METHODS fails, so that a new one gets compared)."""
+    assert type(a) is type(b), where
+    if isinstance(a, np.ndarray):
+        assert (a.dtype, a.shape) == (b.dtype, b.shape), where
+        assert a.tobytes() == b.tobytes(), where
+    elif isinstance(a, float):
+        assert struct.pack("<d", a) == struct.pack("<d", b), where
+    elif isinstance(a, dict):
+        assert a.keys() == b.keys(), where
+        for key in a:
+            assert_same(a[key], b[key], points, f"{where}[{key!r}]")
+    elif type(a).__module__ == "travel._travel":
+        assert len(a) == len(b), where
+        names = [n for n in dir(type(a)) if not n.startswith("_") and n not in skip]
+        assert names, where
+        for name in names:
+            if isinstance(getattr(type(a), name), property):
+                assert_same(getattr(a, name), getattr(b, name), points, f"{where}.{name}")
+            else:
+                assert name in TERRAIN_METHODS, f"{where}.{name}: no comparison for this method"
+                assert_same(TERRAIN_METHODS[name](a, points), TERRAIN_METHODS[name](b, points),
+                            points, f"{where}.{name}()")
+    elif isinstance(a, list):
+        assert len(a) == len(b), where
+        for k, (x, y) in enumerate(zip(a, b)):
+            assert_same(x, y, points, f"{where}[{k}]")
+    else:
+        assert a == b, where
+
+
+def scan_file(tmp_path, seed=0):
+    """A synthetic frame as a binary PCD with ring and time fields, read back as a travel.Scan."""
+    points, ring, _ = synthetic_frame(seed=seed)
+    fields = [("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("intensity", "<f4"), ("ring", "<u2"),
+              ("time", "<f4")]
+    records = np.zeros(len(points), dtype=fields)
+    for k, name in enumerate(("x", "y", "z", "intensity")):
+        records[name] = points[:, k]
+    records["ring"] = ring
+    records["time"] = np.linspace(0, 0.1, len(points), dtype=np.float32)
+    header = (f"VERSION 0.7\nFIELDS x y z intensity ring time\nSIZE 4 4 4 4 2 4\n"
+              f"TYPE F F F F U F\nCOUNT 1 1 1 1 1 1\nWIDTH {len(points)}\nHEIGHT 1\n"
+              f"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS {len(points)}\nDATA binary\n")
+    path = tmp_path / f"{seed:06d}.pcd"
+    path.write_bytes(header.encode() + records.tobytes())
+    return travel.read_scan(path)
+
+
+def test_results_scans_and_their_parts_pickle_exactly(tmp_path, frame):
+    points = frame[0]
+    # 'auto': the first frame's Result carries a mount note.
+    r = travel.Pipeline(travel.Params(sensor_height="auto")).process(points)
+    assert r.mount_note and len(r.clusters) > 0 and np.isnan(r.terrain.corners).any()
+    kitti = tmp_path / "000000.bin"
+    points.tofile(kitti)
+    scans = [travel.read_scan(kitti), scan_file(tmp_path)]
+    assert scans[0].rings is None and scans[1].rings is not None and scans[1].times is not None
+    for obj in (r, r.clusters, r.terrain, *scans):
+        for protocol in (2, pickle.HIGHEST_PROTOCOL):
+            assert_same(obj, pickle.loads(pickle.dumps(obj, protocol)), points, repr(obj))
+        assert_same(obj, copy.deepcopy(obj), points, repr(obj))
+    # An unpickled Result's clusters and terrain are its own (as from process()); a part
+    # pickled apart from its Result holds its own data.
+    r2, terrain2 = pickle.loads(pickle.dumps((r, r.terrain)))
+    assert r2.terrain is r2.terrain and terrain2 is not r2.terrain
+    del r2
+    assert_same(terrain2, r.terrain, points)
+    # Writable arrays pickle as edited (the caller's own ids), like any numpy array.
+    r.cluster_ids[:] = 7
+    r.clusters.ids[:] = 70000
+    assert_same(pickle.loads(pickle.dumps(r)), r, points)
+    # A Result of no points, no clusters.
+    empty = segment(np.zeros((0, 3), np.float32))
+    assert len(empty) == 0 and len(empty.clusters) == 0
+    assert_same(pickle.loads(pickle.dumps(empty)), empty, points)
+
+
+def _process(params, points):
+    return travel.Pipeline(params).process(points)
+
+
+def test_a_process_pool_gives_the_in_process_results(tmp_path):
+    """Scans and Params go to worker processes, Results come back: equal to the in-process
+    ones in everything but the timings (CPU time of the worker)."""
+    params = travel.Params.from_preset("hdl64")
+    jobs = [(params, scan_file(tmp_path, seed)) for seed in range(2)]
+    jobs += [(params, synthetic_frame(seed=seed)[0]) for seed in range(2, 4)]
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        results = pool.starmap(_process, jobs)
+    for (p, points), result in zip(jobs, results):
+        expected = _process(p, points)
+        array = points if isinstance(points, np.ndarray) else points.points
+        assert_same(result, expected, array, skip=("timings",))
+        assert result.timings.keys() == expected.timings.keys()
+
+
+def _new(cls):
+    return cls.__new__(cls)
+
+
+class _Forged:
+    """Pickles as `cls` with `state`, as a corrupt file or another version would (unpickled
+    as copyreg.__newobj__ would: cls.__new__(cls), then __setstate__(state))."""
+
+    def __init__(self, cls, state):
+        self.cls, self.state = cls, state
+
+    def __reduce__(self):
+        return _new, (self.cls,), self.state
+
+
+def unpickle(cls, state):
+    return pickle.loads(pickle.dumps(_Forged(cls, state)))
+
+
+def test_a_bad_state_raises_value_error_naming_the_item(tmp_path, frame):
+    r = segment(frame[0])
+    state = r.__reduce_ex__(2)[2]
+    assert_same(unpickle(travel.Result, state), r, frame[0])
+
+    def with_item(s, k, value):
+        return s[:k] + (value,) + s[k + 1:]
+
+    clusters, terrain = state[2], state[3]
+    node_class = terrain[5].copy()
+    node_class[0] = 9
+    bad = {
+        "expected a tuple of 8 items, got list": list(state),
+        "expected a tuple of 8 items, got 7": state[:-1],
+        r"labels: expected a uint8 array of shape \(N,\), got int64 of shape":
+            with_item(state, 0, state[0].astype(np.int64)),
+        rf"cluster_ids: expected a uint32 array of shape \({len(r)},\), got uint32 of shape":
+            with_item(state, 1, state[1][:-1]),
+        rf"clusters: centroids: expected a float32 array of shape \({len(r.clusters)}, 3\)":
+            with_item(state, 2, with_item(clusters, 3, clusters[3][:, :2])),
+        r"terrain: cells_per_side: expected an int in \[0, 23170\], got -1":
+            with_item(state, 3, with_item(terrain, 1, -1)),
+        "terrain: resolution: expected a float, got str":
+            with_item(state, 3, with_item(terrain, 0, "0.5")),
+        rf"terrain: weights: expected a float32 array of shape \({len(r.terrain)},\), got float64":
+            with_item(state, 3, with_item(terrain, 9, terrain[9].astype(np.float64))),
+        r"terrain: node_class: values must be in \[0, 3\], got 9":
+            with_item(state, 3, with_item(terrain, 5, node_class)),
+        "timings: expected a tuple of 12 items, got 11": with_item(state, 4, state[4][1:]),
+        rf"class_counts: ground: expected an int in \[0, {len(r)}\], got str":
+            with_item(state, 5, with_item(state[5], 1, "many")),
+        "mount_note: expected a str, got bytes": with_item(state, 7, b""),
+    }
+    for message, s in bad.items():
+        with pytest.raises(ValueError, match="cannot unpickle travel.Result: " + message):
+            unpickle(travel.Result, s)
+    with pytest.raises(ValueError, match=r"travel.Terrain: seed_node: expected an int in \["):
+        unpickle(travel.Terrain, with_item(terrain, 3, 10**30))
+    with pytest.raises(ValueError, match="travel.Clusters: expected a tuple of 11 items"):
+        unpickle(travel.Clusters, clusters + clusters)
+    frame[0].tofile(tmp_path / "0.bin")
+    scan = travel.read_scan(tmp_path / "0.bin").__reduce_ex__(2)[2]
+    for message, s in {
+        r"points: expected a float32 array of shape \(N, 4\), got float32 of shape \(\d+, 3\)":
+            with_item(scan, 2, scan[2][:, :3]),
+        r"rings: expected a uint16 array of shape \(\d+,\), got int32":
+            with_item(scan, 3, np.zeros(len(scan[2]), np.int32)),
+        "format: unknown scan format 'las'": with_item(scan, 1, "las"),
+    }.items():
+        with pytest.raises(ValueError, match="cannot unpickle travel.Scan: " + message):
+            unpickle(travel.Scan, s)
+    # An array of the other byte order, or a strided view, holds the same values.
+    swapped = with_item(state, 1, np.repeat(state[1].astype(">u4"), 2)[::2])
+    assert_same(unpickle(travel.Result, swapped), r, frame[0])
