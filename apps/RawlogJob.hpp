@@ -227,7 +227,7 @@ class RawlogSegmenter {
         birds_eye_.title = title;
         travel_mrpt::renderBirdsEye(aligned, result.labels, result.cluster_id, &result.terrain,
                                     birds_eye_, image_);
-        if (!image_.saveToFile(stem + ".png")) throw AppError(stem + ".png: cannot write PNG");
+        travel_mrpt::savePicture(image_, stem + ".png");
         travel::apps::writePly(stem + ".ply", aligned, result);
     }
 
