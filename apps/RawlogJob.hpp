@@ -71,6 +71,7 @@ class CsvLog {
     explicit CsvLog(const std::string& path);
     void add(std::size_t frame, const mrpt::obs::CObservation& obs,
              const travel_mrpt::TravelFrame& f);
+    void finish();
 
   private:
     std::string path_;
@@ -206,7 +207,10 @@ class RawlogSegmenter {
     }
 
     void startRecord() { outputs_.startRecord(); }
-    void finish() { reference_.finish(); }
+    void finish() {
+        csv_.finish();
+        reference_.finish();
+    }
     const Totals& totals() const { return totals_; }
 
   private:
