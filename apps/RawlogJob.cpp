@@ -5,11 +5,14 @@
 
 #include <mrpt/obs/CObservation.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <ostream>
 
 #include "LabelReference.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
 #include "travel_mrpt/TravelFilter.hpp"
@@ -50,23 +53,23 @@ void writePly(const std::string& path, const travel::AlignedCloud& aligned,
     std::size_t n = 0;
     for (std::size_t i = 0; i < labels.size(); ++i)
         n += pointColour(labels[i], id(i), any_cluster).has_value();
-    std::FILE* f = std::fopen(path.c_str(), "w");
-    if (!f) throw AppError(path + ": cannot open for writing");
-    std::fprintf(f,
-                 "ply\nformat ascii 1.0\ncomment TRAVEL labels: green ground, blue outlier, one "
-                 "colour per cluster, grey unclustered non-ground; sensor-centred levelled "
-                 "frame\nelement vertex %zu\n"
-                 "property float x\nproperty float y\nproperty float z\n"
-                 "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n",
-                 n);
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-        const auto c = pointColour(labels[i], id(i), any_cluster);
-        if (!c) continue;
-        std::fprintf(f, "%.3f %.3f %.3f %u %u %u\n", aligned.x[i], aligned.y[i], aligned.z[i],
-                     (*c >> 16) & 0xFFu, (*c >> 8) & 0xFFu, *c & 0xFFu);
-    }
-    const bool ok = std::ferror(f) == 0;
-    if (std::fclose(f) != 0 || !ok) throw AppError(path + ": write error");
+    travel::writeThroughPartFile(path, [&](std::ostream& out) {
+        out << "ply\nformat ascii 1.0\ncomment TRAVEL labels: green ground, blue outlier, one "
+               "colour per cluster, grey unclustered non-ground; sensor-centred levelled "
+               "frame\nelement vertex "
+            << n
+            << "\nproperty float x\nproperty float y\nproperty float z\n"
+               "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+        char line[192];  // 3 x 45 characters at most for a float with 3 decimals
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            const auto c = pointColour(labels[i], id(i), any_cluster);
+            if (!c) continue;
+            const int length = std::snprintf(line, sizeof line, "%.3f %.3f %.3f %u %u %u\n",
+                                             aligned.x[i], aligned.y[i], aligned.z[i],
+                                             (*c >> 16) & 0xFFu, (*c >> 8) & 0xFFu, *c & 0xFFu);
+            out.write(line, std::min<std::streamsize>(length, sizeof line - 1));
+        }
+    });
 }
 
 CsvLog::CsvLog(const std::string& path) : path_(path) {
@@ -96,6 +99,12 @@ void CsvLog::add(std::size_t frame, const mrpt::obs::CObservation& obs,
                   t.node_fitting, t.graph_search, t.ttmf, t.labelling, t.range_image, t.horizontal,
                   t.vertical, t.clusters, f.process_ms);
     file_ << line;
+    if (!file_) throw AppError(path_ + ": write error");
+}
+
+void CsvLog::finish() {
+    if (!file_.is_open()) return;
+    file_.close();  // the last rows are written here: a full disk shows only now
     if (!file_) throw AppError(path_ + ": write error");
 }
 

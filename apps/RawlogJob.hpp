@@ -71,6 +71,7 @@ class CsvLog {
     explicit CsvLog(const std::string& path);
     void add(std::size_t frame, const mrpt::obs::CObservation& obs,
              const travel_mrpt::TravelFrame& f);
+    void finish();
 
   private:
     std::string path_;
@@ -206,7 +207,10 @@ class RawlogSegmenter {
     }
 
     void startRecord() { outputs_.startRecord(); }
-    void finish() { reference_.finish(); }
+    void finish() {
+        csv_.finish();
+        reference_.finish();
+    }
     const Totals& totals() const { return totals_; }
 
   private:
@@ -227,7 +231,7 @@ class RawlogSegmenter {
         birds_eye_.title = title;
         travel_mrpt::renderBirdsEye(aligned, result.labels, result.cluster_id, &result.terrain,
                                     birds_eye_, image_);
-        if (!image_.saveToFile(stem + ".png")) throw AppError(stem + ".png: cannot write PNG");
+        travel_mrpt::savePicture(image_, stem + ".png");
         travel::apps::writePly(stem + ".ply", aligned, result);
     }
 

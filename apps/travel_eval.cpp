@@ -33,13 +33,13 @@
 #include "LargePages.hpp"
 #include "OrderedWork.hpp"
 #include "Progress.hpp"
-#include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/Text.hpp"
 #include "travel/eval/MergeDiagnostics.hpp"
 #include "travel/eval/Report.hpp"
 #include "travel/eval/Segmenter.hpp"
 #include "travel/io/BinaryFile.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
 
 namespace fs = std::filesystem;
 using mrpt::img::CImage;
@@ -240,10 +240,6 @@ CImage whiteImage(int w, int h) {
     return img;
 }
 
-void savePng(const CImage& img, const fs::path& path) {
-    if (!img.saveToFile(path.string())) throw travel::InputError("cannot write " + path.string());
-}
-
 // ---------------------------------------------------------------------------------------------
 // sweep
 
@@ -271,7 +267,7 @@ void writeSweep(const fs::path& dir, const std::string& method, const travel::ev
         xs, spec.values,
         {{"F1 protocol B", col([](const EvaluationSummary& s) { return s.f1[1].mean; }), kBlue},
          {"F1 protocol A", col([](const EvaluationSummary& s) { return s.f1[0].mean; }), kOrange}});
-    savePng(ground, dir / (stem + "_ground.png"));
+    travel_mrpt::savePicture(ground, (dir / (stem + "_ground.png")).string());
 
     CImage objects = whiteImage(800, 900);
     drawChart(objects, 0, 0, 800, 450, "Thing instances vs " + spec.key + " (" + what + ")",
@@ -285,7 +281,7 @@ void writeSweep(const fs::path& dir, const std::string& method, const travel::ev
               {{"USE", obj([](const EvaluationSummary& s) { return s.use.mean; }), kRed},
                {"OSE", obj([](const EvaluationSummary& s) { return s.ose.mean; }), kBlue}});
     objects.line(20, 450, 780, 450, kGrid);
-    savePng(objects, dir / (stem + "_objects.png"));
+    travel_mrpt::savePicture(objects, (dir / (stem + "_objects.png")).string());
 
     CImage time = whiteImage(800, 500);
     drawChart(
@@ -296,7 +292,7 @@ void writeSweep(const fs::path& dir, const std::string& method, const travel::ev
          {"ground + objects",
           col([](const EvaluationSummary& s) { return s.ground_ms + s.objects_ms; }), kBlack}},
         true);
-    savePng(time, dir / (stem + "_time.png"));
+    travel_mrpt::savePicture(time, (dir / (stem + "_time.png")).string());
 }
 // ---------------------------------------------------------------------------------------------
 

@@ -9,7 +9,6 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -22,6 +21,7 @@
 #include "Progress.hpp"
 #include "RawlogJob.hpp"
 #include "travel/eval/LabelComparison.hpp"
+#include "travel/io/BinaryFile.hpp"
 #include "travel/viz/BirdsEye.hpp"
 #include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CObservationTravelLabels.hpp"
@@ -233,11 +233,7 @@ void writeOutputs(const RegressOptions& o, travel::Config& configuration, Regres
         names.emplace_back(index, name);
     }
     const auto write = [&](const std::string& name, const auto& fill) {
-        const std::string path = (dir / name).string();
-        std::ofstream file(path);
-        if (!file) throw AppError(path + ": cannot open for writing");
-        fill(file);
-        if (!file) throw AppError(path + ": write error");
+        travel::writeThroughPartFile((dir / name).string(), fill);
     };
     write("frames.csv", [&](std::ostream& f) { regression.report().writeCsv(f); });
     write("report.md", [&](std::ostream& f) {

@@ -6,6 +6,7 @@
 // (.bt, .gridmap.gz) read back, and the map's own serialization.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
@@ -22,11 +23,18 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <tuple>
+#include <utility>
+#include <vector>
 
+#include "FileSizeLimit.hpp"
+#include "TempDir.hpp"
 #include "map/MapTestScene.hpp"
+#include "travel/io/BinaryFile.hpp"
+#include "travel_mrpt/BirdsEyeView.hpp"
 #include "travel_mrpt/CTraversabilityMap.hpp"
 #include "travel_mrpt/MapExport.hpp"
 #include "travel_mrpt/Registration.hpp"
@@ -547,6 +555,57 @@ TEST_F(MapFusion, SaveToLoadFromRoundTripAndContinue) {
     }
     EXPECT_EQ(loaded.asString(), before);
     std::filesystem::remove_all(dir);
+}
+
+// An export that cannot be written whole (a file size limit, as a full disk: at 1 byte its first
+// write fails, one byte short of the file its last one, at the close, which OctoMap, MRPT's
+// COpenGLScene and OpenCV do not check) is an error naming the file; the file an earlier export
+// wrote under the name stays as it was, and no part file is left.
+TEST_F(MapFusion, AnExportThatFailsKeepsThePreviousFile) {
+    const travel_test::TempDir tmp("travel_map_export_failure");
+    const std::string prefix = tmp.file("scene");
+    const auto contents = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const mrpt::img::CImage picture = travel_mrpt::traversabilityImage(*map_);
+    const std::vector<std::pair<std::string, std::function<void(const std::string&)>>> exports = {
+        {".bt", [&](const std::string& path) { travel_mrpt::saveOctoMap(*map_, path); }},
+        {".3Dscene", [&](const std::string& path) { travel_mrpt::save3DScene(*map_, path); }},
+        {".png", [&](const std::string& path) { travel_mrpt::savePicture(picture, path); }},
+        {".jpg", [&](const std::string& path) { travel_mrpt::savePicture(picture, path); }},
+    };
+    for (const auto& [suffix, save] : exports) {
+        const std::string path = prefix + suffix;
+        save(path);
+        const std::string before = contents(path);
+        ASSERT_GT(before.size(), 1u) << path;
+        for (const std::size_t bytes : {std::size_t(1), before.size() - 1}) {
+            std::string message;
+            {
+                const travel_test::FileSizeLimit limit(bytes);
+                message = errorOf([&] { save(path); });
+            }
+            EXPECT_EQ(message.rfind(path + ": cannot write (", 0), 0u)
+                << suffix << ", " << bytes << " bytes: " << message;
+            EXPECT_TRUE(contents(path) == before)  // not printed: binary
+                << suffix << ", " << bytes << " bytes";
+        }
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(tmp.path))
+        EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos)
+            << entry.path();
+
+    // exportAll writes each file so: a folder where its part file goes stops it at that file.
+    for (const std::string& path : travel_mrpt::exportAll(*map_, prefix)) {
+        const bool png = std::filesystem::path(path).extension() == ".png";
+        const std::string part = travel::PartFile::partOf(
+            path, png ? travel::PartFile::Name::BeforeExtension : travel::PartFile::Name::Appended);
+        std::filesystem::create_directories(part + "/inside");
+        const std::string message = errorOf([&] { travel_mrpt::exportAll(*map_, prefix); });
+        EXPECT_EQ(message.rfind(path + ": cannot write (", 0), 0u) << message;
+        std::filesystem::remove_all(part);
+    }
 }
 
 TEST_F(MapFusion, ClearEmptiesTheMap) {

@@ -9,11 +9,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "FileSizeLimit.hpp"
 #include "TempDir.hpp"
 #include "travel/Errors.hpp"
 #include "travel/io/BinaryFile.hpp"
@@ -505,4 +508,55 @@ TEST(PartFile, MovesInPlaceOnCommitAndLeavesNothingOtherwise) {
     }
     EXPECT_FALSE(fs::exists(folder + ".part"));
     EXPECT_TRUE(fs::is_directory(folder + "/inside"));
+}
+
+// writeThroughPartFile: a write cut by a file size limit (as by a full disk), at the close or
+// before, is an error naming the file and the reason; the previous file stays as it was and no
+// part file is left. An exception of the writer's goes on as it is.
+TEST(PartFile, AFailedWriteKeepsThePreviousFile) {
+    const TempDir tmp("travel_test_part_write");
+    const std::string path = tmp.write("report.md", "previous\n");
+    const auto contents = [&] {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const auto errorOf = [&](const std::function<void(std::ostream&)>& write) -> std::string {
+        try {
+            travel::writeThroughPartFile(path, write);
+        } catch (const std::runtime_error& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    // 100 bytes stay in the stream's buffer until the close; 1 MiB fail while being written.
+    for (const std::size_t size : {std::size_t(100), std::size_t(1) << 20}) {
+        std::string message;
+        {
+            const travel_test::FileSizeLimit limit(10);
+            message = errorOf([&](std::ostream& out) { out << std::string(size, 'x'); });
+        }
+        EXPECT_EQ(message, path + ": cannot write (File too large)") << size;
+        EXPECT_EQ(contents(), "previous\n") << size;
+        EXPECT_FALSE(fs::exists(path + ".part")) << size;
+    }
+    EXPECT_EQ(errorOf([](std::ostream& out) {
+                  out << "half";
+                  throw std::runtime_error("no more rows");
+              }),
+              "no more rows");
+    EXPECT_EQ(contents(), "previous\n");
+    EXPECT_FALSE(fs::exists(path + ".part"));
+    EXPECT_EQ(errorOf([](std::ostream& out) { out << "complete\n"; }), "no error");
+    EXPECT_EQ(contents(), "complete\n");
+    EXPECT_FALSE(fs::exists(path + ".part"));
+}
+
+// A picture's part file keeps the extension: OpenCV tells the format by it.
+TEST(PartFile, PictureNamesKeepTheirExtension) {
+    using Name = travel::PartFile::Name;
+    EXPECT_EQ(travel::PartFile::partOf("/out/x.png", Name::BeforeExtension), "/out/x.part.png");
+    EXPECT_EQ(travel::PartFile::partOf("/out.d/x", Name::BeforeExtension), "/out.d/x.part");
+    EXPECT_EQ(travel::PartFile::partOf("/out/x.png"), "/out/x.png.part");
+    const travel::PartFile file("/nowhere/x.jpg", Name::BeforeExtension);
+    EXPECT_EQ(file.part(), "/nowhere/x.part.jpg");
 }

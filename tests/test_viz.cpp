@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "FileSizeLimit.hpp"
+#include "TempDir.hpp"
 #include "travel/MotionEstimator.hpp"
 #include "travel/io/VelodyneModels.hpp"
 #include "travel/viz/BirdsEye.hpp"
@@ -138,4 +141,36 @@ TEST(PngFile, WritesAValidStoredPng) {
     const std::size_t raw = 250 * (1 + 3 * 300), blocks = (raw + 65534) / 65535;
     EXPECT_EQ(bytes.size(), 8 + 25 + (12 + 2 + 5 * blocks + raw + 4) + 12);
     EXPECT_THROW(travel::viz::writePng(r, "/nonexistent/dir/x.png"), std::runtime_error);
+}
+
+// A picture that cannot be written whole (a file size limit, as a full disk) is an error naming
+// it; the picture written before under the name stays as it was, and no part file is left.
+TEST(PngFile, AFailedWriteKeepsThePreviousPicture) {
+    const travel_test::TempDir tmp("travel_png_failure");
+    const std::string path = tmp.file("tracks.png");
+    const auto contents = [&] {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    travel::viz::Raster r;
+    r.reset(4, 4, {10, 20, 30});
+    travel::viz::writePng(r, path);
+    const std::string before = contents();
+    ASSERT_LT(before.size(), 200u);
+    // 10 x 10 pixels stay in the stream's buffer until the close; 300 x 300 fail while written.
+    for (const int side : {10, 300}) {
+        r.reset(side, side, {40, 50, 60});
+        std::string message = "no error";
+        {
+            const travel_test::FileSizeLimit limit(200);
+            try {
+                travel::viz::writePng(r, path);
+            } catch (const std::runtime_error& e) {
+                message = e.what();
+            }
+        }
+        EXPECT_EQ(message, path + ": cannot write (File too large)") << side;
+        EXPECT_TRUE(contents() == before) << side;  // not printed: binary
+        EXPECT_FALSE(std::filesystem::exists(path + ".part")) << side;
+    }
 }

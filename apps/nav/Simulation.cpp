@@ -464,7 +464,12 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         if (!fs::is_regular_file(produced))
             throw std::runtime_error("the navigator wrote no log (expected " + produced.string() +
                                      ")");
-        fs::copy_file(produced, o.navlog_file, fs::copy_options::overwrite_existing);
+        // Copied beside the name and moved in place: a failed copy leaves no cut log there.
+        travel::PartFile file(o.navlog_file);
+        std::error_code ec;
+        fs::copy_file(produced, file.part(), fs::copy_options::overwrite_existing, ec);
+        if (ec) throw std::runtime_error(o.navlog_file + ": cannot write (" + ec.message() + ")");
+        file.commit();
     }
     return report;
 }

@@ -36,6 +36,32 @@ foreach(word "LiDAR frames mapped: 10" "poses: odometry in the rawlog" "occupied
   endif()
 endforeach()
 
+# An export that cannot be written whole (a file size limit of one block, as a full disk): an
+# error naming it and exit 1; the files of the run before stay as they were, and no part file
+# is left. The .bt is the first export.
+set(exports .bt _grid.gridmap.gz _height.gridmap.gz _traversability.png _occupancy.png
+            _height.png .3Dscene .travelmap)
+foreach(suffix ${exports})
+  file(SHA256 ${WORK_DIR}/street/street${suffix} before${suffix})
+endforeach()
+execute_process(COMMAND sh -c "ulimit -f 1; trap '' XFSZ; exec \"$0\" \"$@\"" ${TRAVEL_MAP}
+                        -i ${WORK_DIR}/street.rawlog -o ${WORK_DIR}/street -p vlp16 -q
+                        --set sensor_height=1.8 --set min_range=2 --extent " -30,30,-20,20"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "street/street\\.bt: cannot write \\(File too large\\)")
+  message(FATAL_ERROR "exports over the file size limit (${rc}):\n${out}${err}")
+endif()
+foreach(suffix ${exports})
+  file(SHA256 ${WORK_DIR}/street/street${suffix} after)
+  if(NOT after STREQUAL "${before${suffix}}")
+    message(FATAL_ERROR "street${suffix} changed by the run that failed")
+  endif()
+endforeach()
+file(GLOB parts ${WORK_DIR}/street/*.part ${WORK_DIR}/street/*.part.*)
+if(parts)
+  message(FATAL_ERROR "part files left by the run that failed: ${parts}")
+endif()
+
 # The same drive in the SensoryFrame format with CActionRobotMovement2D odometry actions (true
 # planar increments) and no pose file: poses from the actions; the road is traversable and the
 # south wall (y = -11) an obstacle where the scene has them.

@@ -30,7 +30,7 @@ if(pos EQUAL -1)
   message(FATAL_ERROR "no per-run summary line:\n${out}")
 endif()
 file(GLOB leftovers ${WORK_DIR}/.travel-nav-sim-* ${WORK_DIR}/tmp/.travel-nav-sim-*
-     ${WORK_DIR}/*.part)
+     ${WORK_DIR}/*.part ${WORK_DIR}/*.part.png)
 if(leftovers)
   message(FATAL_ERROR "scratch files left behind: ${leftovers}")
 endif()

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -78,7 +79,14 @@ bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
     return le::load<uint32_t>(trailer + 4) == uint32_t(uncompressed_bytes);
 }
 
-PartFile::PartFile(std::string path) : path_(std::move(path)), part_(partOf(path_)) {}
+PartFile::PartFile(std::string path, Name name)
+    : path_(std::move(path)), part_(partOf(path_, name)) {}
+
+std::string PartFile::partOf(const std::string& path, Name name) {
+    if (name == Name::Appended) return path + ".part";
+    const std::string extension = std::filesystem::path(path).extension().string();
+    return path.substr(0, path.size() - extension.size()) + ".part" + extension;
+}
 
 PartFile::~PartFile() {
     if (done_) return;
@@ -89,6 +97,21 @@ PartFile::~PartFile() {
 void PartFile::commit() {
     done_ = true;  // movePartInPlace removes the part file itself when the move fails
     movePartInPlace(part_, path_);
+}
+
+void writeThroughPartFile(const std::string& path,
+                          const std::function<void(std::ostream&)>& write) {
+    PartFile file(path);
+    {
+        errno = 0;
+        std::ofstream out(file.part(), std::ios::binary);
+        if (out) write(out);
+        if (out) out.close();  // flushes: a full disk may only show up here
+        if (!out)
+            throw std::runtime_error(path + ": cannot write (" +
+                                     (errno ? std::strerror(errno) : "write error") + ")");
+    }
+    file.commit();
 }
 
 }  // namespace travel

@@ -1,11 +1,13 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 #include "travel/viz/PngFile.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <fstream>
-#include <stdexcept>
+#include <ostream>
 #include <vector>
+
+#include "travel/io/BinaryFile.hpp"
 
 namespace travel::viz {
 namespace {
@@ -72,9 +74,9 @@ void writePng(const Raster& raster, const std::string& path) {
     chunk(png, "IHDR", header);
     chunk(png, "IDAT", z);
     chunk(png, "IEND", {});
-    std::ofstream file(path, std::ios::binary);
-    file.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-    if (!file) throw std::runtime_error("cannot write " + path);
+    travel::writeThroughPartFile(path, [&](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+    });
 }
 
 }  // namespace travel::viz

@@ -13,11 +13,9 @@
 
 #include <algorithm>
 #include <bitset>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -556,9 +554,6 @@ void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
 void CTraversabilityMap::saveTo(const std::string& prefix) const {
     // Written beside and moved (travel::PartFile), so that a failed save never leaves half a
     // file under the name, nor a part file behind.
-    const auto cannotWrite = [](const travel::PartFile& file, const std::string& reason) {
-        return std::runtime_error(file.path() + ": cannot write (" + reason + ")");
-    };
     {
         travel::PartFile grid(prefix + ".travelgrid");
         {
@@ -572,19 +567,13 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
                 // (mrptMessage writes the path's control and non-UTF-8 bytes as \xNN too)
                 throw message.rfind(travel::printableText(grid.path()), 0) == 0
                     ? std::runtime_error(message)
-                    : cannotWrite(grid, message);
+                    : std::runtime_error(grid.path() + ": cannot write (" + message + ")");
             }
             out.close();
         }
         grid.commit();
     }
-    travel::PartFile tree(prefix + ".ot");
-    {
-        std::ofstream out(tree.part(), std::ios::binary);
-        if (!out || !octree().write(out) || !out.flush())
-            throw cannotWrite(tree, std::strerror(errno));
-    }
-    tree.commit();
+    travel::writeThroughPartFile(prefix + ".ot", [&](std::ostream& out) { octree().write(out); });
 }
 
 void CTraversabilityMap::loadFrom(const std::string& prefix) {

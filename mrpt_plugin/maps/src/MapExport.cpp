@@ -96,8 +96,9 @@ mrpt::img::CImage heightImage(const CTraversabilityMap& map, double z_lo, double
 }
 
 void saveOctoMap(const CTraversabilityMap& map, const std::string& path) {
-    if (!map.octree().writeBinaryConst(path))
-        throw std::runtime_error(path + ": cannot write the OctoMap");
+    // Through a stream: OctoMap's writeBinaryConst(path) does not check its writes.
+    travel::writeThroughPartFile(path,
+                                 [&](std::ostream& out) { map.octree().writeBinaryConst(out); });
 }
 
 void saveOccupancyGridGz(const CTraversabilityMap& map, const std::string& path) {
@@ -117,7 +118,7 @@ void save3DScene(const CTraversabilityMap& map, const std::string& path) {
     auto objects = mrpt::opengl::CSetOfObjects::Create();
     map.getVisualizationInto(*objects);
     scene.insert(objects);
-    if (!scene.saveToFile(path)) throw std::runtime_error(path + ": cannot write the 3-D scene");
+    writeSerializedGz(scene, path);  // what COpenGLScene::saveToFile writes, checked
 }
 
 std::vector<std::string> exportAll(const CTraversabilityMap& map, const std::string& prefix,
@@ -138,8 +139,9 @@ std::vector<std::string> exportAll(const CTraversabilityMap& map, const std::str
     {
         mrpt::maps::COccupancyGridMap2D grid;
         toOccupancyGrid(map, grid);
-        if (!grid.saveAsBitmapFile(prefix + "_occupancy.png"))
-            throw std::runtime_error(prefix + "_occupancy.png: cannot write picture");
+        mrpt::img::CImage image;
+        grid.getAsImage(image);  // what saveAsBitmapFile writes
+        savePicture(image, prefix + "_occupancy.png");
         note(prefix + "_occupancy.png");
     }
     savePicture(pngImage(travel::viz::heightRaster(map.grid(), 0, 0, jet), min_png_side),

@@ -5,9 +5,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
+
+#include "travel/io/BinaryFile.hpp"
+#include "travel_mrpt/MrptMessage.hpp"
 
 namespace travel_mrpt {
 
@@ -58,11 +63,34 @@ void sideBySide(const CImage& a, const CImage& b, const std::string& title_a,
     }
 }
 
-void requirePictureName(const std::string& path) {
-    // OpenCV picks the format by the extension and throws (or fails) on any other name.
+namespace {
+
+/// The extension of `path` in lower case.
+std::string lowerExtension(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+/// True when the file ends as its encoder ends a picture: PNG with the IEND chunk, JPEG with
+/// the EOI marker. OpenCV does not check its close: a picture cut there (a full disk) is
+/// written without an error.
+bool endsAsAPicture(const std::string& path, bool png) {
+    static const std::string png_end("\0\0\0\0IEND\xAE\x42\x60\x82", 12), jpeg_end("\xFF\xD9");
+    const std::string& end = png ? png_end : jpeg_end;
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in || in.tellg() < std::streamoff(end.size())) return false;
+    std::string tail(end.size(), '\0');
+    in.seekg(-std::streamoff(end.size()), std::ios::end);
+    return in.read(tail.data(), std::streamsize(tail.size())) && tail == end;
+}
+
+}  // namespace
+
+void requirePictureName(const std::string& path) {
+    // OpenCV picks the format by the extension and throws (or fails) on any other name.
+    const std::string extension = lowerExtension(path);
     if (extension != ".png" && extension != ".jpg" && extension != ".jpeg")
         throw std::runtime_error(path +
                                  ": not a picture name (the format is told by the extension: "
@@ -71,12 +99,20 @@ void requirePictureName(const std::string& path) {
 
 void savePicture(const CImage& image, const std::string& path) {
     requirePictureName(path);
-    bool written = false;
+    // The part file keeps the extension, which tells OpenCV the format.
+    travel::PartFile part(path, travel::PartFile::Name::BeforeExtension);
+    std::string reason;
     try {
-        written = image.saveToFile(path);
-    } catch (const std::exception&) {
+        errno = 0;
+        if (!image.saveToFile(part.part()))
+            reason = errno ? std::strerror(errno) : "the picture could not be encoded";
+    } catch (const std::exception& e) {
+        reason = mrptMessage(e.what());
     }
-    if (!written) throw std::runtime_error(path + ": cannot write picture");
+    if (reason.empty() && !endsAsAPicture(part.part(), lowerExtension(path) == ".png"))
+        reason = "the file ends before the picture does: disk full?";
+    if (!reason.empty()) throw std::runtime_error(path + ": cannot write (" + reason + ")");
+    part.commit();
 }
 
 }  // namespace travel_mrpt

@@ -9,7 +9,9 @@
 //                   occupancy grid as MRPT draws it, ground height (jet colour map, black =
 //                   no ground); north (+y) up, +x right
 //   .3Dscene        COpenGLScene for SceneViewer3D (grid texture + obstacle voxels)
-// Every function throws std::runtime_error naming the file on failure.
+// Every function throws std::runtime_error naming the file on failure. Each file is written
+// beside its name and moved in place (travel::PartFile): a failed export leaves no part file,
+// and the file of an earlier export under the name as it was.
 #pragma once
 
 #include <string>

@@ -40,8 +40,9 @@ void sideBySide(const mrpt::img::CImage& a, const mrpt::img::CImage& b, const st
 /// Throws std::runtime_error unless `path` ends in .png, .jpg or .jpeg (any case): the names
 /// savePicture() can write.
 void requirePictureName(const std::string& path);
-/// Writes `image` to `path` (PNG or JPEG by its extension); std::runtime_error naming `path` on
-/// failure.
+/// Writes `image` to `path` (PNG or JPEG by its extension) as X.part.png beside it, moved in
+/// place once whole (travel::PartFile); on failure std::runtime_error naming `path` and the
+/// reason, and the file an earlier write left under `path` stays as it was.
 void savePicture(const mrpt::img::CImage& image, const std::string& path);
 
 }  // namespace travel_mrpt

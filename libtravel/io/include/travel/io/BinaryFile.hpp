@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -42,11 +44,16 @@ void movePartInPlace(const std::string& part, const std::string& path);
 /// A file written under a temporary name beside its final one, `path + ".part"`, and moved in
 /// place by commit() (movePartInPlace) once complete. Destroyed before commit() (an error, an
 /// exception, an interrupt that unwinds), it removes the part file: a failed write leaves
-/// neither half a file under `path` nor a part file. Declare it before the stream that writes
-/// part(), so that the stream is closed when the part file goes.
+/// neither half a file under `path` nor a part file, and a previous file under `path` stays as
+/// it was. Declare it before the stream that writes part(), so that the stream is closed when
+/// the part file goes.
 class PartFile {
   public:
-    explicit PartFile(std::string path);
+    /// Where the part file is: `path + ".part"`, or ".part" before the extension for a writer
+    /// that tells the format by it (OpenCV's pictures): x.png -> x.part.png.
+    enum class Name { Appended, BeforeExtension };
+
+    explicit PartFile(std::string path, Name name = Name::Appended);
     ~PartFile();
     PartFile(const PartFile&) = delete;
     PartFile& operator=(const PartFile&) = delete;
@@ -55,7 +62,7 @@ class PartFile {
     const std::string& part() const { return part_; }
     /// The part file of `path` (what part() is), for checks before a PartFile is made: a part
     /// file that is an input would be emptied when opened.
-    static std::string partOf(const std::string& path) { return path + ".part"; }
+    static std::string partOf(const std::string& path, Name name = Name::Appended);
     /// Moves part() to path(); throws std::runtime_error naming path() (the part file removed).
     void commit();
 
@@ -63,6 +70,13 @@ class PartFile {
     std::string path_, part_;
     bool done_ = false;
 };
+
+/// Writes the file `path` through a PartFile: `write` fills a stream on the part file, which is
+/// then closed and moved in place. A failure (the open, a write, a full disk or a file size
+/// limit at the close, the move) throws std::runtime_error "<path>: cannot write (<reason>)";
+/// an exception from `write` goes on as it is. Either way the part file is removed and a
+/// previous file under `path` stays as it was.
+void writeThroughPartFile(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 namespace le {
 

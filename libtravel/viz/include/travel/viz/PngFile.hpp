@@ -11,7 +11,8 @@
 
 namespace travel::viz {
 
-/// Writes `raster` to `path`; throws std::runtime_error naming the file when it cannot.
+/// Writes `raster` to `path` through a part file (travel::writeThroughPartFile); throws
+/// std::runtime_error naming the file when it cannot, the previous file under the name kept.
 void writePng(const Raster& raster, const std::string& path);
 
 }  // namespace travel::viz
