@@ -3,6 +3,7 @@
 // travel_io's readScan(): every format on real files (skipped when ../shared/data is absent),
 // the same points through every encoding, format detection, and each bad file's message.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdint>
@@ -549,6 +550,39 @@ TEST(PartFile, AFailedWriteKeepsThePreviousFile) {
     EXPECT_EQ(errorOf([](std::ostream& out) { out << "complete\n"; }), "no error");
     EXPECT_EQ(contents(), "complete\n");
     EXPECT_FALSE(fs::exists(path + ".part"));
+}
+
+// A symbolic link stays a link: its target is replaced. A FIFO (as a device such as /dev/null)
+// is written in place, never replaced by a file nor removed.
+TEST(PartFile, LinksStayAndDevicesAreWrittenInPlace) {
+    namespace fs = std::filesystem;
+    const TempDir tmp("travel_test_part_links");
+    const std::string target = tmp.file("data/target.csv"), link = tmp.file("link.csv");
+    std::ofstream(target) << "previous\n";
+    fs::create_symlink(target, link);
+    EXPECT_EQ(travel::PartFile::partOf(link), target + ".part");
+    travel::writeThroughPartFile(link, [](std::ostream& out) { out << "new\n"; });
+    EXPECT_TRUE(fs::is_symlink(link));
+    std::ifstream in(link);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+              "new\n");
+    EXPECT_FALSE(fs::exists(target + ".part"));
+
+    const std::string fifo = tmp.file("fifo");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_TRUE(travel::PartFile::writtenInPlace(fifo));
+    EXPECT_FALSE(travel::PartFile::writtenInPlace(target));
+    EXPECT_FALSE(travel::PartFile::writtenInPlace(tmp.path.string()));  // a folder: refused later
+    EXPECT_EQ(travel::PartFile::partOf(fifo), fifo);
+    { const travel::PartFile unused(fifo); }  // not committed: nothing is removed
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    {
+        travel::PartFile file(fifo);
+        EXPECT_EQ(file.part(), fifo);
+        EXPECT_NO_THROW(file.commit());
+    }
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_FALSE(fs::exists(fifo + ".part"));
 }
 
 // A picture's part file keeps the extension: OpenCV tells the format by it.

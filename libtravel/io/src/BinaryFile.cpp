@@ -79,24 +79,44 @@ bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
     return le::load<uint32_t>(trailer + 4) == uint32_t(uncompressed_bytes);
 }
 
+namespace {
+
+/// The file a write to `path` replaces: the one a symbolic link points at (the link stays).
+std::string linkTarget(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(path, ec)) return path;
+    const std::filesystem::path target = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : target.string();
+}
+
+}  // namespace
+
 PartFile::PartFile(std::string path, Name name)
-    : path_(std::move(path)), part_(partOf(path_, name)) {}
+    : path_(std::move(path)), part_(partOf(path_, name)), in_place_(writtenInPlace(path_)) {}
+
+bool PartFile::writtenInPlace(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    return !ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+           !std::filesystem::is_directory(status);
+}
 
 std::string PartFile::partOf(const std::string& path, Name name) {
-    if (name == Name::Appended) return path + ".part";
-    const std::string extension = std::filesystem::path(path).extension().string();
-    return path.substr(0, path.size() - extension.size()) + ".part" + extension;
+    if (writtenInPlace(path)) return path;
+    const std::string target = linkTarget(path);
+    if (name == Name::Appended) return target + ".part";
+    const std::string extension = std::filesystem::path(target).extension().string();
+    return target.substr(0, target.size() - extension.size()) + ".part" + extension;
 }
 
 PartFile::~PartFile() {
-    if (done_) return;
-    std::error_code ignored;
-    std::filesystem::remove(part_, ignored);
+    if (done_ || in_place_) return;
+    removeCutFile(part_);  // a regular file only: never a folder or a link named so
 }
 
 void PartFile::commit() {
     done_ = true;  // movePartInPlace removes the part file itself when the move fails
-    movePartInPlace(part_, path_);
+    if (!in_place_) movePartInPlace(part_, linkTarget(path_));
 }
 
 void writeThroughPartFile(const std::string& path,

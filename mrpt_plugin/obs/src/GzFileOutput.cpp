@@ -33,7 +33,8 @@ size_t GzFileOutput::Write(const void* buffer, size_t count) {
 void GzFileOutput::close() {
     if (!file_.fileOpenCorrectly()) return;
     file_.close();
-    if (!travel::gzipEndsWithSize(path_, written_))
+    // A device or FIFO (PartFile::writtenInPlace) cannot be read back; it took every write.
+    if (!travel::PartFile::writtenInPlace(path_) && !travel::gzipEndsWithSize(path_, written_))
         throw std::runtime_error(name_ +
                                  ": cannot write (the file ends before its gzip trailer: disk "
                                  "full?)");
