@@ -475,10 +475,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
 }
 
 void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
-    travel::PartFile file(path);  // the part file is removed on a write error
-    {
-        std::ofstream f(file.part());
-        if (!f) throw std::runtime_error(path + ": cannot write the trajectory CSV");
+    travel::writeThroughPartFile(path, [&](std::ostream& f) {
         const bool movers = r.min_mover_clearance < 1e9;
         f << "t,x,y,z,yaw_deg,roll_deg,pitch_deg,v,w,clearance,obstacles"
           << (movers ? ",mover_clearance\n" : "\n");
@@ -495,10 +492,7 @@ void writeTrajectoryCsv(const RunReport& r, const std::string& path) {
             }
             f << "\n";
         }
-        f.close();  // the last buffer is written here: a full disk shows only now
-        if (!f) throw std::runtime_error(path + ": write error");
-    }
-    file.commit();
+    });
 }
 
 }  // namespace travel::navsim
