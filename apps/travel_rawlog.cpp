@@ -412,15 +412,12 @@ int run(int argc, char** argv) {
         travel::apps::filterOptionsFrom(configuration);
     travel::apps::requireFileName("-o", options.output);
     // The rawlog is written as OUT.rawlog.part first (travel::PartFile): that name must not be
-    // the input either (it is emptied when opened, and removed when the run fails). A device
-    // (-o /dev/null) is written in place: it has no part file.
-    const std::string output_part = travel::PartFile::partOf(options.output);
+    // the input either (it is emptied when opened, and removed when the run fails).
     travel::apps::checkOutputsApart(
-        {{"-i", options.input}},
-        {{"-o", options.output},
-         {"-o (its part file)", output_part == options.output ? std::string() : output_part},
-         {"--csv", options.csv},
-         {"--label-reference", options.label_reference}});
+        {{"-i", options.input}}, {{"-o", options.output},
+                                  {"-o (its part file)", travel::PartFile::partOf(options.output)},
+                                  {"--csv", options.csv},
+                                  {"--label-reference", options.label_reference}});
 
     auto reader = openInput(options);
     // The CSV and the label reference are written in place (RawlogSegmenter's constructor

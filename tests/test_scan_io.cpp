@@ -552,37 +552,41 @@ TEST(PartFile, AFailedWriteKeepsThePreviousFile) {
     EXPECT_FALSE(fs::exists(path + ".part"));
 }
 
-// A symbolic link stays a link: its target is replaced. A FIFO (as a device such as /dev/null)
-// is written in place, never replaced by a file nor removed.
-TEST(PartFile, LinksStayAndDevicesAreWrittenInPlace) {
+// Moving a file over a symbolic link replaces the link, over a device the device (as root,
+// /dev/null for the whole machine): both are refused, and left as they were. A FIFO stands for
+// the device here.
+TEST(PartFile, LinksAndDevicesAreRefusedAndLeftAlone) {
     namespace fs = std::filesystem;
     const TempDir tmp("travel_test_part_links");
-    const std::string target = tmp.file("data/target.csv"), link = tmp.file("link.csv");
+    const std::string target = tmp.file("target.csv"), link = tmp.file("link.csv");
+    const std::string fifo = tmp.file("fifo"), dangling = tmp.file("dangling.csv");
     std::ofstream(target) << "previous\n";
     fs::create_symlink(target, link);
-    EXPECT_EQ(travel::PartFile::partOf(link), target + ".part");
-    travel::writeThroughPartFile(link, [](std::ostream& out) { out << "new\n"; });
-    EXPECT_TRUE(fs::is_symlink(link));
-    std::ifstream in(link);
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
-              "new\n");
-    EXPECT_FALSE(fs::exists(target + ".part"));
-
-    const std::string fifo = tmp.file("fifo");
+    fs::create_symlink(tmp.file("missing/x.csv"), dangling);
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-    EXPECT_TRUE(travel::PartFile::writtenInPlace(fifo));
-    EXPECT_FALSE(travel::PartFile::writtenInPlace(target));
-    EXPECT_FALSE(travel::PartFile::writtenInPlace(tmp.path.string()));  // a folder: refused later
-    EXPECT_EQ(travel::PartFile::partOf(fifo), fifo);
-    { const travel::PartFile unused(fifo); }  // not committed: nothing is removed
+    const auto errorOf = [](const std::string& path) -> std::string {
+        try {
+            travel::writeThroughPartFile(path, [](std::ostream& out) { out << "new\n"; });
+        } catch (const std::runtime_error& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    const std::string link_reason =
+        ": cannot write (a symbolic link; give the name of the file "
+        "it points at)";
+    EXPECT_EQ(errorOf(link), link + link_reason);
+    EXPECT_EQ(errorOf(dangling), dangling + link_reason);
+    EXPECT_EQ(errorOf(fifo),
+              fifo + ": cannot write (not a regular file (a device, FIFO or socket))");
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_TRUE(fs::is_symlink(dangling));
     EXPECT_TRUE(fs::is_fifo(fifo));
-    {
-        travel::PartFile file(fifo);
-        EXPECT_EQ(file.part(), fifo);
-        EXPECT_NO_THROW(file.commit());
-    }
-    EXPECT_TRUE(fs::is_fifo(fifo));
-    EXPECT_FALSE(fs::exists(fifo + ".part"));
+    std::ifstream in(target);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+              "previous\n");
+    for (const std::string& name : {link, dangling, fifo, target})
+        EXPECT_FALSE(fs::exists(name + ".part")) << name;
 }
 
 // A picture's part file keeps the extension: OpenCV tells the format by it.

@@ -468,7 +468,7 @@ RunReport runSimulation(const World& world, const SimOptions& o) {
         travel::PartFile file(o.navlog_file);
         std::error_code ec;
         fs::copy_file(produced, file.part(), fs::copy_options::overwrite_existing, ec);
-        if (ec) throw std::runtime_error(o.navlog_file + ": cannot write (" + ec.message() + ")");
+        if (ec) throw std::runtime_error(travel::cannotWriteMessage(o.navlog_file, ec.message()));
         file.commit();
     }
     return report;

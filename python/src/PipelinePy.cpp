@@ -347,7 +347,9 @@ class StateReader {
                            " of shape " + shapeText(shapeOf(a)));
         py::array out = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
         if (!out) fail(name, "cannot convert the array to native byte order");
-        return out;
+        // A copy of its own, writable: copy.copy() hands over the original's arrays, and a
+        // protocol 5 buffer may be read-only.
+        return out.is(a) || !out.writeable() ? py::array(out.attr("copy")()) : out;
     }
 
     std::string context_;

@@ -510,6 +510,20 @@ def test_results_scans_and_their_parts_pickle_exactly(tmp_path, frame):
     r.cluster_ids[:] = 7
     r.clusters.ids[:] = 70000
     assert_same(pickle.loads(pickle.dumps(r)), r, points)
+    # A shallow copy holds arrays of its own, writable: editing them leaves the original.
+    shallow = copy.copy(r)
+    assert_same(shallow, r, points)
+    shallow.labels[:] = 0
+    shallow.cluster_ids[:] = 1
+    shallow.clusters.ids[:] = 2
+    assert (r.cluster_ids == 7).all() and (r.clusters.ids == 70000).all()
+    assert not (r.labels == 0).all()
+    # Out-of-band buffers (protocol 5) are read-only; the unpickled arrays are not.
+    buffers = []
+    data = pickle.dumps(r, protocol=5, buffer_callback=buffers.append)
+    oob = pickle.loads(data, buffers=[memoryview(b.raw()).toreadonly() for b in buffers])
+    assert oob.labels.flags.writeable and oob.clusters.ids.flags.writeable
+    assert_same(oob, r, points)
     # A Result of no points, no clusters.
     empty = segment(np.zeros((0, 3), np.float32))
     assert len(empty) == 0 and len(empty.clusters) == 0

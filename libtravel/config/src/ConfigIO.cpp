@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "travel/ConfigFields.hpp"
@@ -420,6 +421,13 @@ Config loadPresetConfig(const std::string& name) {
     return loadConfigFile(findPresetFile(name));
 }
 
+std::pair<std::string, std::string> sectionAndKey(const std::string& name) {
+    const std::size_t dot = name.find('.');
+    if (dot == std::string::npos) return {std::string(), trimmed(name)};
+    return {trimmed(std::string_view(name).substr(0, dot)),
+            trimmed(std::string_view(name).substr(dot + 1))};
+}
+
 void applyConfigOverride(const std::string& assignment, Config& config) {
     const std::string prefix = "override '" + assignment + "': ";
     const std::size_t equals = assignment.find('=');
@@ -432,9 +440,8 @@ void applyConfigOverride(const std::string& assignment, Config& config) {
         value = value.substr(1, value.size() - 2);
     }
     std::string section;
-    if (const std::size_t dot = key.find('.'); dot != std::string::npos) {
-        section = trimmed(key.substr(0, dot));
-        key = trimmed(key.substr(dot + 1));
+    std::tie(section, key) = sectionAndKey(key);
+    if (!section.empty()) {
         if (!isSection(section)) {
             throw ConfigError(prefix + "unknown section " + quotedExcerpt(section) +
                               fields::didYouMean(section, sectionNames()));

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "travel/ConfigIO.hpp"
 #include "travel/Errors.hpp"
 #include "travel/ParamsIO.hpp"
 #include "travel/eval/KittiIO.hpp"
@@ -225,11 +226,10 @@ SweepSpec parseSweep(const std::string& spec, const Params& base) {
     if (eq == std::string::npos || eq == 0) throw ConfigError(help);
     SweepSpec s{spec.substr(0, eq), travel::splitList(spec.substr(eq + 1), ',')};
     // travel.KEY as --set writes it: a sweep varies the travel section's keys, no other's.
-    if (const std::size_t dot = s.key.find('.'); dot != std::string::npos) {
-        if (s.key.substr(0, dot) != "travel")
-            throw ConfigError(help + ": a sweep varies the keys of section travel only");
-        s.key.erase(0, dot + 1);
-    }
+    const auto [section, key] = sectionAndKey(s.key);
+    if (!section.empty() && section != "travel")
+        throw ConfigError(help + ": a sweep varies the keys of section travel only");
+    s.key = key;
     if (s.values.empty()) throw ConfigError(help + ": no values");
     for (const std::string& v : s.values) {
         if (v.empty()) throw ConfigError(help + ": empty value");

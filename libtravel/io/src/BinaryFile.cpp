@@ -58,14 +58,18 @@ void removeCutFile(const std::string& path) noexcept {
         std::filesystem::remove(path, ec);
 }
 
+std::string cannotWriteMessage(const std::string& path, const std::string& reason) {
+    return path + ": cannot write (" + reason + ")";
+}
+
 void movePartInPlace(const std::string& part, const std::string& path) {
     std::error_code ec;
     std::filesystem::rename(part, path, ec);
     if (!ec) return;
     std::error_code ignored;
     std::filesystem::remove(part, ignored);
-    throw std::runtime_error(path + ": cannot write (moving " + part + " there: " + ec.message() +
-                             ")");
+    throw std::runtime_error(
+        cannotWriteMessage(path, "moving " + part + " there: " + ec.message()));
 }
 
 bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
@@ -79,44 +83,36 @@ bool gzipEndsWithSize(const std::string& path, uint64_t uncompressed_bytes) {
     return le::load<uint32_t>(trailer + 4) == uint32_t(uncompressed_bytes);
 }
 
-namespace {
-
-/// The file a write to `path` replaces: the one a symbolic link points at (the link stays).
-std::string linkTarget(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_symlink(path, ec)) return path;
-    const std::filesystem::path target = std::filesystem::weakly_canonical(path, ec);
-    return ec ? path : target.string();
-}
-
-}  // namespace
-
 PartFile::PartFile(std::string path, Name name)
-    : path_(std::move(path)), part_(partOf(path_, name)), in_place_(writtenInPlace(path_)) {}
-
-bool PartFile::writtenInPlace(const std::string& path) {
+    : path_(std::move(path)), part_(partOf(path_, name)) {
+    // Moving a file over a device would replace it (as root: /dev/null for the whole machine),
+    // and over a symbolic link would replace the link, not what it points at (following it
+    // here would bypass the kernel's protection of links in shared folders): both refused.
+    namespace fs = std::filesystem;
     std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    return !ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
-           !std::filesystem::is_directory(status);
+    const fs::file_status link = fs::symlink_status(path_, ec);
+    if (fs::is_symlink(link))
+        throw std::runtime_error(
+            cannotWriteMessage(path_, "a symbolic link; give the name of the file it points at"));
+    if (fs::exists(link) && !fs::is_regular_file(link) && !fs::is_directory(link))
+        throw std::runtime_error(
+            cannotWriteMessage(path_, "not a regular file (a device, FIFO or socket)"));
 }
 
 std::string PartFile::partOf(const std::string& path, Name name) {
-    if (writtenInPlace(path)) return path;
-    const std::string target = linkTarget(path);
-    if (name == Name::Appended) return target + ".part";
-    const std::string extension = std::filesystem::path(target).extension().string();
-    return target.substr(0, target.size() - extension.size()) + ".part" + extension;
+    if (name == Name::Appended) return path + ".part";
+    const std::string extension = std::filesystem::path(path).extension().string();
+    return path.substr(0, path.size() - extension.size()) + ".part" + extension;
 }
 
 PartFile::~PartFile() {
-    if (done_ || in_place_) return;
+    if (done_) return;
     removeCutFile(part_);  // a regular file only: never a folder or a link named so
 }
 
 void PartFile::commit() {
     done_ = true;  // movePartInPlace removes the part file itself when the move fails
-    if (!in_place_) movePartInPlace(part_, linkTarget(path_));
+    movePartInPlace(part_, path_);
 }
 
 void writeThroughPartFile(const std::string& path,
@@ -128,8 +124,8 @@ void writeThroughPartFile(const std::string& path,
         if (out) write(out);
         if (out) out.close();  // flushes: a full disk may only show up here
         if (!out)
-            throw std::runtime_error(path + ": cannot write (" +
-                                     (errno ? std::strerror(errno) : "write error") + ")");
+            throw std::runtime_error(
+                cannotWriteMessage(path, errno ? std::strerror(errno) : "write error"));
     }
     file.commit();
 }

@@ -567,7 +567,7 @@ void CTraversabilityMap::saveTo(const std::string& prefix) const {
                 // (mrptMessage writes the path's control and non-UTF-8 bytes as \xNN too)
                 throw message.rfind(travel::printableText(grid.path()), 0) == 0
                     ? std::runtime_error(message)
-                    : std::runtime_error(grid.path() + ": cannot write (" + message + ")");
+                    : std::runtime_error(travel::cannotWriteMessage(grid.path(), message));
             }
             out.close();
         }

@@ -109,10 +109,9 @@ void savePicture(const CImage& image, const std::string& path) {
     } catch (const std::exception& e) {
         reason = mrptMessage(e.what());
     }
-    if (reason.empty() && !travel::PartFile::writtenInPlace(part.part()) &&
-        !endsAsAPicture(part.part(), lowerExtension(path) == ".png"))
+    if (reason.empty() && !endsAsAPicture(part.part(), lowerExtension(path) == ".png"))
         reason = "the file ends before the picture does: disk full?";
-    if (!reason.empty()) throw std::runtime_error(path + ": cannot write (" + reason + ")");
+    if (!reason.empty()) throw std::runtime_error(travel::cannotWriteMessage(path, reason));
     part.commit();
 }
 

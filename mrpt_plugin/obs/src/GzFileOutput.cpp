@@ -14,8 +14,8 @@ GzFileOutput::GzFileOutput(std::string path, std::string name)
     : path_(std::move(path)), name_(name.empty() ? path_ : std::move(name)) {
     errno = 0;
     if (!file_.open(path_))
-        throw std::runtime_error(name_ + ": cannot write (" +
-                                 (errno ? std::strerror(errno) : "unknown reason") + ")");
+        throw std::runtime_error(
+            travel::cannotWriteMessage(name_, errno ? std::strerror(errno) : "unknown reason"));
 }
 
 GzFileOutput::~GzFileOutput() = default;  // CFileGZOutputStream closes itself
@@ -24,8 +24,8 @@ size_t GzFileOutput::Write(const void* buffer, size_t count) {
     errno = 0;
     const size_t written = file_.Write(buffer, count);
     if (written != count)
-        throw std::runtime_error(name_ + ": cannot write (" +
-                                 (errno ? std::strerror(errno) : "short write") + ")");
+        throw std::runtime_error(
+            travel::cannotWriteMessage(name_, errno ? std::strerror(errno) : "short write"));
     written_ += written;
     return written;
 }
@@ -33,11 +33,9 @@ size_t GzFileOutput::Write(const void* buffer, size_t count) {
 void GzFileOutput::close() {
     if (!file_.fileOpenCorrectly()) return;
     file_.close();
-    // A device or FIFO (PartFile::writtenInPlace) cannot be read back; it took every write.
-    if (!travel::PartFile::writtenInPlace(path_) && !travel::gzipEndsWithSize(path_, written_))
-        throw std::runtime_error(name_ +
-                                 ": cannot write (the file ends before its gzip trailer: disk "
-                                 "full?)");
+    if (!travel::gzipEndsWithSize(path_, written_))
+        throw std::runtime_error(
+            travel::cannotWriteMessage(name_, "the file ends before its gzip trailer: disk full?"));
 }
 
 size_t GzFileOutput::Read(void*, size_t) {

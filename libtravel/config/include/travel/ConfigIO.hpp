@@ -17,6 +17,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "travel/Config.hpp"
@@ -36,6 +37,9 @@ Config loadConfigFile(const std::string& path);
 
 /// Defaults plus share/presets/<name>.yaml, validated.
 Config loadPresetConfig(const std::string& name);
+
+/// "section.key" split at its first '.', both trimmed; {"", key} for a key without a section.
+std::pair<std::string, std::string> sectionAndKey(const std::string& name);
 
 /// One command-line assignment: "section.key=value", or "key=value" for a key that only one
 /// section has. Range-checked; call Config::validate() after the last one.

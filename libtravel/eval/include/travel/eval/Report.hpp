@@ -67,7 +67,7 @@ void addFrame(const FrameRef& ref, const FrameEvaluation& frame, MethodRun& run,
 /// report.md: ground tables for both protocols and the object table; `setup` describes the
 /// parameters (preset, config, overrides), `jobs` the worker threads the frames ran on.
 std::string reportMarkdown(const std::vector<MethodRun>& runs, const std::vector<FrameRef>& frames,
-                           const std::string& setup, unsigned jobs);
+                           const std::string& setup, unsigned jobs = 1);
 
 /// frames.csv: one row per method and frame, every per-frame value.
 void writeFramesCsv(std::ostream& csv, const std::vector<MethodRun>& runs);

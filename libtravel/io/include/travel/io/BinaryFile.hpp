@@ -41,16 +41,17 @@ void removeCutFile(const std::string& path) noexcept;
 /// std::runtime_error naming `path` and the reason: no orphaned part file is left behind.
 void movePartInPlace(const std::string& part, const std::string& path);
 
+/// "<path>: cannot write (<reason>)": how every writer names a file it could not write.
+std::string cannotWriteMessage(const std::string& path, const std::string& reason);
+
 /// A file written under a temporary name beside its final one, `path + ".part"`, and moved in
 /// place by commit() (movePartInPlace) once complete. Destroyed before commit() (an error, an
 /// exception, an interrupt that unwinds), it removes the part file: a failed write leaves
 /// neither half a file under `path` nor a part file, and a previous file under `path` stays as
 /// it was. Declare it before the stream that writes part(), so that the stream is closed when
 /// the part file goes.
-/// A symbolic link `path` stays: the part file goes beside the file it points at, and replaces
-/// that file. A name that is neither a regular file nor a folder (a device such as /dev/null, a
-/// FIFO) is written in place: part() is `path` itself, commit() moves nothing and nothing is
-/// removed (moving a file there would replace the device).
+/// The constructor refuses (std::runtime_error "<path>: cannot write (...)") a `path` that is
+/// a symbolic link or a device, FIFO or socket: the move would replace the link or the device.
 class PartFile {
   public:
     /// Where the part file is: `path + ".part"`, or ".part" before the extension for a writer
@@ -67,15 +68,12 @@ class PartFile {
     /// The part file of `path` (what part() is), for checks before a PartFile is made: a part
     /// file that is an input would be emptied when opened.
     static std::string partOf(const std::string& path, Name name = Name::Appended);
-    /// True when `path` is written in place (a device or FIFO, see above).
-    static bool writtenInPlace(const std::string& path);
     /// Moves part() to path(); throws std::runtime_error naming path() (the part file removed).
     void commit();
 
   private:
     std::string path_, part_;
     bool done_ = false;
-    bool in_place_ = false;
 };
 
 /// Writes the file `path` through a PartFile: `write` fills a stream on the part file, which is
