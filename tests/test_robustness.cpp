@@ -12,9 +12,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <new>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -30,6 +32,26 @@
 #include "travel/Pipeline.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
+
+// The global operator new, counting its calls on a thread while that thread asks for it
+// (Robustness.NoAllocationOnceEveryFrameWasSeen). std::vector, std::string and the standard
+// algorithms' buffers all come from here (the nothrow and array forms call it).
+namespace {
+thread_local bool t_count_allocations = false;
+thread_local std::size_t t_allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t size) {
+    if (t_count_allocations) ++t_allocations;
+    if (void* p = std::malloc(size ? size : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
 
 namespace travel {
 namespace {
@@ -666,6 +688,64 @@ TEST(Robustness, OneKilometreRange) {
         "sizeof(TriNode) = %zu B\n",
         result.terrain.cells_per_side, result.terrain.nodes.size(), cloud.size(), ms, peakRssMb(),
         rss_before, sizeof(TriNode));
+}
+
+// ---- Allocation ----
+
+/// Calls of operator new made by `f` on this thread.
+std::size_t allocationsOf(const std::function<void()>& f) {
+    t_allocations = 0;
+    t_count_allocations = true;
+    f();
+    t_count_allocations = false;
+    return t_allocations;
+}
+
+// Pipeline.hpp / Preprocessing.hpp: every buffer is reused, so once a Pipeline and a Result have
+// seen a set of frames, processing those frames again allocates nothing, on every path that picks
+// the rows (ring field, scan order, elevation table) and with the face rule in either scope.
+TEST(Robustness, NoAllocationOnceEveryFrameWasSeen) {
+    const sim::Scan urban = urbanScan();
+    const sim::Scene cars = sim::parkedCarRow(8, 1.0);
+    const sim::Scan row =
+        sim::scan(cars, testLidar(), sim::sensorPoseAt(cars, 0, 0, kSensorHeight, 0, 0, 0));
+    PointCloud urban_scan_order = urban.cloud;  // a KITTI .bin: rings from the scan order
+    urban_scan_order.ring.clear();
+    FrameInput moving;  // deskew
+    moving.linear_velocity = Eigen::Vector3d(5.0, 0.0, 0.0);
+    moving.angular_velocity = Eigen::Vector3d(0.0, 0.0, 0.2);
+    const std::vector<std::pair<const PointCloud*, FrameInput>> frames = {
+        {&urban.cloud, {}}, {&row.cloud, moving}, {&urban_scan_order, {}}};
+
+    struct Case {
+        const char* name;
+        std::function<void(Params&)> set;
+    };
+    const Case cases[] = {
+        {"defaults", [](Params&) {}},
+        {"rings from the table", [](Params& p) { p.ring_source = "table"; }},
+        {"face rule under every ground point",
+         [](Params& p) {
+             p.vertical_face_min_rise = 0.25, p.vertical_face_min_length = 0.0;
+             p.vertical_face_min_foot_height = 0.05;
+         }},
+        {"face rule under walls",
+         [](Params& p) { p.vertical_face_min_rise = 0.25, p.cluster_face_feet = true; }},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        Params params = testParams();
+        c.set(params);
+        Pipeline pipeline(params);
+        Result result;
+        pipeline.reserve(result);
+        for (const auto& [cloud, input] : frames) pipeline.process(*cloud, input, result);
+        for (const auto& [cloud, input] : frames) {
+            EXPECT_EQ(allocationsOf([&] { pipeline.process(*cloud, input, result); }), 0u)
+                << cloud->size() << " points";
+            expectConsistent(*cloud, result);
+        }
+    }
 }
 
 // ---- Threads ----
