@@ -34,22 +34,50 @@
 #include "travel/sim/SyntheticLidar.hpp"
 
 // The global operator new, counting its calls on a thread while that thread asks for it
-// (Robustness.NoAllocationOnceEveryFrameWasSeen). std::vector, std::string and the standard
-// algorithms' buffers all come from here (the nothrow and array forms call it).
+// (Robustness.NoAllocationOnceEveryFrameWasSeen): every form that std::vector, std::string and
+// the standard algorithms' buffers use (plain, array, nothrow; ASan replaces each on its own),
+// on malloc and free, which the sanitizers still intercept.
 namespace {
 thread_local bool t_count_allocations = false;
 thread_local std::size_t t_allocations = 0;
+void* countedNew(std::size_t size) noexcept {
+    if (t_count_allocations) ++t_allocations;
+    return std::malloc(size ? size : 1);
+}
+void* countedNewOrThrow(std::size_t size) {
+    if (void* p = countedNew(size)) return p;
+    throw std::bad_alloc();
+}
 }  // namespace
 
 void* operator new(std::size_t size) {
-    if (t_count_allocations) ++t_allocations;
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
+    return countedNewOrThrow(size);
+}
+void* operator new[](std::size_t size) {
+    return countedNewOrThrow(size);
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    return countedNew(size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    return countedNew(size);
 }
 void operator delete(void* p) noexcept {
     std::free(p);
 }
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
 void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
     std::free(p);
 }
 
