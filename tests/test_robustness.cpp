@@ -402,6 +402,66 @@ TEST(Robustness, RingValuesOutOfRangeFallBack) {
     }
 }
 
+// docs/input-contract.md: an explicit ring_source that cannot read the cloud is an InputError
+// from process(); the pipeline goes on, labelling the next frame as a new pipeline would.
+TEST(Robustness, ExplicitRingSourceThatCannotReadTheCloudThrowsAndThePipelineGoesOn) {
+    const sim::Scan scan = urbanScan();
+    PointCloud without = scan.cloud;
+    without.ring.clear();
+    PointCloud out_of_range = scan.cloud;
+    out_of_range.ring[0] = 64;  // num_rings = 64
+    for (const bool face_rule : {false, true}) {
+        Params params = testParams();
+        params.ring_source = "field";
+        if (face_rule) params.vertical_face_min_rise = 0.25, params.vertical_face_min_length = 0;
+        SCOPED_TRACE(face_rule ? "face rule under every ground point" : "defaults");
+        const Result expected = run(scan.cloud, params);
+        Pipeline pipeline(params);
+        Result result;
+        for (const PointCloud* bad : {&without, &out_of_range}) {
+            try {
+                pipeline.process(*bad, {}, result);
+                ADD_FAILURE() << "no InputError";
+            } catch (const InputError& e) {
+                EXPECT_EQ(std::string(e.what()).rfind("ring_source = field: ", 0), 0u) << e.what();
+            }
+            pipeline.process(scan.cloud, {}, result);
+            expectConsistent(scan.cloud, result);
+            EXPECT_EQ(result.labels, expected.labels);
+            EXPECT_EQ(result.cluster_id, expected.cluster_id);
+        }
+    }
+    Params params = testParams();
+    params.ring_source = "scan_order";
+    PointCloud shuffled = without;  // no ring to be found in the storage order
+    std::mt19937 rng(1);
+    for (std::size_t i = shuffled.size() - 1; i > 0; --i) {
+        const std::size_t j = rng() % (i + 1);
+        std::swap(shuffled.x[i], shuffled.x[j]), std::swap(shuffled.y[i], shuffled.y[j]);
+        std::swap(shuffled.z[i], shuffled.z[j]);
+    }
+    EXPECT_THROW(run(shuffled, params), InputError);
+}
+
+// docs/input-contract.md: a time or intensity field of another length than x is not used.
+TEST(Robustness, TimeAndIntensityOfAnotherLengthAreNotUsed) {
+    const sim::Scan scan = urbanScan();
+    FrameInput moving;
+    moving.linear_velocity = Eigen::Vector3d(5.0, 0.0, 0.0);
+    moving.angular_velocity = Eigen::Vector3d(0.0, 0.0, 0.2);
+    PointCloud without_time = scan.cloud;
+    without_time.time.clear();
+    const Result expected = run(without_time, testParams(), moving);
+    PointCloud odd = scan.cloud;
+    odd.time.pop_back();
+    odd.intensity.clear();
+    ASSERT_FALSE(odd.hasTime());
+    const Result result = run(odd, testParams(), moving);
+    expectConsistent(odd, result);
+    EXPECT_EQ(result.labels, expected.labels);
+    EXPECT_EQ(result.cluster_id, expected.cluster_id);
+}
+
 // ---- Per-point times with deskew ----
 
 TEST(Robustness, UnsortedAndNaNTimesWithDeskew) {
