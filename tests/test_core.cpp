@@ -240,6 +240,16 @@ TEST(Preprocessing, AttitudeAlignmentLevelsATiltedSensor) {
         preprocess(cloud, Params{}, input, out);
         for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(out.z[i], -1.5, 1e-4);
     }
+    // Gravity of any finite length levels alike, also where its squared length overflows (it was
+    // turned upside down) or underflows (it was ignored).
+    input.vehicle_attitude.reset();
+    for (const double length : {1e-200, 1e200, 1e308}) {
+        input.gravity_in_sensor = tilt.transpose() * Eigen::Vector3d(0, 0, -length);
+        EXPECT_TRUE(isUsableGravity(*input.gravity_in_sensor)) << length;
+        preprocess(cloud, Params{}, input, out);
+        for (std::size_t i = 0; i < cloud.size(); ++i)
+            EXPECT_NEAR(out.z[i], -1.5, 1e-4) << "length " << length;
+    }
 }
 
 TEST(Preprocessing, DeskewUndoesConstantVelocityMotion) {

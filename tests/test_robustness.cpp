@@ -12,9 +12,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <new>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -30,6 +32,54 @@
 #include "travel/Pipeline.hpp"
 #include "travel/sim/Scenes.hpp"
 #include "travel/sim/SyntheticLidar.hpp"
+
+// The global operator new, counting its calls on a thread while that thread asks for it
+// (Robustness.NoAllocationOnceEveryFrameWasSeen): every form that std::vector, std::string and
+// the standard algorithms' buffers use (plain, array, nothrow; ASan replaces each on its own),
+// on malloc and free, which the sanitizers still intercept.
+namespace {
+thread_local bool t_count_allocations = false;
+thread_local std::size_t t_allocations = 0;
+void* countedNew(std::size_t size) noexcept {
+    if (t_count_allocations) ++t_allocations;
+    return std::malloc(size ? size : 1);
+}
+void* countedNewOrThrow(std::size_t size) {
+    if (void* p = countedNew(size)) return p;
+    throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) {
+    return countedNewOrThrow(size);
+}
+void* operator new[](std::size_t size) {
+    return countedNewOrThrow(size);
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    return countedNew(size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    return countedNew(size);
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
 
 namespace travel {
 namespace {
@@ -352,6 +402,66 @@ TEST(Robustness, RingValuesOutOfRangeFallBack) {
     }
 }
 
+// docs/input-contract.md: an explicit ring_source that cannot read the cloud is an InputError
+// from process(); the pipeline goes on, labelling the next frame as a new pipeline would.
+TEST(Robustness, ExplicitRingSourceThatCannotReadTheCloudThrowsAndThePipelineGoesOn) {
+    const sim::Scan scan = urbanScan();
+    PointCloud without = scan.cloud;
+    without.ring.clear();
+    PointCloud out_of_range = scan.cloud;
+    out_of_range.ring[0] = 64;  // num_rings = 64
+    for (const bool face_rule : {false, true}) {
+        Params params = testParams();
+        params.ring_source = "field";
+        if (face_rule) params.vertical_face_min_rise = 0.25, params.vertical_face_min_length = 0;
+        SCOPED_TRACE(face_rule ? "face rule under every ground point" : "defaults");
+        const Result expected = run(scan.cloud, params);
+        Pipeline pipeline(params);
+        Result result;
+        for (const PointCloud* bad : {&without, &out_of_range}) {
+            try {
+                pipeline.process(*bad, {}, result);
+                ADD_FAILURE() << "no InputError";
+            } catch (const InputError& e) {
+                EXPECT_EQ(std::string(e.what()).rfind("ring_source = field: ", 0), 0u) << e.what();
+            }
+            pipeline.process(scan.cloud, {}, result);
+            expectConsistent(scan.cloud, result);
+            EXPECT_EQ(result.labels, expected.labels);
+            EXPECT_EQ(result.cluster_id, expected.cluster_id);
+        }
+    }
+    Params params = testParams();
+    params.ring_source = "scan_order";
+    PointCloud shuffled = without;  // no ring to be found in the storage order
+    std::mt19937 rng(1);
+    for (std::size_t i = shuffled.size() - 1; i > 0; --i) {
+        const std::size_t j = rng() % (i + 1);
+        std::swap(shuffled.x[i], shuffled.x[j]), std::swap(shuffled.y[i], shuffled.y[j]);
+        std::swap(shuffled.z[i], shuffled.z[j]);
+    }
+    EXPECT_THROW(run(shuffled, params), InputError);
+}
+
+// docs/input-contract.md: a time or intensity field of another length than x is not used.
+TEST(Robustness, TimeAndIntensityOfAnotherLengthAreNotUsed) {
+    const sim::Scan scan = urbanScan();
+    FrameInput moving;
+    moving.linear_velocity = Eigen::Vector3d(5.0, 0.0, 0.0);
+    moving.angular_velocity = Eigen::Vector3d(0.0, 0.0, 0.2);
+    PointCloud without_time = scan.cloud;
+    without_time.time.clear();
+    const Result expected = run(without_time, testParams(), moving);
+    PointCloud odd = scan.cloud;
+    odd.time.pop_back();
+    odd.intensity.clear();
+    ASSERT_FALSE(odd.hasTime());
+    const Result result = run(odd, testParams(), moving);
+    expectConsistent(odd, result);
+    EXPECT_EQ(result.labels, expected.labels);
+    EXPECT_EQ(result.cluster_id, expected.cluster_id);
+}
+
 // ---- Per-point times with deskew ----
 
 TEST(Robustness, UnsortedAndNaNTimesWithDeskew) {
@@ -666,6 +776,64 @@ TEST(Robustness, OneKilometreRange) {
         "sizeof(TriNode) = %zu B\n",
         result.terrain.cells_per_side, result.terrain.nodes.size(), cloud.size(), ms, peakRssMb(),
         rss_before, sizeof(TriNode));
+}
+
+// ---- Allocation ----
+
+/// Calls of operator new made by `f` on this thread.
+std::size_t allocationsOf(const std::function<void()>& f) {
+    t_allocations = 0;
+    t_count_allocations = true;
+    f();
+    t_count_allocations = false;
+    return t_allocations;
+}
+
+// Pipeline.hpp / Preprocessing.hpp: every buffer is reused, so once a Pipeline and a Result have
+// seen a set of frames, processing those frames again allocates nothing, on every path that picks
+// the rows (ring field, scan order, elevation table) and with the face rule in either scope.
+TEST(Robustness, NoAllocationOnceEveryFrameWasSeen) {
+    const sim::Scan urban = urbanScan();
+    const sim::Scene cars = sim::parkedCarRow(8, 1.0);
+    const sim::Scan row =
+        sim::scan(cars, testLidar(), sim::sensorPoseAt(cars, 0, 0, kSensorHeight, 0, 0, 0));
+    PointCloud urban_scan_order = urban.cloud;  // a KITTI .bin: rings from the scan order
+    urban_scan_order.ring.clear();
+    FrameInput moving;  // deskew
+    moving.linear_velocity = Eigen::Vector3d(5.0, 0.0, 0.0);
+    moving.angular_velocity = Eigen::Vector3d(0.0, 0.0, 0.2);
+    const std::vector<std::pair<const PointCloud*, FrameInput>> frames = {
+        {&urban.cloud, {}}, {&row.cloud, moving}, {&urban_scan_order, {}}};
+
+    struct Case {
+        const char* name;
+        std::function<void(Params&)> set;
+    };
+    const Case cases[] = {
+        {"defaults", [](Params&) {}},
+        {"rings from the table", [](Params& p) { p.ring_source = "table"; }},
+        {"face rule under every ground point",
+         [](Params& p) {
+             p.vertical_face_min_rise = 0.25, p.vertical_face_min_length = 0.0;
+             p.vertical_face_min_foot_height = 0.05;
+         }},
+        {"face rule under walls",
+         [](Params& p) { p.vertical_face_min_rise = 0.25, p.cluster_face_feet = true; }},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        Params params = testParams();
+        c.set(params);
+        Pipeline pipeline(params);
+        Result result;
+        pipeline.reserve(result);
+        for (const auto& [cloud, input] : frames) pipeline.process(*cloud, input, result);
+        for (const auto& [cloud, input] : frames) {
+            EXPECT_EQ(allocationsOf([&] { pipeline.process(*cloud, input, result); }), 0u)
+                << cloud->size() << " points";
+            expectConsistent(*cloud, result);
+        }
+    }
 }
 
 // ---- Threads ----

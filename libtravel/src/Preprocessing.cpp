@@ -129,7 +129,7 @@ bool isUsableAttitude(const Eigen::Matrix3d& R) {
 }
 
 bool isUsableGravity(const Eigen::Vector3d& g) {
-    return g.allFinite() && g.norm() > 0;
+    return g.allFinite() && (g.array() != 0.0).any();
 }
 
 Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input) {
@@ -145,7 +145,15 @@ Eigen::Matrix3d alignmentRotation(const Params& params, const FrameInput& input)
             // gravity onto -z: for R = Ry(pitch) Rx(roll), R^T (0,0,-1) is
             // (sin p, -sin r cos p, -cos r cos p). (The minimal rotation between the two
             // vectors would differ from this by a small yaw and rotate the grid.)
-            const Eigen::Vector3d g = R_mount * input.gravity_in_sensor->normalized();
+            // Only the direction counts: a vector whose squared length leaves the normal doubles
+            // (finite, but longer than ~1e154 or shorter than ~1e-154) is scaled by its largest
+            // component first, as normalized() would make it zero (upside down: roll -pi).
+            Eigen::Vector3d gravity = *input.gravity_in_sensor;
+            const double length2 = gravity.squaredNorm();
+            if (!(length2 >= std::numeric_limits<double>::min() &&
+                  length2 <= std::numeric_limits<double>::max()))
+                gravity /= gravity.cwiseAbs().maxCoeff();
+            const Eigen::Vector3d g = R_mount * gravity.normalized();
             const double pitch = std::atan2(g.x(), std::hypot(g.y(), g.z()));
             const double roll = std::atan2(-g.y(), -g.z());
             R_level = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *

@@ -366,8 +366,11 @@ RowMap mapByElevation(const RingStats& stats, int count, bool& mixed) {
         present[used++] = static_cast<int16_t>(id);
     }
     std::copy(present.begin(), present.begin() + used, by_elevation.begin());
-    std::stable_sort(by_elevation.begin(), by_elevation.begin() + used, [&](int16_t a, int16_t b) {
-        return stats.sinElevation(a) < stats.sinElevation(b);
+    // Ascending mean elevation, equal means in ascending id order: the order of a stable sort
+    // of `present`, without the buffer std::stable_sort allocates on every frame.
+    std::sort(by_elevation.begin(), by_elevation.begin() + used, [&](int16_t a, int16_t b) {
+        const double ea = stats.sinElevation(a), eb = stats.sinElevation(b);
+        return ea < eb || (ea == eb && a < b);
     });
     // by_elevation[k] = present[k] when ascending, present[used - 1 - k] when descending.
     int ascending_displacement = 0, descending_displacement = 0;
@@ -441,8 +444,9 @@ void applyRowMap(const RowMap& map, const Id* id, const std::vector<uint8_t>& va
 // ---- Ring sources ----------------------------------------------------------------------------
 
 // The ring sources. Each writes the final rows (-1 where !valid) into `row`, RangeImage's buffer,
-// which holds the quantised azimuths on entry (see RangeImage::build()), or returns false and
-// why it cannot be used.
+// which holds the quantised azimuths on entry (see RangeImage::build()), or returns false and,
+// given `why`, why it cannot be used (ring_source = auto passes none: it tries the next source,
+// and a message made on every frame of a sensor without a ring field would allocate).
 class RowAssigner {
   public:
     RowAssigner(const PointCloud& cloud, const std::vector<uint8_t>& valid, const Params& params,
@@ -450,9 +454,9 @@ class RowAssigner {
         : cloud_(cloud), valid_(valid), params_(params), row_(row), n_(cloud.size()) {}
 
     // The ring field, when every valid point's ring is below num_rings.
-    bool fromField(std::string& why) {
+    bool fromField(std::string* why) {
         if (!cloud_.hasRing()) {
-            why = "the cloud has no ring field";
+            if (why) *why = "the cloud has no ring field";
             return false;
         }
         const int num_rings = params_.num_rings;
@@ -463,8 +467,9 @@ class RowAssigner {
             max_ring = std::max<int>(max_ring, keep[i] ? ring[i] : 0);
         }
         if (max_ring >= num_rings) {
-            why = "a valid point has ring " + std::to_string(max_ring) +
-                  " >= num_rings = " + std::to_string(num_rings);
+            if (why)
+                *why = "a valid point has ring " + std::to_string(max_ring) +
+                       " >= num_rings = " + std::to_string(num_rings);
             return false;
         }
         // Every 7th point is plenty for the mean elevations; 7 is prime to the usual ring counts,
@@ -493,12 +498,12 @@ class RowAssigner {
     // The cut between rings is taken at the first point's azimuth: when a later ring starts a
     // little before it (KITTI frame 000003: first point at 0.48 deg, true cut at 0), its first
     // points stay on the ring before (0.1 % of that frame's points).
-    bool fromScanOrder(bool strict, std::string& why) {
+    bool fromScanOrder(bool strict, std::string* why) {
         const int num_rings = params_.num_rings;
         const int16_t* azimuth = row_.data();
         const int direction = sweepDirection(azimuth);
         if (direction == 0) {
-            why = "no point has an azimuth";
+            if (why) *why = "no point has an azimuth";
             return false;
         }
         // ring_start[k]: index of ring k's first point; the points without azimuth that follow
@@ -531,24 +536,27 @@ class RowAssigner {
                                   ? findRings<+1>(azimuth, num_rings, ring_start, ring_found)
                                   : findRings<-1>(azimuth, num_rings, ring_start, ring_found);
         if (recovered == kOutOfOrder) {
-            why = "the rings found are not stored in elevation order";
+            if (why) *why = "the rings found are not stored in elevation order";
             return false;
         }
         if (recovered > num_rings) {
-            why = "more than num_rings = " + std::to_string(num_rings) + " azimuth wrap-arounds";
+            if (why)
+                *why =
+                    "more than num_rings = " + std::to_string(num_rings) + " azimuth wrap-arounds";
             return false;
         }
         ring_start[recovered] = n_;
         if (recovered < std::max(1, num_rings / 2)) {
-            why = "only " + std::to_string(recovered) +
-                  " azimuth wrap-arounds for num_rings = " + std::to_string(num_rings);
+            if (why)
+                *why = "only " + std::to_string(recovered) +
+                       " azimuth wrap-arounds for num_rings = " + std::to_string(num_rings);
             return false;
         }
         ring_found(recovered - 1, n_);  // the last ring ends with the points
         bool mixed = false;
         const RowMap map = mapByElevation(stats, recovered, mixed);
         if (strict && mixed) {
-            why = "the rings found are not stored in elevation order";
+            if (why) *why = "the rings found are not stored in elevation order";
             return false;
         }
         // Rows 0..recovered-1: rings never seen (beams into the sky) would be the top rows.
@@ -774,7 +782,7 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
     RowAssigner rows(cloud, valid, params, row_);
     std::string why;
     if (is_auto || source == "field") {
-        if (rows.fromField(why)) {
+        if (rows.fromField(is_auto ? nullptr : &why)) {
             source_ = RingSource::Field;
             rows_ = params.num_rings;
             sweep_start_col_ = first_col;
@@ -783,7 +791,7 @@ void RangeImage::build(const PointCloud& cloud, const std::vector<uint8_t>& vali
         if (!is_auto) throw InputError("ring_source = field: " + why);
     }
     if (is_auto || source == "scan_order") {
-        if (rows.fromScanOrder(is_auto, why)) {
+        if (rows.fromScanOrder(is_auto, is_auto ? nullptr : &why)) {
             source_ = RingSource::ScanOrder;
             rows_ = params.num_rings;
             sweep_start_col_ = first_col;

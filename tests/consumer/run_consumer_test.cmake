@@ -1,8 +1,10 @@
-# Install the build tree into WORK_DIR/prefix, then build and run the consumer against it (with
-# WITH_MRPT=ON, also one program per MRPT library: travel::mrpt_obs, _maps, _nav, and the
-# consumer's rawlog regression test: a golden rawlog written by the installed travel-rawlog,
-# compared by the installed travel_add_rawlog_regression, run through ctest). Also: the
-# installed apps use the prefix's share/travel, and no installed binary holds a source path.
+# Install the build tree into WORK_DIR/prefix, then build and run the consumer against it (its
+# programs of travel::travel and travel::config; with WITH_MRPT=ON, also one program per MRPT
+# library: travel::mrpt_obs, _maps, _nav, and the consumer's rawlog regression test: a golden
+# rawlog written by the installed travel-rawlog, compared by the installed
+# travel_add_rawlog_regression, run through ctest), then the consumer of travel::travel alone as
+# on a machine without yaml-cpp. Also: the installed apps use the prefix's share/travel, and no
+# installed binary holds a source path.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -76,7 +78,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build RESULT_VARIAB
 if(rc)
   message(FATAL_ERROR "building the consumer failed: ${rc}")
 endif()
-set(programs consumer)
+set(programs consumer consumer_config)
 if(WITH_MRPT)
   list(APPEND programs consumer_mrpt_obs consumer_mrpt_maps consumer_mrpt_nav)
 endif()
@@ -86,6 +88,25 @@ foreach(program IN LISTS programs)
     message(FATAL_ERROR "${program} failed: ${rc}")
   endif()
 endforeach()
+# The core alone needs Eigen alone: the same consumer without the config component, configured
+# as on a machine without yaml-cpp, finds the package, builds and runs.
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build_core -G ${GENERATOR}
+                        -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+                        "-DCMAKE_CXX_FLAGS=${flags}" "-DCMAKE_EXE_LINKER_FLAGS=${flags}"
+                        -DWITH_CONFIG=OFF -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON
+                RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "configuring the consumer of travel::travel alone without yaml-cpp failed: "
+                      "${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build_core RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building the consumer of travel::travel alone failed: ${rc}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/build_core/consumer RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "consumer (travel::travel alone) failed: ${rc}")
+endif()
 if(regression)
   execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --output-on-failure --no-tests=error -R consumer.rawlog_regression
                   WORKING_DIRECTORY ${WORK_DIR}/build RESULT_VARIABLE rc)

@@ -1,5 +1,6 @@
-# Writes the first ```cpp block of README.md (the libtravel example) to OUTPUT, so that the test
-# suite compiles and runs exactly what the README shows (test docs.readme_example).
+# Writes the first ```cpp block of README.md (the libtravel example), or of another Markdown
+# file given as README, to OUTPUT, so that the test suite compiles and runs exactly what the
+# page shows (tests docs.readme_example, docs.input_contract_example).
 #   cmake -DREADME=<README.md> -DOUTPUT=<file.cpp> -P extract_readme_example.cmake
 file(READ "${README}" text)
 string(FIND "${text}" "```cpp\n" start)

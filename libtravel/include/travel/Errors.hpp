@@ -12,7 +12,8 @@ struct ConfigError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// A malformed input file (wrong size, wrong count). The message names the file.
+/// A malformed input: a file (wrong size, wrong count; the message names it), or a cloud that
+/// an explicit ring_source cannot read (Pipeline::process; the message names the source).
 struct InputError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };

@@ -1,7 +1,13 @@
 // Copyright (c) 2026, The TRAVEL for MRPT developers. BSD-3-Clause.
 //
 // The TRAVEL pipeline: composes the stages, owns every buffer and reuses it across frames.
-// One instance per thread; instances share nothing.
+//
+// Threads: one Pipeline is used by one thread at a time (process() changes it; nothing locks).
+// Pipelines share nothing, so several may run at once, one per thread, with identical results.
+// A Pipeline may move from thread to thread: the labelling keeps small scratch buffers per
+// thread (thread_local), allocated on the first frame a thread runs. Copies (and settledCopy())
+// have buffers of their own. Buffers only grow: process() allocates nothing once this pipeline
+// and the Result have seen frames as large (points, runs, clusters) on this thread.
 //
 //   Pipeline travel(params);            // validates params (throws ConfigError)
 //   travel.process(cloud, {}, result);  // result.labels[i] for every input point i
@@ -34,6 +40,8 @@ class Pipeline {
   public:
     /// Validates `params` and sizes every buffer for the sensor they describe (rings x columns
     /// points, the tri-grid's extent), so the first frame is not slower than the next ones.
+    /// Throws ConfigError (Params::validate()) naming the first parameter out of its range or
+    /// inconsistent with another.
     explicit Pipeline(const Params& params);
 
     /// Sizes a Result's buffers for this pipeline's frames (before its first process(): the
@@ -51,6 +59,19 @@ class Pipeline {
     /// scope (vertical_face_min_rise > 0, vertical_face_min_length > 0) runs the AOS runs even
     /// without cluster_objects (its walls are clusters), reporting no cluster then: the labels
     /// are the same either way.
+    ///
+    /// `cloud`: x, y, z [m] in the sensor frame (PointCloud.hpp), any number of points, any
+    /// values (NaN, inf and out-of-range points are labelled Invalid). `input`: what is known of
+    /// the platform this frame ({} = nothing). `result` is overwritten: result.labels and
+    /// result.cluster_id get one entry per input point; cluster summaries and the terrain model
+    /// are in the aligned frame (Preprocessing.hpp). Reuse the same Result frame after frame.
+    /// The same frame on the same parameters gives the same labels and cluster ids, whatever
+    /// this pipeline processed before (once the mount is settled, see mountSettled()).
+    ///
+    /// Throws std::invalid_argument when cloud.x, y and z differ in size, and InputError when an
+    /// explicit ring_source cannot be used for this cloud (`field`: no ring field, or a valid
+    /// point's ring >= num_rings; `scan_order`: rings not found in the storage order; `auto`
+    /// falls back instead). `result` holds no usable frame then; the pipeline stays usable.
     void process(const PointCloud& cloud, const FrameInput& input, Result& result);
 
     /// Names where fixed mount_roll_deg / mount_pitch_deg come from when the caller sets them

@@ -13,7 +13,10 @@
 namespace travel {
 
 struct PointCloud {
+    /// Coordinates [m] in the sensor frame: origin at the LiDAR's optical centre, z up before
+    /// the mount_* rotation (docs/input-contract.md, "Coordinate frame"). Same length each.
     std::vector<float> x, y, z;
+    /// Any unit; carried to the outputs, not read by the segmentation (may stay empty).
     std::vector<float> intensity;
     /// Laser ring (0 = lowest elevation), empty when unknown.
     std::vector<uint16_t> ring;

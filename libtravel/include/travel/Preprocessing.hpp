@@ -54,8 +54,8 @@ Eigen::Matrix3d mountRotation(const Params& params);
 /// determinant > 0 (not a reflection). Another matrix is ignored by alignmentRotation.
 bool isUsableAttitude(const Eigen::Matrix3d& R);
 
-/// Whether `g` may be used as FrameInput::gravity_in_sensor: finite, of length > 0. Another
-/// vector is ignored by alignmentRotation.
+/// Whether `g` may be used as FrameInput::gravity_in_sensor: finite, not zero (any length: only
+/// its direction is used). Another vector is ignored by alignmentRotation.
 bool isUsableGravity(const Eigen::Vector3d& g);
 
 /// Rotation from the sensor frame to the aligned frame for this frame's parameters and input:

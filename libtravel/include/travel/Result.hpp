@@ -50,7 +50,7 @@ struct Result {
     /// the height above ground (FrameFusion, evaluation protocol A) read it here.
     double sensor_height = 0;
 
-    std::size_t count(PointClass c) const { return class_counts[static_cast<int>(c)]; }
+    std::size_t count(PointClass c) const { return class_counts[static_cast<std::size_t>(c)]; }
 };
 
 }  // namespace travel

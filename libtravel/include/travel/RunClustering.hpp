@@ -88,10 +88,11 @@ class RunClustering {
     /// rows merge when closer than sqrt(T_vert^2 + (R dtheta)^2), R the upper point's range.
     /// 0 when r == rr or either row has no run (the vertical update compares no point there).
     float ringSpacing(int r, int rr) const {
-        if (r == rr || row_runs_begin_[r] == row_runs_begin_[r + 1] ||
-            row_runs_begin_[rr] == row_runs_begin_[rr + 1])
+        const auto a = static_cast<std::size_t>(r), b = static_cast<std::size_t>(rr);
+        if (r == rr || row_runs_begin_[a] == row_runs_begin_[a + 1] ||
+            row_runs_begin_[b] == row_runs_begin_[b + 1])
             return 0.f;
-        return std::fabs(row_elevation_[r] - row_elevation_[rr]) / float(std::abs(r - rr));
+        return std::fabs(row_elevation_[a] - row_elevation_[b]) / float(std::abs(r - rr));
     }
 
   private:

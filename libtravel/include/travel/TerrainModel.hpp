@@ -114,7 +114,8 @@ struct TriGridGeometry {
 
     Eigen::Vector2f cellCenter(int cell) const {
         const int ix = cell % cells_per_side, iy = cell / cells_per_side;
-        return {origin_xy + (ix + 0.5f) * resolution, origin_xy + (iy + 0.5f) * resolution};
+        return {origin_xy + (static_cast<float>(ix) + 0.5f) * resolution,
+                origin_xy + (static_cast<float>(iy) + 0.5f) * resolution};
     }
 
     /// The same grid (resolution, size and origin).
@@ -182,7 +183,7 @@ struct TriGridGeometry {
         std::array<Eigen::Vector2f, 3> xy;
         for (int k = 0; k < 3; ++k) {
             const std::array<int, 2> l = cornerOnLattice(node, k);
-            xy[k] = latticeXY(l[0], l[1]);
+            xy[static_cast<std::size_t>(k)] = latticeXY(l[0], l[1]);
         }
         return xy;
     }

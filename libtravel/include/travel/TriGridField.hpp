@@ -48,11 +48,15 @@ class TriGridField {
     /// Node index of a point, or -1 outside the grid (TriGridGeometry::nodeAt).
     int nodeOf(float x, float y) const { return geometry_.nodeAt(x, y); }
 
-    const Neighbours& neighbours(int node) const { return neighbours_[node]; }
+    const Neighbours& neighbours(int node) const {
+        return neighbours_[static_cast<std::size_t>(node)];
+    }
 
     /// Corner k (0..2) of a node's triangle as a vertex id on the (2n+1) x (2n+1) lattice of
     /// half-cell steps (cell corners at even coordinates, cell centres at odd ones).
-    int vertexId(int node, int k) const { return vertices_[3 * node + k]; }
+    int vertexId(int node, int k) const {
+        return vertices_[static_cast<std::size_t>(3 * node + k)];
+    }
     int numVertices() const {
         return (2 * geometry_.cells_per_side + 1) * (2 * geometry_.cells_per_side + 1);
     }

@@ -67,7 +67,7 @@ class GridPathPlanner {
     std::vector<Eigen::Vector2d> waypoints(const std::vector<Eigen::Vector2d>& path) const;
 
     /// Distance [m] of a cell to the nearest obstacle cell (after setGrid).
-    float obstacleDistance(long cell) const { return distance_[cell]; }
+    float obstacleDistance(long cell) const { return distance_[static_cast<std::size_t>(cell)]; }
     /// Cells A* expanded in the last plan().
     std::size_t expanded() const { return expanded_; }
 

@@ -64,10 +64,10 @@ class TraversabilityGrid {
 
     // ---- Reading ----
     CellState state(long cell, const GridFusionParams& fusion) const;
-    bool observed(long cell) const { return frames_seen_[cell] > 0; }
+    bool observed(long cell) const { return frames_seen_[static_cast<std::size_t>(cell)] > 0; }
     bool empty() const { return observed_cells_ == 0; }
     std::size_t observedCells() const { return observed_cells_; }
-    float logodds(long cell) const { return logodds_[cell]; }
+    float logodds(long cell) const { return logodds_[static_cast<std::size_t>(cell)]; }
     /// Mean ground height [m] (NaN when no ground point fell in the cell).
     float groundHeight(long cell) const;
     /// Mean ground height of the cells holding ground [m] (NaN when none does).
@@ -82,7 +82,7 @@ class TraversabilityGrid {
     /// Mean terrain-model slope of the cell's ground points [deg] (NaN if none).
     float slopeDeg(long cell) const;
     /// Largest step seen inside the cell in one frame [m] (0 if never measured).
-    float stepHeight(long cell) const { return step_height_[cell]; }
+    float stepHeight(long cell) const { return step_height_[static_cast<std::size_t>(cell)]; }
     /// Largest step [m] on the cell's edges from the ground heights fused over all frames,
     /// against the "reference" cells within 2 cells (>= 2 ground points, log-odds below
     /// free_threshold): |height difference| between this cell (if a reference) and a
@@ -98,7 +98,7 @@ class TraversabilityGrid {
     /// each frame's ground is first levelled against the fused ground (see endFrame()).
     float neighbourStep(long cell, const GridFusionParams& fusion) const;
     /// Time of the last frame that updated the cell [s, MRPT clock] (0 = never).
-    double lastSeen(long cell) const { return last_seen_[cell]; }
+    double lastSeen(long cell) const { return last_seen_[static_cast<std::size_t>(cell)]; }
 
     // ---- Storage (for serialization): every per-cell array, in a fixed order ----
     struct Arrays {

@@ -25,13 +25,18 @@ struct Raster {
     /// Resizes to w x h and paints every pixel `background`.
     void reset(int w, int h, Rgb background);
     bool inside(int u, int v) const { return u >= 0 && v >= 0 && u < width && v < height; }
+    /// Offset of pixel (u, v)'s red byte in `rgb`. Unchecked: (u, v) must be inside.
+    std::size_t index(int u, int v) const {
+        return 3 * (static_cast<std::size_t>(v) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(u));
+    }
     /// Unchecked: (u, v) must be inside.
     void set(int u, int v, Rgb c) {
-        uint8_t* p = &rgb[3 * (static_cast<std::size_t>(v) * width + u)];
+        uint8_t* p = &rgb[index(u, v)];
         p[0] = c.r, p[1] = c.g, p[2] = c.b;
     }
     Rgb at(int u, int v) const {
-        const uint8_t* p = &rgb[3 * (static_cast<std::size_t>(v) * width + u)];
+        const uint8_t* p = &rgb[index(u, v)];
         return {p[0], p[1], p[2]};
     }
 
