@@ -242,15 +242,17 @@ int run(int argc, char** argv) {
         [&](unsigned) { return travel::eval::makeSegmenter(method.getValue(), params); });
     if (track.getValue()) {
         tracking.poses.open((fs::path(out) / "poses.txt").string());
-        if (!tracking.poses) throw travel::InputError("cannot write " + out + "/poses.txt");
+        if (!tracking.poses)
+            throw travel::InputError(
+                travel::cannotWriteMessage(out + "/poses.txt", std::strerror(errno)));
     }
 
     std::ofstream csv_out;
     if (csv.isSet()) {
         csv_out.open(csv.getValue());
         if (!csv_out)
-            throw travel::InputError("cannot write " + csv.getValue() + ": " +
-                                     std::strerror(errno));
+            throw travel::InputError(
+                travel::cannotWriteMessage(csv.getValue(), std::strerror(errno)));
         csv_out << "frame,points,invalid,ground,nonground,outlier,"
                    "A_precision,A_recall,A_f1,A_accuracy,B_precision,B_recall,B_f1,B_accuracy,"
                    "clusters,OSE_sum,USE_sum,OSE_mean,USE_mean,instances,mean_coverage,"
@@ -397,7 +399,7 @@ int run(int argc, char** argv) {
         if (stream.fail()) {
             const std::string reason = std::strerror(errno);
             travel::removeCutFile(path);  // rows are missing: no cut file under the name
-            throw travel::InputError("cannot write " + path + ": " + reason);
+            throw travel::InputError(travel::cannotWriteMessage(path, reason));
         }
     };
     close_checked(csv_out, csv.getValue());

@@ -56,7 +56,7 @@ if(EXISTS ${seq}/velodyne/000000.bin)
   endif()
   # A CSV whose rows cannot be written (a full disk: Linux's /dev/full) is an error, not exit 0.
   if(EXISTS /dev/full)
-    expect_failure_mentioning("cannot write /dev/full" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans
+    expect_failure_mentioning("/dev/full: cannot write (" ${TRAVEL_KITTI} -i ${WORK_DIR}/scans
                               -o ${WORK_DIR}/full -q --csv /dev/full)
   endif()
   file(WRITE ${WORK_DIR}/labels/000000.label "12345678")

@@ -37,14 +37,14 @@ void readFileBytes(const std::string& path, std::vector<unsigned char>& bytes) {
 
 void writeFileBytes(const std::string& path, const unsigned char* data, std::size_t size) {
     FilePtr file(std::fopen(path.c_str(), "wb"));
-    if (!file) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    if (!file) throw std::runtime_error(cannotWriteMessage(path, std::strerror(errno)));
     const bool written = size == 0 || std::fwrite(data, 1, size, file.get()) == size;
     // fclose flushes: a full disk may only show up here.
     const bool closed = std::fclose(file.release()) == 0;
     if (!written || !closed) {
         const std::string reason = std::strerror(errno);
         removeCutFile(path);  // no half a file under the final name
-        throw std::runtime_error("cannot write '" + path + "': " + reason);
+        throw std::runtime_error(cannotWriteMessage(path, reason));
     }
 }
 
