@@ -16,6 +16,9 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 #include <octomap/OcTree.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -26,6 +29,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <sstream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -383,6 +387,55 @@ TEST_F(MapFusion, SerializationRoundTrip) {
     cut.assignMemoryNotOwn(buffer.getRawBufferData(), buffer.getTotalBytesCount() / 2);
     auto cut_in = mrpt::serialization::archiveFrom(cut);
     EXPECT_ANY_THROW(cut_in.ReadObject());
+
+    // The OctoMap's bytes (the object's last field, before MRPT's end-of-object byte) with a
+    // corrupt length of 3.75 GiB: an error, after reading at most 1 MiB past the data. Shown
+    // in a child process whose address space has 2 GiB to spare (not under the sanitizers,
+    // whose shadow memory needs more).
+    std::ostringstream ot;
+    map_->octree().write(ot);
+    std::string bytes(static_cast<const char*>(buffer.getRawBufferData()),
+                      buffer.getTotalBytesCount());
+    const std::size_t length_at = bytes.size() - 1 - ot.str().size() - 4;
+    uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + length_at, 4);
+    ASSERT_EQ(length, ot.str().size());
+    length = 0xF0000000u;
+    std::memcpy(bytes.data() + length_at, &length, 4);
+    const auto readCorrupt = [&] {
+        mrpt::io::CMemoryStream corrupt;
+        corrupt.assignMemoryNotOwn(bytes.data(), bytes.size());
+        auto corrupt_in = mrpt::serialization::archiveFrom(corrupt);
+        corrupt_in.ReadObject();
+    };
+    EXPECT_ANY_THROW(readCorrupt());
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        long pages = 0;
+        std::ifstream("/proc/self/statm") >> pages;
+        const rlim_t spare = rlim_t(2) << 30;
+        const rlimit limit{rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE)) + spare,
+                           rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE)) + spare};
+        int code = 3;
+        if (setrlimit(RLIMIT_AS, &limit) == 0) {
+            try {
+                readCorrupt();
+                code = 2;  // no error
+            } catch (const std::bad_alloc&) {
+                code = 1;  // the length was allocated
+            } catch (const std::exception&) {
+                code = 0;
+            }
+        }
+        _exit(code);
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: bad_alloc, 2: no error, 3: setrlimit failed";
+#endif
 }
 
 /// Every field of every grid cell, the options and the OctoMap's leaves (keys, depths and

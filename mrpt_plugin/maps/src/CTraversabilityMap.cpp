@@ -470,6 +470,23 @@ uint32_t readCount(mrpt::serialization::CArchive& in, std::size_t most, const st
     return n;
 }
 
+/// A string as operator<< wrote it (its uint32 length, then the bytes), read 1 MiB at a time:
+/// a corrupt length runs into the end of the data after at most that much more, instead of
+/// allocating up to 4 GiB first.
+std::string readBytes(mrpt::serialization::CArchive& in) {
+    uint32_t n = 0;
+    in >> n;
+    std::string bytes;
+    constexpr std::size_t kChunk = std::size_t(1) << 20;
+    for (std::size_t got = 0; got < n;) {
+        const std::size_t chunk = std::min<std::size_t>(kChunk, n - got);
+        bytes.resize(got + chunk);
+        in.ReadBuffer(bytes.data() + got, chunk);
+        got += chunk;
+    }
+    return bytes;
+}
+
 /// A per-cell array as operator<< wrote it (count, then the values), holding exactly `cells`
 /// values: the count is checked before the array grows.
 template <class T>
@@ -538,9 +555,8 @@ void CTraversabilityMap::serializeTo(mrpt::serialization::CArchive& out) const {
 void CTraversabilityMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
     if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     readGridState(in);
-    std::string bytes;
-    in >> bytes;
-    scratch_->log_odds.clear();  // the tree read is the master copy now
+    std::string bytes = readBytes(in);  // the OctoMap's, as long as the map
+    scratch_->log_odds.clear();         // the tree read is the master copy now
     if (version == 1) {
         octree_ = readOtTree(std::move(bytes), options_, "CTraversabilityMap");
     } else {
